@@ -1,0 +1,67 @@
+#ifndef slidewave_core_input_error_h
+#define slidewave_core_input_error_h
+
+#include <stdexcept>
+#include <string>
+
+namespace slidewave
+{
+  /**
+   * A mistake in what the user gave us: a parameter value that is out of range or
+   * inconsistent, a missing file, an output directory that cannot be written.
+   *
+   * It carries the parameter (its full path, e.g. "Shallow water/Courant number"), the value
+   * as the user wrote it and a description of what is allowed. The application turns it into
+   * one line that also names the input file, and exits with status 1. It is never used for
+   * programming errors: those stay deal.II assertions.
+   */
+  class InputError : public std::runtime_error
+  {
+  public:
+    InputError(const std::string &parameter,
+               const std::string &value,
+               const std::string &allowed);
+
+    /** The full path of the offending parameter, subsections separated by '/'. */
+    const std::string parameter;
+    /** The value as given. */
+    const std::string value;
+    /** What would have been accepted. */
+    const std::string allowed;
+  };
+
+  /**
+   * A run that became physically or numerically invalid (non-finite values, negative depth):
+   * thrown by the run-time guards with the step, time and place, caught by the application,
+   * which keeps the last good output and exits non-zero.
+   */
+  class RunFailure : public std::runtime_error
+  {
+  public:
+    explicit RunFailure(const std::string &what);
+  };
+
+  /** Formats a double the way messages print values: shortest round-trip form. */
+  std::string
+  to_string(double value);
+
+  /**
+   * Check helpers used by the parse_parameters() functions. Each throws an InputError naming
+   * @p parameter when the condition does not hold.
+   */
+  void
+  require_positive(const std::string &parameter, double value);
+
+  void
+  require_non_negative(const std::string &parameter, double value);
+
+  void
+  require_in_range(const std::string &parameter,
+                   double             value,
+                   double             lower,
+                   bool               lower_inclusive,
+                   double             upper,
+                   bool               upper_inclusive);
+} // namespace slidewave
+
+#endif

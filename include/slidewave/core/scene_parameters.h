@@ -1,0 +1,51 @@
+#ifndef slidewave_core_scene_parameters_h
+#define slidewave_core_scene_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace slidewave
+{
+  /**
+   * The physics a scene switches on. Only the components of the chosen physics are
+   * created, allocated and computed, and only their parameters are read.
+   */
+  enum class Physics
+  {
+    none,
+    shallow_water
+  };
+
+  /**
+   * The top level of a scene file: which physics, where the output goes, the time window and
+   * how often to report. Every physics reads these; its own parameters live in its own
+   * subsection.
+   */
+  struct SceneParameters
+  {
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * Reads and checks the entries. @p input_file is the scene file: the default output
+     * directory is derived from its name ("output-<name without .prm>").
+     */
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const std::string &input_file);
+
+    Physics     physics = Physics::none;
+    std::string output_directory;
+
+    double       start_time          = 0.;
+    double       end_time            = 0.;
+    double       maximum_time_step   = 0.;
+    double       output_interval     = 0.;
+    unsigned int statistics_interval = 1;
+
+    /** Deterministic, fixed-precision reporting for the test suite (subsection Test). */
+    bool test_mode = false;
+  };
+} // namespace slidewave
+
+#endif

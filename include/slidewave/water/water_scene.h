@@ -1,0 +1,99 @@
+#ifndef slidewave_water_water_scene_h
+#define slidewave_water_water_scene_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <slidewave/core/scene_parameters.h>
+#include <slidewave/core/statistics.h>
+#include <slidewave/water/dam_break_solutions.h>
+#include <slidewave/water/shallow_water_1d.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace water
+  {
+    /**
+     * A scene with only water: the 1D shallow water column on its own (Physics = shallow
+     * water). Builds the mesh, the bed, the initial state and the boundaries from subsection
+     * "Shallow water", runs the time loop, and writes profiles, gauges, statistics and, when
+     * an exact solution is named, the error against it.
+     *
+     * Every rank solves the (small) 1D problem redundantly and only rank 0 writes, so the
+     * results do not depend on the number of MPI ranks.
+     */
+    class WaterScene
+    {
+    public:
+      /** Declares subsection "Shallow water" and everything in it. */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /** Reads and checks all parameters; throws InputError on bad input. */
+      WaterScene(const SceneParameters &scene, dealii::ParameterHandler &prm);
+
+      /**
+       * Runs the scene. Throws RunFailure when the state becomes invalid; returns false
+       * when the error against the exact solution exceeds a requested tolerance.
+       */
+      bool
+      run();
+
+      /** The solver (for tests and the coupling). */
+      const ShallowWater1D &
+      solver() const
+      {
+        return *water;
+      }
+
+    private:
+      enum class ExactSolution
+      {
+        none,
+        dam_break,
+        initial_state,
+        thacker
+      };
+
+      void
+      write_profile(unsigned int index, double time) const;
+
+      void
+      write_gauges(double time);
+
+      void
+      add_statistics(Statistics &statistics, unsigned int step, double time, double dt) const;
+
+      /** Compares with the exact solution at @p time; returns false if out of tolerance. */
+      bool
+      report_errors(double time) const;
+
+      void
+      exact_state(double x, double time, double &depth, double &discharge) const;
+
+      const SceneParameters          &scene;
+      std::unique_ptr<ShallowWater1D> water;
+
+      std::vector<double> gauge_positions;
+
+      ExactSolution                   exact_solution = ExactSolution::none;
+      std::optional<DamBreakSolution> dam_break;
+      std::optional<ThackerSolution>  thacker;
+      std::vector<double>             initial_depth, initial_discharge;
+      double                          tolerance_l1_depth = 0.;
+      double                          tolerance_linf     = 0.;
+
+      bool         is_writer = false;
+      std::string  water_directory;
+      std::ostream *gauge_file = nullptr;
+      std::unique_ptr<std::ostream> gauge_stream;
+      double       initial_volume = 0.;
+    };
+  } // namespace water
+} // namespace slidewave
+
+#endif

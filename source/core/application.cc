@@ -1,0 +1,278 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <slidewave/core/application.h>
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/parameter_documentation.h>
+#include <slidewave/core/scene_parameters.h>
+#include <slidewave/water/water_scene.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace slidewave
+{
+  namespace
+  {
+    const char *usage =
+      "Usage: slidewave [options] SCENE.prm\n"
+      "\n"
+      "Runs the scene described by the parameter file SCENE.prm (in parallel with\n"
+      "'mpirun -np N slidewave SCENE.prm').\n"
+      "\n"
+      "Options:\n"
+      "  --validate                 parse and check SCENE.prm, run nothing\n"
+      "  --set 'PATH=VALUE'         override one parameter after reading the file, e.g.\n"
+      "                             --set 'Shallow water/Mesh/Number of cells=400'\n"
+      "  --print-parameters [FMT]   print every parameter with its default, allowed\n"
+      "                             values and documentation; FMT is prm (default),\n"
+      "                             json or markdown\n"
+      "  --help                     this text\n"
+      "  --version                  the version\n"
+      "\n"
+      "Exit status: 0 success, 1 bad input (nothing run), 2 the run became invalid,\n"
+      "3 an exact-solution check exceeded its tolerance.\n";
+
+    /** deal.II's exception text without its source location, on one line. */
+    std::string
+    one_line(const dealii::ExceptionBase &exception)
+    {
+      std::ostringstream info;
+      exception.print_info(info);
+      std::string text = info.str(), result;
+      bool        space = false;
+      for (const char c : text)
+        {
+          if (std::isspace(static_cast<unsigned char>(c)))
+            space = !result.empty();
+          else
+            {
+              if (space)
+                result += ' ';
+              result += c;
+              space = false;
+            }
+        }
+      return result;
+    }
+
+    /** Applies one --set override "a/b/Name=value". */
+    void
+    apply_override(dealii::ParameterHandler &prm, const std::string &assignment)
+    {
+      const auto equal = assignment.find('=');
+      if (equal == std::string::npos)
+        throw InputError("--set", assignment, "an assignment 'Subsection/Name=value'");
+      const std::string path  = dealii::Utilities::trim(assignment.substr(0, equal));
+      const std::string value = dealii::Utilities::trim(assignment.substr(equal + 1));
+      auto              parts = dealii::Utilities::split_string_list(path, '/');
+      const std::string name  = parts.back();
+      parts.pop_back();
+      unsigned int depth = 0;
+      try
+        {
+          for (const auto &subsection : parts)
+            {
+              prm.enter_subsection(subsection);
+              ++depth;
+            }
+          prm.set(name, value);
+        }
+      catch (...)
+        {
+          for (; depth > 0; --depth)
+            prm.leave_subsection();
+          throw InputError(path, value,
+                           "a declared parameter and a value of its type (see "
+                           "'slidewave --print-parameters')");
+        }
+      for (; depth > 0; --depth)
+        prm.leave_subsection();
+    }
+
+    /**
+     * Creates the output directory (rank 0) and checks that a file can be written in it;
+     * all ranks learn the outcome.
+     */
+    void
+    prepare_output_directory(const std::string &directory, const std::string &input_file)
+    {
+      int failed = 0;
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          std::error_code error;
+          std::filesystem::create_directories(directory, error);
+          const std::string probe = directory + "/.slidewave-write-test";
+          {
+            std::ofstream test(probe);
+            failed = (!test || error) ? 1 : 0;
+          }
+          std::filesystem::remove(probe, error);
+          if (!failed)
+            {
+              const auto target =
+                std::filesystem::path(directory) / std::filesystem::path(input_file).filename();
+              std::error_code copy_error;
+              if (!std::filesystem::equivalent(input_file, target, copy_error))
+                std::filesystem::copy_file(input_file, target,
+                                           std::filesystem::copy_options::overwrite_existing,
+                                           copy_error);
+            }
+        }
+      failed = dealii::Utilities::MPI::max(failed, MPI_COMM_WORLD);
+      if (failed)
+        throw InputError("Output directory", directory, "a directory that can be created "
+                                                        "and written");
+    }
+  } // namespace
+
+
+
+  void
+  declare_all_parameters(dealii::ParameterHandler &prm)
+  {
+    SceneParameters::declare_parameters(prm);
+    water::WaterScene::declare_parameters(prm);
+  }
+
+
+
+  int
+  run_application(const std::vector<std::string> &arguments,
+                  std::ostream                   &out_all,
+                  std::ostream                   &err_all)
+  {
+    const bool    is_root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    std::ostream  null_stream(nullptr);
+    std::ostream &out = is_root ? out_all : null_stream;
+    std::ostream &err = is_root ? err_all : null_stream;
+
+    std::string              input_file;
+    std::vector<std::string> overrides;
+    bool                     validate_only = false;
+    for (unsigned int a = 0; a < arguments.size(); ++a)
+      {
+        const std::string &arg = arguments[a];
+        if (arg == "--help" || arg == "-h")
+          {
+            out << usage;
+            return success;
+          }
+        if (arg == "--version")
+          {
+            out << "slidewave " << SLIDEWAVE_VERSION << " (deal.II " << DEAL_II_PACKAGE_VERSION
+                << ")\n";
+            return success;
+          }
+        if (arg == "--print-parameters")
+          {
+            const std::string format = a + 1 < arguments.size() ? arguments[a + 1] : "prm";
+            dealii::ParameterHandler prm;
+            declare_all_parameters(prm);
+            if (format == "prm")
+              prm.print_parameters(out, dealii::ParameterHandler::PRM |
+                                          dealii::ParameterHandler::KeepDeclarationOrder);
+            else if (format == "json")
+              prm.print_parameters(out, dealii::ParameterHandler::JSON |
+                                          dealii::ParameterHandler::KeepDeclarationOrder);
+            else if (format == "markdown")
+              print_parameters_markdown(prm, out);
+            else
+              {
+                err << "slidewave: error: --print-parameters " << format
+                    << ": allowed formats are prm, json and markdown\n";
+                return input_error;
+              }
+            return success;
+          }
+        if (arg == "--validate")
+          validate_only = true;
+        else if (arg == "--set")
+          {
+            if (a + 1 >= arguments.size())
+              {
+                err << "slidewave: error: --set needs an assignment 'PATH=VALUE'\n";
+                return input_error;
+              }
+            overrides.push_back(arguments[++a]);
+          }
+        else if (!arg.empty() && arg[0] == '-')
+          {
+            err << "slidewave: error: unknown option '" << arg << "'\n\n" << usage;
+            return input_error;
+          }
+        else if (input_file.empty())
+          input_file = arg;
+        else
+          {
+            err << "slidewave: error: more than one scene file ('" << input_file << "', '"
+                << arg << "')\n\n"
+                << usage;
+            return input_error;
+          }
+      }
+
+    if (input_file.empty())
+      {
+        err << "slidewave: error: no scene file given\n\n" << usage;
+        return input_error;
+      }
+    if (!std::filesystem::is_regular_file(input_file) || !std::ifstream(input_file))
+      {
+        err << "slidewave: error: cannot read the scene file '" << input_file << "'\n";
+        return input_error;
+      }
+
+    try
+      {
+        dealii::ParameterHandler prm;
+        declare_all_parameters(prm);
+        try
+          {
+            prm.parse_input(input_file, "", /*skip_undefined=*/false,
+                            /*assert_mandatory_entries_are_found=*/false);
+          }
+        catch (const dealii::ExceptionBase &e)
+          {
+            err << "slidewave: error: " << one_line(e) << '\n';
+            return input_error;
+          }
+        for (const auto &assignment : overrides)
+          apply_override(prm, assignment);
+
+        SceneParameters scene;
+        scene.parse_parameters(prm, input_file);
+
+        switch (scene.physics)
+          {
+            case Physics::shallow_water:
+              {
+                water::WaterScene water_scene(scene, prm);
+                if (validate_only)
+                  {
+                    out << input_file << ": valid\n";
+                    return success;
+                  }
+                prepare_output_directory(scene.output_directory, input_file);
+                return water_scene.run() ? success : verification_error;
+              }
+            case Physics::none:
+              break;
+          }
+        return input_error;
+      }
+    catch (const InputError &e)
+      {
+        err << "slidewave: error in '" << input_file << "': " << e.what() << '\n';
+        return input_error;
+      }
+    catch (const RunFailure &e)
+      {
+        err << "slidewave: run failed " << e.what()
+            << "; the output written before this step is kept.\n";
+        return run_failure;
+      }
+  }
+} // namespace slidewave

@@ -1,0 +1,72 @@
+#include <slidewave/core/input_error.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace slidewave
+{
+  InputError::InputError(const std::string &parameter,
+                         const std::string &value,
+                         const std::string &allowed)
+    : std::runtime_error("parameter '" + parameter + "' = '" + value +
+                         "': allowed: " + allowed)
+    , parameter(parameter)
+    , value(value)
+    , allowed(allowed)
+  {}
+
+
+
+  RunFailure::RunFailure(const std::string &what)
+    : std::runtime_error(what)
+  {}
+
+
+
+  std::string
+  to_string(const double value)
+  {
+    std::ostringstream out;
+    out.precision(15);
+    out << value;
+    return out.str();
+  }
+
+
+
+  void
+  require_positive(const std::string &parameter, const double value)
+  {
+    if (!(value > 0.) || !std::isfinite(value))
+      throw InputError(parameter, to_string(value), "a finite number > 0");
+  }
+
+
+
+  void
+  require_non_negative(const std::string &parameter, const double value)
+  {
+    if (!(value >= 0.) || !std::isfinite(value))
+      throw InputError(parameter, to_string(value), "a finite number >= 0");
+  }
+
+
+
+  void
+  require_in_range(const std::string &parameter,
+                   const double       value,
+                   const double       lower,
+                   const bool         lower_inclusive,
+                   const double       upper,
+                   const bool         upper_inclusive)
+  {
+    const bool above = lower_inclusive ? value >= lower : value > lower;
+    const bool below = upper_inclusive ? value <= upper : value < upper;
+    if (!(above && below) || !std::isfinite(value))
+      throw InputError(parameter,
+                       to_string(value),
+                       "a number in " + std::string(lower_inclusive ? "[" : "(") +
+                         to_string(lower) + ", " + to_string(upper) +
+                         (upper_inclusive ? "]" : ")"));
+  }
+} // namespace slidewave

@@ -1,0 +1,105 @@
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/scene_parameters.h>
+
+#include <filesystem>
+#include <limits>
+
+namespace slidewave
+{
+  void
+  SceneParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using dealii::Patterns::Bool;
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+
+    prm.declare_entry("Physics",
+                      "none",
+                      Selection("none|shallow water"),
+                      "The physics this scene switches on. 'shallow water': the 1D "
+                      "well-balanced finite-volume water column of paper 000 (subsection "
+                      "'Shallow water'). A scene must choose one.");
+    prm.declare_entry("Output directory",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "Where results go (created if missing). Empty: 'output-<scene>' in the "
+                      "working directory, <scene> being the scene file's name without '.prm'. "
+                      "The scene file is copied into it.");
+
+    prm.enter_subsection("Time");
+    {
+      prm.declare_entry("Start time", "0", Double(), "Time at which the scene starts [s].");
+      prm.declare_entry("End time",
+                        "1",
+                        Double(),
+                        "Time at which the scene ends [s]; must be after the start time.");
+      prm.declare_entry("Maximum time step",
+                        "0",
+                        Double(0.),
+                        "Upper bound on the time step [s]; 0 means no bound beyond the "
+                        "stability limit of the physics.");
+      prm.declare_entry("Output interval",
+                        "0",
+                        Double(0.),
+                        "Simulated time between two outputs (profiles, particle files) [s]. "
+                        "Output is always written at the start and at the end; 0 means only "
+                        "then. Time steps are shortened to land on output times.");
+      prm.declare_entry("Statistics interval",
+                        "1",
+                        Integer(1),
+                        "A row is written to statistics.csv every this many steps (and at "
+                        "every output time and at the end).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Test");
+    {
+      prm.declare_entry("Enable",
+                        "false",
+                        Bool(),
+                        "Test mode: rank 0 prints only deterministic integral quantities at "
+                        "fixed precision (no timers, no progress line), identical for any "
+                        "number of MPI ranks.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  SceneParameters::parse_parameters(dealii::ParameterHandler &prm,
+                                    const std::string        &input_file)
+  {
+    const std::string physics_name = prm.get("Physics");
+    if (physics_name == "shallow water")
+      physics = Physics::shallow_water;
+    else
+      throw InputError("Physics",
+                       physics_name,
+                       "one of 'shallow water' (a scene must choose its physics)");
+
+    output_directory = prm.get("Output directory");
+    if (output_directory.empty())
+      output_directory =
+        "output-" + std::filesystem::path(input_file).stem().string();
+
+    prm.enter_subsection("Time");
+    {
+      start_time          = prm.get_double("Start time");
+      end_time            = prm.get_double("End time");
+      maximum_time_step   = prm.get_double("Maximum time step");
+      output_interval     = prm.get_double("Output interval");
+      statistics_interval = prm.get_integer("Statistics interval");
+    }
+    prm.leave_subsection();
+    if (!(end_time > start_time))
+      throw InputError("Time/End time",
+                       to_string(end_time),
+                       "a time after 'Time/Start time' = " + to_string(start_time));
+
+    prm.enter_subsection("Test");
+    test_mode = prm.get_bool("Enable");
+    prm.leave_subsection();
+  }
+} // namespace slidewave

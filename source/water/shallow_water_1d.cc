@@ -1,0 +1,576 @@
+#include <deal.II/base/exceptions.h>
+
+#include <slidewave/core/input_error.h>
+#include <slidewave/water/numerical_flux.h>
+#include <slidewave/water/shallow_water_1d.h>
+
+#include <cmath>
+#include <limits>
+
+namespace slidewave
+{
+  namespace water
+  {
+    void
+    SolverParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.declare_entry("Gravity", "9.81", Double(), "Gravitational acceleration g [m/s^2].");
+      prm.declare_entry("Dry depth",
+                        "1e-8",
+                        Double(),
+                        "Depth [m] at or below which a cell counts as dry: its velocity is "
+                        "zero and it carries no discharge. Its water is kept (volume is "
+                        "conserved).");
+      prm.declare_entry("Courant number",
+                        "0.5",
+                        Double(),
+                        "C in dt = C min_i dx_i / (|u_i| + sqrt(g h_i)) (paper 000, Eq. 37). "
+                        "At most 1 for first order, 0.5 for second order.");
+      prm.declare_entry("Manning coefficient",
+                        "0",
+                        Double(),
+                        "Manning's n [s/m^(1/3)] of the bed friction (paper 000, Eq. 8); 0 "
+                        "switches friction off.");
+      prm.declare_entry("Numerical flux",
+                        "roe",
+                        Selection("roe|hll"),
+                        "'roe': Roe's approximate Riemann solver with the Harten-Hyman "
+                        "entropy fix (paper 000, Eqs. 30-32), HLL at wet/dry interfaces. "
+                        "'hll': HLL with Einfeldt's wave speeds, cheaper and more diffusive.");
+      prm.declare_entry("Reconstruction",
+                        "second order",
+                        Selection("first order|second order"),
+                        "'first order': piecewise constant. 'second order': MUSCL, limited "
+                        "linear reconstruction of depth, free surface and velocity.");
+      prm.declare_entry("Limiter",
+                        "minmod",
+                        Selection("minmod|van leer|superbee"),
+                        "Slope limiter of the second-order reconstruction, from the most "
+                        "diffusive (minmod) to the most compressive (superbee).");
+      prm.declare_entry("Time integrator",
+                        "ssp rk2",
+                        Selection("forward euler|ssp rk2"),
+                        "'forward euler': one stage (paper 000, Eq. 28). 'ssp rk2': Heun's "
+                        "strong-stability-preserving two-stage method, second order in time.");
+    }
+
+
+
+    void
+    SolverParameters::parse_parameters(dealii::ParameterHandler &prm, const std::string &path)
+    {
+      gravity             = prm.get_double("Gravity");
+      dry_depth           = prm.get_double("Dry depth");
+      courant_number      = prm.get_double("Courant number");
+      manning_coefficient = prm.get_double("Manning coefficient");
+      flux = prm.get("Numerical flux") == "roe" ? NumericalFlux::roe : NumericalFlux::hll;
+      reconstruction = prm.get("Reconstruction") == "first order" ?
+                         Reconstruction::first_order :
+                         Reconstruction::second_order;
+      const std::string limiter_name = prm.get("Limiter");
+      limiter         = limiter_name == "minmod"   ? Limiter::minmod :
+                        limiter_name == "van leer" ? Limiter::van_leer :
+                                                     Limiter::superbee;
+      time_integrator = prm.get("Time integrator") == "forward euler" ?
+                          TimeIntegrator::forward_euler :
+                          TimeIntegrator::ssp_rk2;
+
+      require_positive(path + "/Gravity", gravity);
+      require_positive(path + "/Dry depth", dry_depth);
+      require_non_negative(path + "/Manning coefficient", manning_coefficient);
+      const double limit = maximum_courant_number();
+      if (!(courant_number > 0.) || !(courant_number <= limit))
+        throw InputError(path + "/Courant number",
+                         to_string(courant_number),
+                         "a number in (0, " + to_string(limit) + "]: the stability limit of "
+                           "the " +
+                           (reconstruction == Reconstruction::first_order ? "first" :
+                                                                             "second") +
+                           "-order scheme");
+    }
+
+
+
+    double
+    SolverParameters::maximum_courant_number() const
+    {
+      return reconstruction == Reconstruction::first_order ? 1. : 0.5;
+    }
+
+
+
+    ShallowWater1D::ShallowWater1D(const WaterMesh        &mesh,
+                                   const SolverParameters &parameters,
+                                   const WaterBoundary    &left,
+                                   const WaterBoundary    &right)
+      : water_mesh(mesh)
+      , prm(parameters)
+      , left_boundary(left)
+      , right_boundary(right)
+    {
+      const unsigned int n = water_mesh.n_cells();
+      inverse_width.resize(n);
+      center.resize(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          inverse_width[i] = 1. / water_mesh.width(i);
+          center[i]        = water_mesh.center(i);
+        }
+      for (auto *v : {&h, &hu, &bed_elevation, &h_stage, &hu_stage, &rate_h, &rate_hu,
+                      &h_left_face, &h_right_face, &u_left_face, &u_right_face,
+                      &bed_left_face, &bed_right_face})
+        v->assign(n, 0.);
+    }
+
+
+
+    void
+    ShallowWater1D::set_state(const std::vector<double> &depth,
+                              const std::vector<double> &discharge)
+    {
+      AssertDimension(depth.size(), n_cells());
+      AssertDimension(discharge.size(), n_cells());
+      h  = depth;
+      hu = discharge;
+      clean_dry_cells(h, hu);
+    }
+
+
+
+    void
+    ShallowWater1D::set_bed(const std::vector<double> &bed)
+    {
+      AssertDimension(bed.size(), n_cells());
+      bed_elevation = bed;
+    }
+
+
+
+    double
+    ShallowWater1D::stable_time_step() const
+    {
+      const double g      = prm.gravity;
+      double       min_dt = std::numeric_limits<double>::infinity();
+      for (unsigned int i = 0; i < h.size(); ++i)
+        if (h[i] > prm.dry_depth)
+          {
+            const double speed = std::abs(hu[i] / h[i]) + std::sqrt(g * h[i]);
+            min_dt = std::min(min_dt, water_mesh.width(i) / speed);
+          }
+      return prm.courant_number * min_dt;
+    }
+
+
+
+    namespace
+    {
+      template <Limiter limiter>
+      inline double
+      limited_slope(const double a, const double b)
+      {
+        if constexpr (limiter == Limiter::minmod)
+          return slope_limiter::minmod(a, b);
+        else if constexpr (limiter == Limiter::van_leer)
+          return slope_limiter::van_leer(a, b);
+        else
+          return slope_limiter::superbee(a, b);
+      }
+
+
+
+      /**
+       * MUSCL reconstruction on non-uniform cells of depth h, free surface η = h + B and
+       * velocity u. The bed at the faces follows as B = η - h, so that a flat free surface
+       * at rest is reconstructed flat and the hydrostatic reconstruction balances it exactly.
+       * Cells at the ends of the domain, dry cells and cells next to dry ones keep constant
+       * values; a reconstruction that would make a face depth negative is dropped.
+       */
+      template <Limiter limiter>
+      void
+      reconstruct_second_order(const std::vector<double> &h,
+                               const std::vector<double> &hu,
+                               const std::vector<double> &bed,
+                               const std::vector<double> &center,
+                               const std::vector<double> &inverse_width,
+                               const double               dry_depth,
+                               std::vector<double>       &h_l,
+                               std::vector<double>       &h_r,
+                               std::vector<double>       &u_l,
+                               std::vector<double>       &u_r,
+                               std::vector<double>       &b_l,
+                               std::vector<double>       &b_r)
+      {
+        const unsigned int n = h.size();
+        const auto velocity = [&](const unsigned int i) {
+          return h[i] > dry_depth ? hu[i] / h[i] : 0.;
+        };
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double u_i = velocity(i);
+            h_l[i] = h_r[i] = h[i];
+            u_l[i] = u_r[i] = u_i;
+            b_l[i] = b_r[i] = bed[i];
+            if (i == 0 || i == n - 1 || h[i] <= dry_depth || h[i - 1] <= dry_depth ||
+                h[i + 1] <= dry_depth)
+              continue;
+
+            const double inv_dx_l   = 1. / (center[i] - center[i - 1]);
+            const double inv_dx_r   = 1. / (center[i + 1] - center[i]);
+            const double half_width = 0.5 / inverse_width[i];
+
+            const double slope_h = limited_slope<limiter>((h[i] - h[i - 1]) * inv_dx_l,
+                                                          (h[i + 1] - h[i]) * inv_dx_r);
+            const double eta_m = h[i - 1] + bed[i - 1];
+            const double eta_i = h[i] + bed[i];
+            const double eta_p = h[i + 1] + bed[i + 1];
+            const double slope_eta =
+              limited_slope<limiter>((eta_i - eta_m) * inv_dx_l, (eta_p - eta_i) * inv_dx_r);
+            const double slope_u = limited_slope<limiter>((u_i - velocity(i - 1)) * inv_dx_l,
+                                                          (velocity(i + 1) - u_i) * inv_dx_r);
+
+            double dh = slope_h * half_width;
+            if (h[i] - std::abs(dh) < 0.)
+              dh = 0.;
+            const double deta = slope_eta * half_width;
+            const double du   = slope_u * half_width;
+
+            h_l[i] = h[i] - dh;
+            h_r[i] = h[i] + dh;
+            u_l[i] = u_i - du;
+            u_r[i] = u_i + du;
+            b_l[i] = (eta_i - deta) - h_l[i];
+            b_r[i] = (eta_i + deta) - h_r[i];
+          }
+      }
+
+
+
+      template <NumericalFlux flux_type>
+      inline void
+      interface_flux(const double h_l,
+                     const double q_l,
+                     const double h_r,
+                     const double q_r,
+                     const double g,
+                     const double dry_depth,
+                     double      &flux_h,
+                     double      &flux_q)
+      {
+        if constexpr (flux_type == NumericalFlux::roe)
+          numerical_flux::roe(h_l, q_l, h_r, q_r, g, dry_depth, flux_h, flux_q);
+        else
+          numerical_flux::hll(h_l, q_l, h_r, q_r, g, dry_depth, flux_h, flux_q);
+      }
+
+
+
+      /**
+       * The interior of the flux loop: for every interface, the hydrostatic reconstruction
+       * (Audusse et al. 2004) of the two face states to the common bed max(B_l, B_r), the
+       * numerical flux between them, and the pressure corrections g/2 (h^2 - h*^2) that
+       * balance the bed slope inside the Riemann problem.
+       */
+      template <NumericalFlux flux_type>
+      void
+      add_interface_fluxes(const unsigned int         n,
+                           const std::vector<double> &h_l,
+                           const std::vector<double> &h_r,
+                           const std::vector<double> &u_l,
+                           const std::vector<double> &u_r,
+                           const std::vector<double> &b_l,
+                           const std::vector<double> &b_r,
+                           const std::vector<double> &inverse_width,
+                           const double               g,
+                           const double               dry_depth,
+                           std::vector<double>       &rate_h,
+                           std::vector<double>       &rate_hu)
+      {
+        for (unsigned int j = 1; j < n; ++j)
+          {
+            // Left state: right face of cell j-1; right state: left face of cell j.
+            const double hl = h_r[j - 1], hr = h_l[j];
+            const double bl = b_r[j - 1], br = b_l[j];
+            const double b_star = std::max(bl, br);
+            const double hl_star = std::max(0., hl + bl - b_star);
+            const double hr_star = std::max(0., hr + br - b_star);
+
+            double fh, fq;
+            interface_flux<flux_type>(hl_star, hl_star * u_r[j - 1], hr_star,
+                                      hr_star * u_l[j], g, dry_depth, fh, fq);
+
+            const double correction_l = 0.5 * g * (hl - hl_star) * (hl + hl_star);
+            const double correction_r = 0.5 * g * (hr - hr_star) * (hr + hr_star);
+            rate_h[j - 1] -= fh * inverse_width[j - 1];
+            rate_h[j] += fh * inverse_width[j];
+            rate_hu[j - 1] -= (fq + correction_l) * inverse_width[j - 1];
+            rate_hu[j] += (fq + correction_r) * inverse_width[j];
+          }
+      }
+    } // namespace
+
+
+
+    void
+    ShallowWater1D::reconstruct(const std::vector<double> &depth,
+                                const std::vector<double> &discharge)
+    {
+      const unsigned int n = depth.size();
+      if (prm.reconstruction == Reconstruction::first_order)
+        {
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              h_left_face[i] = h_right_face[i] = depth[i];
+              u_left_face[i] = u_right_face[i] =
+                depth[i] > prm.dry_depth ? discharge[i] / depth[i] : 0.;
+              bed_left_face[i] = bed_right_face[i] = bed_elevation[i];
+            }
+          return;
+        }
+      switch (prm.limiter)
+        {
+          case Limiter::minmod:
+            reconstruct_second_order<Limiter::minmod>(
+              depth, discharge, bed_elevation, center, inverse_width, prm.dry_depth,
+              h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
+              bed_right_face);
+            break;
+          case Limiter::van_leer:
+            reconstruct_second_order<Limiter::van_leer>(
+              depth, discharge, bed_elevation, center, inverse_width, prm.dry_depth,
+              h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
+              bed_right_face);
+            break;
+          case Limiter::superbee:
+            reconstruct_second_order<Limiter::superbee>(
+              depth, discharge, bed_elevation, center, inverse_width, prm.dry_depth,
+              h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
+              bed_right_face);
+            break;
+        }
+    }
+
+
+
+    double
+    ShallowWater1D::compute_rate(const std::vector<double> &depth,
+                                 const std::vector<double> &discharge,
+                                 const double               t,
+                                 std::vector<double>       &r_h,
+                                 std::vector<double>       &r_hu)
+    {
+      const unsigned int n         = depth.size();
+      const double       g         = prm.gravity;
+      const double       dry_depth = prm.dry_depth;
+
+      reconstruct(depth, discharge);
+
+      // Centred part of the bed source (zero for first order, where the face beds equal
+      // the cell bed): -g (h_l + h_r)/2 (B_r - B_l) / Δx.
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          r_h[i]  = 0.;
+          r_hu[i] = -g * 0.5 * (h_left_face[i] + h_right_face[i]) *
+                    (bed_right_face[i] - bed_left_face[i]) * inverse_width[i];
+        }
+
+      if (prm.flux == NumericalFlux::roe)
+        add_interface_fluxes<NumericalFlux::roe>(n, h_left_face, h_right_face, u_left_face,
+                                                 u_right_face, bed_left_face,
+                                                 bed_right_face, inverse_width, g,
+                                                 dry_depth, r_h, r_hu);
+      else
+        add_interface_fluxes<NumericalFlux::hll>(n, h_left_face, h_right_face, u_left_face,
+                                                 u_right_face, bed_left_face,
+                                                 bed_right_face, inverse_width, g,
+                                                 dry_depth, r_h, r_hu);
+
+      // The two ends: Riemann problem between the inner face state and the ghost state of
+      // the boundary condition, on the same bed (so no hydrostatic correction is needed).
+      double inflow = 0.;
+      for (const bool left_end : {true, false})
+        {
+          const unsigned int   i        = left_end ? 0 : n - 1;
+          const double         h_inside = left_end ? h_left_face[i] : h_right_face[i];
+          const double         u_inside = left_end ? u_left_face[i] : u_right_face[i];
+          const WaterBoundary &boundary = left_end ? left_boundary : right_boundary;
+          double               h_ghost, u_ghost;
+          boundary.ghost_state(h_inside, u_inside, t, g, dry_depth, left_end, h_ghost,
+                               u_ghost);
+          double fh, fq;
+          if (left_end)
+            {
+              if (prm.flux == NumericalFlux::roe)
+                numerical_flux::roe(h_ghost, h_ghost * u_ghost, h_inside, h_inside * u_inside,
+                                    g, dry_depth, fh, fq);
+              else
+                numerical_flux::hll(h_ghost, h_ghost * u_ghost, h_inside, h_inside * u_inside,
+                                    g, dry_depth, fh, fq);
+            }
+          else
+            {
+              if (prm.flux == NumericalFlux::roe)
+                numerical_flux::roe(h_inside, h_inside * u_inside, h_ghost, h_ghost * u_ghost,
+                                    g, dry_depth, fh, fq);
+              else
+                numerical_flux::hll(h_inside, h_inside * u_inside, h_ghost, h_ghost * u_ghost,
+                                    g, dry_depth, fh, fq);
+            }
+          // A wall lets no water through: make that exact, not just round-off close.
+          if (boundary.type() == WaterBoundary::Type::wall)
+            fh = 0.;
+          if (left_end)
+            {
+              r_h[i] += fh * inverse_width[i];
+              r_hu[i] += fq * inverse_width[i];
+              inflow += fh;
+            }
+          else
+            {
+              r_h[i] -= fh * inverse_width[i];
+              r_hu[i] -= fq * inverse_width[i];
+              inflow -= fh;
+            }
+        }
+      return inflow;
+    }
+
+
+
+    void
+    ShallowWater1D::clean_dry_cells(std::vector<double> &depth,
+                                    std::vector<double> &discharge) const
+    {
+      for (unsigned int i = 0; i < depth.size(); ++i)
+        if (depth[i] <= prm.dry_depth)
+          {
+            discharge[i] = 0.;
+            // Round-off can leave a drained cell at -1e-17: that is zero water. A real
+            // negative depth is left for the run-time guard to report.
+            if (depth[i] < 0. && depth[i] > -prm.dry_depth)
+              depth[i] = 0.;
+          }
+    }
+
+
+
+    void
+    ShallowWater1D::apply_friction(const double dt)
+    {
+      if (prm.manning_coefficient == 0.)
+        return;
+      const double factor = dt * prm.gravity * prm.manning_coefficient * prm.manning_coefficient;
+      for (unsigned int i = 0; i < h.size(); ++i)
+        if (h[i] > prm.dry_depth)
+          {
+            const double speed = std::abs(hu[i] / h[i]);
+            hu[i] /= 1. + factor * speed / std::pow(h[i], 4. / 3.);
+          }
+    }
+
+
+
+    void
+    ShallowWater1D::advance(const double t, const double dt)
+    {
+      const unsigned int n = h.size();
+      if (prm.time_integrator == TimeIntegrator::forward_euler)
+        {
+          const double inflow = compute_rate(h, hu, t, rate_h, rate_hu);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              h[i] += dt * rate_h[i];
+              hu[i] += dt * rate_hu[i];
+            }
+          boundary_inflow += dt * inflow;
+        }
+      else
+        {
+          // Heun / SSP-RK2: U1 = U + dt L(U); U <- (U + U1 + dt L(U1)) / 2.
+          const double inflow_1 = compute_rate(h, hu, t, rate_h, rate_hu);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              h_stage[i]  = h[i] + dt * rate_h[i];
+              hu_stage[i] = hu[i] + dt * rate_hu[i];
+            }
+          clean_dry_cells(h_stage, hu_stage);
+          const double inflow_2 = compute_rate(h_stage, hu_stage, t + dt, rate_h, rate_hu);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              h[i]  = 0.5 * (h[i] + h_stage[i] + dt * rate_h[i]);
+              hu[i] = 0.5 * (hu[i] + hu_stage[i] + dt * rate_hu[i]);
+            }
+          boundary_inflow += 0.5 * dt * (inflow_1 + inflow_2);
+        }
+      clean_dry_cells(h, hu);
+      apply_friction(dt);
+    }
+
+
+
+    unsigned int
+    ShallowWater1D::find_invalid_cell() const
+    {
+      for (unsigned int i = 0; i < h.size(); ++i)
+        if (!std::isfinite(h[i]) || !std::isfinite(hu[i]) || h[i] < 0.)
+          return i;
+      return h.size();
+    }
+
+
+
+    double
+    ShallowWater1D::water_volume() const
+    {
+      double volume = 0.;
+      for (unsigned int i = 0; i < h.size(); ++i)
+        volume += h[i] * water_mesh.width(i);
+      return volume;
+    }
+
+
+
+    double
+    ShallowWater1D::max_speed() const
+    {
+      double speed = 0.;
+      for (unsigned int i = 0; i < h.size(); ++i)
+        speed = std::max(speed, std::abs(velocity(i)));
+      return speed;
+    }
+
+
+
+    double
+    ShallowWater1D::max_free_surface() const
+    {
+      // Over the wet cells; where all is dry, the free surface is the bed.
+      double eta     = -std::numeric_limits<double>::infinity();
+      double max_bed = -std::numeric_limits<double>::infinity();
+      for (unsigned int i = 0; i < h.size(); ++i)
+        {
+          max_bed = std::max(max_bed, bed_elevation[i]);
+          if (h[i] > prm.dry_depth)
+            eta = std::max(eta, h[i] + bed_elevation[i]);
+        }
+      return std::isfinite(eta) ? eta : max_bed;
+    }
+
+
+
+    double
+    ShallowWater1D::free_surface_at(const double x) const
+    {
+      const unsigned int n = h.size();
+      if (x <= center[0])
+        return h[0] + bed_elevation[0];
+      if (x >= center[n - 1])
+        return h[n - 1] + bed_elevation[n - 1];
+      unsigned int i = water_mesh.cell_containing(x);
+      if (x < center[i])
+        --i;
+      const double w = (x - center[i]) / (center[i + 1] - center[i]);
+      return (1. - w) * (h[i] + bed_elevation[i]) + w * (h[i + 1] + bed_elevation[i + 1]);
+    }
+  } // namespace water
+} // namespace slidewave

@@ -8,6 +8,7 @@
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/water/water_scene.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -56,6 +57,37 @@ namespace slidewave
             }
         }
       return result;
+    }
+
+    /**
+     * deal.II's parse errors give a line number but not the subsection, and several
+     * subsections have entries of the same name ("Type"). Replays the subsection/end lines
+     * of @p file up to that line and returns " (in subsection 'A/B')", or "" at top level.
+     */
+    std::string
+    subsection_at_line(const std::string &file, const std::string &message)
+    {
+      const auto at = message.find("Line <");
+      if (at == std::string::npos)
+        return "";
+      const unsigned int line_number = std::atoi(message.c_str() + at + 6);
+      std::ifstream            in(file);
+      std::vector<std::string> path;
+      std::string              line;
+      for (unsigned int n = 1; n < line_number && std::getline(in, line); ++n)
+        {
+          const std::string trimmed = dealii::Utilities::trim(line.substr(0, line.find('#')));
+          if (trimmed.rfind("subsection ", 0) == 0)
+            path.push_back(dealii::Utilities::trim(trimmed.substr(11)));
+          else if (trimmed == "end" && !path.empty())
+            path.pop_back();
+        }
+      if (path.empty())
+        return "";
+      std::string joined;
+      for (const auto &p : path)
+        joined += (joined.empty() ? "" : "/") + p;
+      return " (in subsection '" + joined + "')";
     }
 
     /** Applies one --set override "a/b/Name=value". */
@@ -236,7 +268,8 @@ namespace slidewave
           }
         catch (const dealii::ExceptionBase &e)
           {
-            err << "slidewave: error: " << one_line(e) << '\n';
+            err << "slidewave: error: " << one_line(e)
+                << subsection_at_line(input_file, one_line(e)) << '\n';
             return input_error;
           }
         for (const auto &assignment : overrides)

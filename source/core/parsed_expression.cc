@@ -5,6 +5,8 @@
 #include <slidewave/core/parsed_expression.h>
 
 #include <cmath>
+#include <iostream>
+#include <sstream>
 
 namespace slidewave
 {
@@ -50,6 +52,10 @@ namespace slidewave
     const auto constant_map = parse_constants(parameter + " constants", constants);
     if (dealii::Utilities::trim(expression).empty())
       throw InputError(parameter, expression, "a non-empty expression of x and t");
+    // deal.II prints muparser's diagnosis to std::cerr (once per rank) before it throws:
+    // capture it, so that the user gets one line, with muparser's reason in it.
+    std::ostringstream diagnosis;
+    std::streambuf    *cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
     try
       {
         function->initialize("x,t", expression, constant_map, /*time_dependent=*/true);
@@ -57,16 +63,25 @@ namespace slidewave
         // at parse time, and not in the middle of a run.
         const double probe = value(0., 0.);
         (void)probe;
-      }
-    catch (const InputError &)
-      {
-        throw;
+        std::cerr.rdbuf(cerr_buffer);
       }
     catch (...)
       {
+        std::cerr.rdbuf(cerr_buffer);
+        std::string reason;
+        const std::string text = diagnosis.str();
+        const auto        at   = text.find("Message:");
+        if (at != std::string::npos)
+          {
+            const auto open  = text.find('<', at);
+            const auto close = text.find('>', open);
+            if (open != std::string::npos && close != std::string::npos)
+              reason = " (muparser: " + text.substr(open + 1, close - open - 1) + ")";
+          }
         throw InputError(parameter, expression,
-                         "a valid expression of x and t (muparser syntax, e.g. "
-                         "'x < 0.5 ? 1.0 : 0.5'), using only the declared constants");
+                         "a valid expression of x and t in muparser syntax, e.g. "
+                         "'x < 0.5 ? 1.0 : 0.5', using only the declared constants" +
+                           reason);
       }
   }
 

@@ -67,6 +67,17 @@ namespace slidewave
 
 
 
+  std::string
+  SceneParameters::resolve_path(const std::string &file_name) const
+  {
+    if (file_name.empty() || std::filesystem::path(file_name).is_absolute() ||
+        scene_directory.empty())
+      return file_name;
+    return (std::filesystem::path(scene_directory) / file_name).string();
+  }
+
+
+
   void
   SceneParameters::parse_parameters(dealii::ParameterHandler &prm,
                                     const std::string        &input_file)
@@ -79,6 +90,7 @@ namespace slidewave
                        physics_name,
                        "one of 'shallow water' (a scene must choose its physics)");
 
+    scene_directory = std::filesystem::path(input_file).parent_path().string();
     output_directory = prm.get("Output directory");
     if (output_directory.empty())
       output_directory =

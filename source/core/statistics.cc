@@ -1,5 +1,6 @@
 #include <slidewave/core/statistics.h>
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -71,7 +72,11 @@ namespace slidewave
         char buffer[64];
         for (unsigned int c = 0; c < columns.size(); ++c)
           {
-            std::snprintf(buffer, sizeof(buffer), "%.8e", last_row[c]);
+            const double v = last_row[c];
+            if (v == std::floor(v) && std::abs(v) < 1e15)
+              std::snprintf(buffer, sizeof(buffer), "%.0f", v);
+            else
+              std::snprintf(buffer, sizeof(buffer), "%.8e", v);
             *echo << (c == 0 ? "" : " ") << columns[c] << '=' << buffer;
           }
         *echo << '\n';

@@ -64,7 +64,7 @@ namespace slidewave
               continue;
             throw InputError(parameter,
                              filename,
-                             "a CSV file of two numeric columns x,y (line " +
+                             "a CSV file of two numeric columns (line " +
                                std::to_string(line_number) + " reads '" + trimmed + "')");
           }
         seen_first_line = true;

@@ -22,6 +22,13 @@ namespace slidewave
                         "Depth [m] at or below which a cell counts as dry: its velocity is "
                         "zero and it carries no discharge. Its water is kept (volume is "
                         "conserved).");
+      prm.declare_entry("Film depth",
+                        "1e-4",
+                        Double(),
+                        "Depth [m] below which the velocity of a thin film is damped "
+                        "smoothly to zero (u = 2 h hu / (h^2 + h_film^2)), so that films "
+                        "left by a receding shoreline get no spurious speed; 0 switches the "
+                        "damping off.");
       prm.declare_entry("Courant number",
                         "0.5",
                         Double(),
@@ -62,6 +69,7 @@ namespace slidewave
     {
       gravity             = prm.get_double("Gravity");
       dry_depth           = prm.get_double("Dry depth");
+      film_depth          = prm.get_double("Film depth");
       courant_number      = prm.get_double("Courant number");
       manning_coefficient = prm.get_double("Manning coefficient");
       flux = prm.get("Numerical flux") == "roe" ? NumericalFlux::roe : NumericalFlux::hll;
@@ -78,6 +86,7 @@ namespace slidewave
 
       require_positive(path + "/Gravity", gravity);
       require_positive(path + "/Dry depth", dry_depth);
+      require_non_negative(path + "/Film depth", film_depth);
       require_non_negative(path + "/Manning coefficient", manning_coefficient);
       const double limit = maximum_courant_number();
       if (!(courant_number > 0.) || !(courant_number <= limit))
@@ -194,6 +203,8 @@ namespace slidewave
                                const std::vector<double> &center,
                                const std::vector<double> &inverse_width,
                                const double               dry_depth,
+                               const double               gravity,
+                               const double               half_step,
                                std::vector<double>       &h_l,
                                std::vector<double>       &h_r,
                                std::vector<double>       &u_l,
@@ -235,12 +246,26 @@ namespace slidewave
             const double deta = slope_eta * half_width;
             const double du   = slope_u * half_width;
 
-            h_l[i] = h[i] - dh;
-            h_r[i] = h[i] + dh;
-            u_l[i] = u_i - du;
-            u_r[i] = u_i + du;
-            b_l[i] = (eta_i - deta) - h_l[i];
-            b_r[i] = (eta_i + deta) - h_r[i];
+            // Hancock predictor (forward Euler only): evolve the face values by half a step
+            // with the primitive equations h_t = -(u h_x + h u_x), u_t = -(u u_x + g eta_x),
+            // which makes the one-stage scheme second order in time as well. The bed does
+            // not move, so eta changes as h does and the face beds B = eta - h are
+            // unchanged: a lake at rest (u = 0, eta_x = 0) is left exactly as it is.
+            double dh_dt = 0., du_dt = 0.;
+            if (half_step > 0.)
+              {
+                dh_dt = -half_step * (u_i * slope_h + h[i] * slope_u);
+                du_dt = -half_step * (u_i * slope_u + gravity * slope_eta);
+                if (h[i] - std::abs(dh) + dh_dt < 0.)
+                  dh_dt = 0.;
+              }
+
+            h_l[i] = h[i] - dh + dh_dt;
+            h_r[i] = h[i] + dh + dh_dt;
+            u_l[i] = u_i - du + du_dt;
+            u_r[i] = u_i + du + du_dt;
+            b_l[i] = (eta_i - deta) - (h[i] - dh);
+            b_r[i] = (eta_i + deta) - (h[i] + dh);
           }
       }
 
@@ -307,13 +332,31 @@ namespace slidewave
             rate_hu[j] += (fq + correction_r) * inverse_width[j];
           }
       }
+
+      inline void
+      interface_flux_dispatch(const NumericalFlux flux_type,
+                              const double        h_l,
+                              const double        q_l,
+                              const double        h_r,
+                              const double        q_r,
+                              const double        g,
+                              const double        dry_depth,
+                              double             &flux_h,
+                              double             &flux_q)
+      {
+        if (flux_type == NumericalFlux::roe)
+          numerical_flux::roe(h_l, q_l, h_r, q_r, g, dry_depth, flux_h, flux_q);
+        else
+          numerical_flux::hll(h_l, q_l, h_r, q_r, g, dry_depth, flux_h, flux_q);
+      }
     } // namespace
 
 
 
     void
     ShallowWater1D::reconstruct(const std::vector<double> &depth,
-                                const std::vector<double> &discharge)
+                                const std::vector<double> &discharge,
+                                const double               half_step)
     {
       const unsigned int n = depth.size();
       if (prm.reconstruction == Reconstruction::first_order)
@@ -332,19 +375,19 @@ namespace slidewave
           case Limiter::minmod:
             reconstruct_second_order<Limiter::minmod>(
               depth, discharge, bed_elevation, center, inverse_width, prm.dry_depth,
-              h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
+              prm.gravity, half_step, h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
               bed_right_face);
             break;
           case Limiter::van_leer:
             reconstruct_second_order<Limiter::van_leer>(
               depth, discharge, bed_elevation, center, inverse_width, prm.dry_depth,
-              h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
+              prm.gravity, half_step, h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
               bed_right_face);
             break;
           case Limiter::superbee:
             reconstruct_second_order<Limiter::superbee>(
               depth, discharge, bed_elevation, center, inverse_width, prm.dry_depth,
-              h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
+              prm.gravity, half_step, h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
               bed_right_face);
             break;
         }
@@ -356,6 +399,7 @@ namespace slidewave
     ShallowWater1D::compute_rate(const std::vector<double> &depth,
                                  const std::vector<double> &discharge,
                                  const double               t,
+                                 const double               half_step,
                                  std::vector<double>       &r_h,
                                  std::vector<double>       &r_hu)
     {
@@ -363,7 +407,7 @@ namespace slidewave
       const double       g         = prm.gravity;
       const double       dry_depth = prm.dry_depth;
 
-      reconstruct(depth, discharge);
+      reconstruct(depth, discharge, half_step);
 
       // Centred part of the bed source (zero for first order, where the face beds equal
       // the cell bed): -g (h_l + h_r)/2 (B_r - B_l) / Δx.
@@ -386,49 +430,60 @@ namespace slidewave
                                                  dry_depth, r_h, r_hu);
 
       // The two ends: Riemann problem between the inner face state and the ghost state of
-      // the boundary condition, on the same bed (so no hydrostatic correction is needed).
+      // the boundary condition. Behind a wall the bed is mirrored (flat); behind an open end
+      // it continues with the slope of the last two cells, so that flow down a sloping
+      // channel feels the full gravity in the end cells too. The hydrostatic reconstruction
+      // is the same as inside.
       double inflow = 0.;
       for (const bool left_end : {true, false})
         {
           const unsigned int   i        = left_end ? 0 : n - 1;
           const double         h_inside = left_end ? h_left_face[i] : h_right_face[i];
           const double         u_inside = left_end ? u_left_face[i] : u_right_face[i];
+          const double         b_inside = left_end ? bed_left_face[i] : bed_right_face[i];
           const WaterBoundary &boundary = left_end ? left_boundary : right_boundary;
-          double               h_ghost, u_ghost;
+          const bool           is_wall  = boundary.type() == WaterBoundary::Type::wall;
+
+          double b_ghost = bed_elevation[i];
+          if (!is_wall && n > 1)
+            {
+              const unsigned int k = left_end ? 1 : n - 2;
+              b_ghost = bed_elevation[i] + (bed_elevation[i] - bed_elevation[k]) /
+                                             std::abs(center[i] - center[k]) /
+                                             inverse_width[i];
+            }
+          double h_ghost, u_ghost;
           boundary.ghost_state(h_inside, u_inside, t, g, dry_depth, left_end, h_ghost,
                                u_ghost);
+
+          const double b_star       = std::max(b_inside, b_ghost);
+          const double h_in_star    = std::max(0., h_inside + b_inside - b_star);
+          const double h_ghost_star = std::max(0., h_ghost + b_ghost - b_star);
+          const double correction =
+            0.5 * g * (h_inside - h_in_star) * (h_inside + h_in_star);
+
           double fh, fq;
+          const double q_in    = h_in_star * u_inside;
+          const double q_ghost = h_ghost_star * u_ghost;
           if (left_end)
-            {
-              if (prm.flux == NumericalFlux::roe)
-                numerical_flux::roe(h_ghost, h_ghost * u_ghost, h_inside, h_inside * u_inside,
-                                    g, dry_depth, fh, fq);
-              else
-                numerical_flux::hll(h_ghost, h_ghost * u_ghost, h_inside, h_inside * u_inside,
-                                    g, dry_depth, fh, fq);
-            }
+            interface_flux_dispatch(prm.flux, h_ghost_star, q_ghost, h_in_star, q_in, g,
+                                    dry_depth, fh, fq);
           else
-            {
-              if (prm.flux == NumericalFlux::roe)
-                numerical_flux::roe(h_inside, h_inside * u_inside, h_ghost, h_ghost * u_ghost,
-                                    g, dry_depth, fh, fq);
-              else
-                numerical_flux::hll(h_inside, h_inside * u_inside, h_ghost, h_ghost * u_ghost,
-                                    g, dry_depth, fh, fq);
-            }
+            interface_flux_dispatch(prm.flux, h_in_star, q_in, h_ghost_star, q_ghost, g,
+                                    dry_depth, fh, fq);
           // A wall lets no water through: make that exact, not just round-off close.
-          if (boundary.type() == WaterBoundary::Type::wall)
+          if (is_wall)
             fh = 0.;
           if (left_end)
             {
               r_h[i] += fh * inverse_width[i];
-              r_hu[i] += fq * inverse_width[i];
+              r_hu[i] += (fq + correction) * inverse_width[i];
               inflow += fh;
             }
           else
             {
               r_h[i] -= fh * inverse_width[i];
-              r_hu[i] -= fq * inverse_width[i];
+              r_hu[i] -= (fq + correction) * inverse_width[i];
               inflow -= fh;
             }
         }
@@ -441,6 +496,7 @@ namespace slidewave
     ShallowWater1D::clean_dry_cells(std::vector<double> &depth,
                                     std::vector<double> &discharge) const
     {
+      const double film2 = prm.film_depth * prm.film_depth;
       for (unsigned int i = 0; i < depth.size(); ++i)
         if (depth[i] <= prm.dry_depth)
           {
@@ -449,6 +505,14 @@ namespace slidewave
             // negative depth is left for the run-time guard to report.
             if (depth[i] < 0. && depth[i] > -prm.dry_depth)
               depth[i] = 0.;
+          }
+        else if (depth[i] < prm.film_depth)
+          {
+            // Thin film: desingularized velocity u = 2 h (hu) / (h^2 + h_film^2) (Kurganov
+            // and Petrova 2007), which is hu/h for thick water and goes to zero with h, so
+            // that films left behind by a receding shoreline do not race down the slope.
+            const double h = depth[i];
+            discharge[i]   = h * (2. * h * discharge[i] / (h * h + film2));
           }
     }
 
@@ -476,7 +540,7 @@ namespace slidewave
       const unsigned int n = h.size();
       if (prm.time_integrator == TimeIntegrator::forward_euler)
         {
-          const double inflow = compute_rate(h, hu, t, rate_h, rate_hu);
+          const double inflow = compute_rate(h, hu, t, 0.5 * dt, rate_h, rate_hu);
           for (unsigned int i = 0; i < n; ++i)
             {
               h[i] += dt * rate_h[i];
@@ -487,14 +551,14 @@ namespace slidewave
       else
         {
           // Heun / SSP-RK2: U1 = U + dt L(U); U <- (U + U1 + dt L(U1)) / 2.
-          const double inflow_1 = compute_rate(h, hu, t, rate_h, rate_hu);
+          const double inflow_1 = compute_rate(h, hu, t, 0., rate_h, rate_hu);
           for (unsigned int i = 0; i < n; ++i)
             {
               h_stage[i]  = h[i] + dt * rate_h[i];
               hu_stage[i] = hu[i] + dt * rate_hu[i];
             }
           clean_dry_cells(h_stage, hu_stage);
-          const double inflow_2 = compute_rate(h_stage, hu_stage, t + dt, rate_h, rate_hu);
+          const double inflow_2 = compute_rate(h_stage, hu_stage, t + dt, 0., rate_h, rate_hu);
           for (unsigned int i = 0; i < n; ++i)
             {
               h[i]  = 0.5 * (h[i] + h_stage[i] + dt * rate_h[i]);

@@ -27,7 +27,8 @@ namespace slidewave
                         "",
                         Anything(),
                         "For 'discharge' and 'depth': a CSV table t,value interpolated "
-                        "linearly in time (constant beyond its ends).");
+                        "linearly in time (constant beyond its ends), relative to the scene "
+                        "file.");
     }
 
 
@@ -39,7 +40,9 @@ namespace slidewave
 
 
     void
-    WaterBoundary::parse_parameters(dealii::ParameterHandler &prm, const std::string &path)
+    WaterBoundary::parse_parameters(dealii::ParameterHandler &prm,
+                                    const std::string        &path,
+                                    const SceneParameters    &scene)
     {
       const std::string type = prm.get("Type");
       if (type == "wall")
@@ -55,7 +58,8 @@ namespace slidewave
         {
           const std::string file = prm.get("Time series file");
           if (!file.empty())
-            series = std::make_shared<Table1D>(path + "/Time series file", file);
+            series = std::make_shared<Table1D>(path + "/Time series file",
+                                               scene.resolve_path(file));
           else
             expression = std::make_shared<ParsedExpression>(path + "/Value", prm.get("Value"));
           if (boundary_type == Type::depth && prescribed_value(0.) < 0.)

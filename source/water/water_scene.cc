@@ -58,7 +58,8 @@ namespace slidewave
                             "Bed elevation B(x) [m], an expression of x.");
           prm.declare_entry("Function constants", "", Anything(),
                             "Constants used in the expression, e.g. 'a=0.2, b=0.05'.");
-          prm.declare_entry("Table file", "", Anything(), "CSV file x,B for 'table'.");
+          prm.declare_entry("Table file", "", Anything(),
+                            "CSV file x,B for 'table' (relative to the scene file).");
         }
         prm.leave_subsection();
 
@@ -93,9 +94,9 @@ namespace slidewave
                           "recorded every step into water/gauges.csv.");
         prm.leave_subsection();
 
-        prm.enter_subsection("Exact solution");
+        prm.enter_subsection("Verification");
         {
-          prm.declare_entry("Type",
+          prm.declare_entry("Exact solution",
                             "none",
                             Selection("none|dam break|initial state|thacker"),
                             "Exact solution to measure the error against at the end. 'dam "
@@ -115,6 +116,10 @@ namespace slidewave
           prm.declare_entry("Tolerance on maximum errors", "0", Double(0.),
                             "If > 0, the run fails (exit status 3) when the maximum error of "
                             "the free surface or of the discharge exceeds it.");
+          prm.declare_entry("Tolerance on volume balance", "0", Double(0.),
+                            "If > 0, the run fails (exit status 3) when, at any step, the "
+                            "water volume differs from the initial volume plus the boundary "
+                            "inflow by more than this fraction of the initial volume.");
         }
         prm.leave_subsection();
       }
@@ -142,7 +147,7 @@ namespace slidewave
       for (unsigned int e = 0; e < 2; ++e)
         {
           prm.enter_subsection(ends[e]);
-          boundaries[e].parse_parameters(prm, section + "/" + ends[e]);
+          boundaries[e].parse_parameters(prm, section + "/" + ends[e], scene);
           prm.leave_subsection();
         }
 
@@ -156,7 +161,8 @@ namespace slidewave
       {
         if (prm.get("Type") == "table")
           {
-            const Table1D table(section + "/Bed/Table file", prm.get("Table file"));
+            const Table1D table(section + "/Bed/Table file",
+                                scene.resolve_path(prm.get("Table file")));
             for (unsigned int i = 0; i < n; ++i)
               bed[i] = table.value(mesh.center(i));
           }
@@ -240,10 +246,11 @@ namespace slidewave
       }
       prm.leave_subsection();
 
-      prm.enter_subsection("Exact solution");
+      prm.enter_subsection("Verification");
       {
-        const std::string type = prm.get("Type");
+        const std::string type = prm.get("Exact solution");
         const double      g    = solver_parameters.gravity;
+        tolerance_volume       = prm.get_double("Tolerance on volume balance");
         tolerance_l1_depth     = prm.get_double("Tolerance on L1 depth error");
         tolerance_linf         = prm.get_double("Tolerance on maximum errors");
         if (type == "dam break")
@@ -252,7 +259,7 @@ namespace slidewave
             const double h_l = prm.get_double("Left depth");
             const double h_r = prm.get_double("Right depth");
             if (!(h_l > h_r))
-              throw InputError(section + "/Exact solution/Right depth", to_string(h_r),
+              throw InputError(section + "/Verification/Right depth", to_string(h_r),
                                "a depth smaller than 'Left depth' = " + to_string(h_l));
             dam_break.emplace(h_l, h_r, prm.get_double("Dam position"), g);
           }
@@ -437,6 +444,7 @@ namespace slidewave
       double       dt           = 0.;
       const double end_time     = scene.end_time;
       const double time_tolerance = 1e-12 * (end_time - scene.start_time);
+      double       max_volume_balance = 0.;
       double       next_output = scene.output_interval > 0. ?
                                    scene.start_time + scene.output_interval :
                                    end_time;
@@ -478,6 +486,13 @@ namespace slidewave
                 ", hu = " + to_string(q));
             }
 
+          if (tolerance_volume > 0.)
+            max_volume_balance =
+              std::max(max_volume_balance,
+                       std::abs(water->water_volume() - initial_volume -
+                                water->net_boundary_inflow()) /
+                         initial_volume);
+
           {
             TimerOutput::Scope scope(timer, "water: output");
             write_gauges(time);
@@ -509,7 +524,18 @@ namespace slidewave
                   << format("%.3e", water->water_volume() - initial_volume -
                                       water->net_boundary_inflow())
                   << " m^2 beyond the boundary inflow." << std::endl;
-      return report_errors(time);
+      bool within = report_errors(time);
+      if (tolerance_volume > 0.)
+        {
+          const bool ok = max_volume_balance <= tolerance_volume;
+          within        = within && ok;
+          if (is_writer)
+            std::cout << "Largest relative water volume balance error = "
+                      << format("%.3e", max_volume_balance) << " <= "
+                      << format("%.3e", tolerance_volume) << ": " << (ok ? "yes" : "no")
+                      << '\n';
+        }
+      return within;
     }
 
 

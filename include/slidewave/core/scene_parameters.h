@@ -34,7 +34,15 @@ namespace slidewave
     void
     parse_parameters(dealii::ParameterHandler &prm, const std::string &input_file);
 
+    /**
+     * A file name given in the scene, resolved: relative names are taken relative to the
+     * directory of the scene file, so that a scene and its data files move together.
+     */
+    std::string
+    resolve_path(const std::string &file_name) const;
+
     Physics     physics = Physics::none;
+    std::string scene_directory;
     std::string output_directory;
 
     double       start_time          = 0.;

@@ -62,6 +62,7 @@ namespace slidewave
 
       double         gravity             = 9.81;
       double         dry_depth           = 1e-8;
+      double         film_depth          = 1e-4;
       double         courant_number      = 0.5;
       double         manning_coefficient = 0.;
       NumericalFlux  flux                = NumericalFlux::roe;
@@ -82,7 +83,8 @@ namespace slidewave
      * - bed source: hydrostatic reconstruction (Audusse et al. 2004) at the interfaces plus a
      *   centred cell term, so that a lake at rest, wet or partly dry, stays at rest to
      *   round-off on any mesh, and depths stay non-negative;
-     * - time: forward Euler (paper, Eq. 28) or SSP-RK2 (Heun), then Manning friction
+     * - time: forward Euler (paper, Eq. 28; with second order, the face values get a
+     *   Hancock half-step predictor, MUSCL-Hancock) or SSP-RK2 (Heun), then Manning friction
      *   semi-implicitly (Eqs. 35–36), stable for any depth;
      * - time step: the CFL condition of Eq. 37 cell by cell, dt = C min_i Δx_i / (|u_i| + c_i).
      *
@@ -190,19 +192,23 @@ namespace slidewave
     private:
       /**
        * The rate of change dU/dt of the hyperbolic part with the bed source, for the state
-       * (@p depth, @p discharge) with boundary values at time @p t. Returns the net volume
-       * inflow rate through the two ends.
+       * (@p depth, @p discharge) with boundary values at time @p t. @p half_step > 0 turns
+       * on the Hancock predictor of the face values (forward Euler). Returns the net
+       * volume inflow rate through the two ends.
        */
       double
       compute_rate(const std::vector<double> &depth,
                    const std::vector<double> &discharge,
                    double                     t,
+                   double                     half_step,
                    std::vector<double>       &rate_h,
                    std::vector<double>       &rate_hu);
 
       /** Face values of h, u and B on both sides of every cell. */
       void
-      reconstruct(const std::vector<double> &depth, const std::vector<double> &discharge);
+      reconstruct(const std::vector<double> &depth,
+                  const std::vector<double> &discharge,
+                  double                     half_step);
 
       /** Zero discharge in dry cells, round-off negatives to zero. */
       void

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <slidewave/core/parsed_expression.h>
+#include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/table_1d.h>
 
 #include <memory>
@@ -45,7 +46,9 @@ namespace slidewave
 
       /** Reads them (the handler inside the subsection); @p path names it in errors. */
       void
-      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &path,
+                       const SceneParameters    &scene);
 
       /** A wall; what a solver built without parameters gets. */
       WaterBoundary() = default;

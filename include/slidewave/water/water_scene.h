@@ -86,6 +86,7 @@ namespace slidewave
       std::vector<double>             initial_depth, initial_discharge;
       double                          tolerance_l1_depth = 0.;
       double                          tolerance_linf     = 0.;
+      double                          tolerance_volume   = 0.;
 
       bool         is_writer = false;
       std::string  water_directory;

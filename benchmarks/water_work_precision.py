@@ -70,7 +70,7 @@ import matplotlib.ticker  # noqa: E402
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 FLUXES = ["roe", "hll"]
-# (reconstruction, limiter); the limiter is ignored by first order.
+# (reconstruction, limiter); first order has no limiter.
 RECONSTRUCTIONS = [("first order", None),
                    ("second order", "minmod"),
                    ("second order", "van leer"),
@@ -252,7 +252,7 @@ def write_csv(path, rows):
             w.writerow({k: ("" if row.get(k) is None else row[k]) for k in CSV_COLUMNS})
 
 
-_COLOURS = {("first order", None): "tab:gray", ("second order", "minmod"): "tab:blue",
+_COLOURS = {("first order", ""): "black", ("second order", "minmod"): "tab:blue",
             ("second order", "van leer"): "tab:green",
             ("second order", "superbee"): "tab:red"}
 _LINESTYLES = {"roe": "-", "hll": "--"}
@@ -308,10 +308,12 @@ def plot_convergence(rows, path, title):
     if ok:
         n0 = min(r["cells"] for r in ok)
         n1 = max(r["cells"] for r in ok)
-        e0 = max(r["l1_depth"] for r in ok if r["cells"] == n0)
+        e_hi = max(r["l1_depth"] for r in ok if r["cells"] == n0)
+        e_lo = min(r["l1_depth"] for r in ok if r["cells"] == n0)
         ns = np.array([n0, n1], dtype=float)
-        for slope, style in ((1.0, ":"), (0.5, "-.")):
-            ax.loglog(ns, 1.3 * e0 * (ns / n0) ** (-slope), color="k", ls=style, lw=1,
+        # Guides: slope -1/2 above all the data, slope -1 below it.
+        for slope, e0, style in ((1.0, 0.6 * e_lo, ":"), (0.5, 1.3 * e_hi, "-.")):
+            ax.loglog(ns, e0 * (ns / n0) ** (-slope), color="k", ls=style, lw=1,
                       label=f"slope -{slope:g}")
         ax.set_xticks(sorted({r["cells"] for r in ok}))
         ax.xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
@@ -390,12 +392,12 @@ def work_precision(args):
 
     write_csv(args.csv, rows)
     print(f"wrote {args.csv}")
-    title = (f"Stoker dam break (h_l = 1 m, h_r = 0.5 m), t = {args.end_time} s, "
+    title = (f"Stoker dam break (h_l = 1 m, h_r = 0.5 m), t = {args.end_time} s\n"
              f"cells {', '.join(map(str, cells_list))}; "
              f"C = {args.courant_first} (1st) / {args.courant_second} (2nd order)")
-    plot_work_precision(rows, args.png, "Work-precision: " + title)
+    plot_work_precision(rows, args.png, "Work-precision, " + title)
     print(f"wrote {args.png}")
-    plot_convergence(rows, args.convergence_png, "Convergence: " + title)
+    plot_convergence(rows, args.convergence_png, "Convergence, " + title)
     print(f"wrote {args.convergence_png}")
     return 1 if failed else 0
 

@@ -9,23 +9,6 @@ namespace slidewave
 {
   namespace
   {
-    /** ParameterHandler's JSON output mangles names: "_XX" is the character with hex XX. */
-    std::string
-    demangle(const std::string &name)
-    {
-      std::string result;
-      for (std::size_t i = 0; i < name.size(); ++i)
-        if (name[i] == '_' && i + 2 < name.size())
-          {
-            const std::string hex = name.substr(i + 1, 2);
-            result += static_cast<char>(std::stoi(hex, nullptr, 16));
-            i += 2;
-          }
-        else
-          result += name[i];
-      return result;
-    }
-
     std::string
     escape(const std::string &text)
     {
@@ -51,7 +34,7 @@ namespace slidewave
               out << "\n## " << (path.empty() ? "Top level" : path) << "\n\n";
               header_written = true;
             }
-          out << "- **`" << demangle(child.first) << "`** (default: `"
+          out << "- **`" << child.first << "`** (default: `"
               << node.get<std::string>("default_value") << "`; allowed: "
               << escape(node.get<std::string>("pattern_description")) << ")  \n  "
               << node.get<std::string>("documentation") << "\n";
@@ -59,7 +42,7 @@ namespace slidewave
       for (const auto &child : tree)
         if (child.second.find("value") == child.second.not_found())
           print_section(child.second,
-                        (path.empty() ? "" : path + " / ") + demangle(child.first),
+                        (path.empty() ? "" : path + " / ") + child.first,
                         out);
     }
   } // namespace

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Work-precision and throughput benchmarks of SlideWave's 1D shallow-water solver.
 
 Default mode (work-precision)

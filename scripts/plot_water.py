@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plot the 1D shallow-water output of a SlideWave run.
 
 Usage::

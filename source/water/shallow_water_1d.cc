@@ -58,8 +58,10 @@ namespace slidewave
       prm.declare_entry("Time integrator",
                         "ssp rk2",
                         Selection("forward euler|ssp rk2"),
-                        "'forward euler': one stage (paper 000, Eq. 28). 'ssp rk2': Heun's "
-                        "strong-stability-preserving two-stage method, second order in time.");
+                        "'forward euler': one stage (paper 000, Eq. 28); with second-order "
+                        "reconstruction the face values get a half-step Hancock predictor "
+                        "(MUSCL-Hancock), second order in time at one flux evaluation per "
+                        "step. 'ssp rk2': Heun's strong-stability-preserving two-stage method.");
     }
 
 
@@ -121,11 +123,14 @@ namespace slidewave
       const unsigned int n = water_mesh.n_cells();
       inverse_width.resize(n);
       center.resize(n);
+      inverse_spacing.resize(n > 1 ? n - 1 : 0);
       for (unsigned int i = 0; i < n; ++i)
         {
           inverse_width[i] = 1. / water_mesh.width(i);
           center[i]        = water_mesh.center(i);
         }
+      for (unsigned int i = 0; i + 1 < n; ++i)
+        inverse_spacing[i] = 1. / (center[i + 1] - center[i]);
       for (auto *v : {&h, &hu, &bed_elevation, &h_stage, &hu_stage, &rate_h, &rate_hu,
                       &h_left_face, &h_right_face, &u_left_face, &u_right_face,
                       &bed_left_face, &bed_right_face})
@@ -200,7 +205,7 @@ namespace slidewave
       reconstruct_second_order(const std::vector<double> &h,
                                const std::vector<double> &hu,
                                const std::vector<double> &bed,
-                               const std::vector<double> &center,
+                               const std::vector<double> &inverse_spacing,
                                const std::vector<double> &inverse_width,
                                const double               dry_depth,
                                const double               gravity,
@@ -213,12 +218,17 @@ namespace slidewave
                                std::vector<double>       &b_r)
       {
         const unsigned int n = h.size();
-        const auto velocity = [&](const unsigned int i) {
-          return h[i] > dry_depth ? hu[i] / h[i] : 0.;
-        };
+        // Cell velocities once (one division per cell), into the left-face array, which
+        // is overwritten cell by cell behind the sweep: cell i reads u[i+1] before cell
+        // i+1 writes it, and u[i-1] is kept in a register.
+        for (unsigned int i = 0; i < n; ++i)
+          u_l[i] = h[i] > dry_depth ? hu[i] / h[i] : 0.;
+        double u_previous = 0.;
         for (unsigned int i = 0; i < n; ++i)
           {
-            const double u_i = velocity(i);
+            const double u_i    = u_l[i];
+            const double u_left = u_previous;
+            u_previous          = u_i;
             h_l[i] = h_r[i] = h[i];
             u_l[i] = u_r[i] = u_i;
             b_l[i] = b_r[i] = bed[i];
@@ -226,8 +236,8 @@ namespace slidewave
                 h[i + 1] <= dry_depth)
               continue;
 
-            const double inv_dx_l   = 1. / (center[i] - center[i - 1]);
-            const double inv_dx_r   = 1. / (center[i + 1] - center[i]);
+            const double inv_dx_l   = inverse_spacing[i - 1];
+            const double inv_dx_r   = inverse_spacing[i];
             const double half_width = 0.5 / inverse_width[i];
 
             const double slope_h = limited_slope<limiter>((h[i] - h[i - 1]) * inv_dx_l,
@@ -237,8 +247,8 @@ namespace slidewave
             const double eta_p = h[i + 1] + bed[i + 1];
             const double slope_eta =
               limited_slope<limiter>((eta_i - eta_m) * inv_dx_l, (eta_p - eta_i) * inv_dx_r);
-            const double slope_u = limited_slope<limiter>((u_i - velocity(i - 1)) * inv_dx_l,
-                                                          (velocity(i + 1) - u_i) * inv_dx_r);
+            const double slope_u = limited_slope<limiter>((u_i - u_left) * inv_dx_l,
+                                                          (u_l[i + 1] - u_i) * inv_dx_r);
 
             double dh = slope_h * half_width;
             if (h[i] - std::abs(dh) < 0.)
@@ -374,19 +384,19 @@ namespace slidewave
         {
           case Limiter::minmod:
             reconstruct_second_order<Limiter::minmod>(
-              depth, discharge, bed_elevation, center, inverse_width, prm.dry_depth,
+              depth, discharge, bed_elevation, inverse_spacing, inverse_width, prm.dry_depth,
               prm.gravity, half_step, h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
               bed_right_face);
             break;
           case Limiter::van_leer:
             reconstruct_second_order<Limiter::van_leer>(
-              depth, discharge, bed_elevation, center, inverse_width, prm.dry_depth,
+              depth, discharge, bed_elevation, inverse_spacing, inverse_width, prm.dry_depth,
               prm.gravity, half_step, h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
               bed_right_face);
             break;
           case Limiter::superbee:
             reconstruct_second_order<Limiter::superbee>(
-              depth, discharge, bed_elevation, center, inverse_width, prm.dry_depth,
+              depth, discharge, bed_elevation, inverse_spacing, inverse_width, prm.dry_depth,
               prm.gravity, half_step, h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
               bed_right_face);
             break;

@@ -456,7 +456,10 @@ namespace slidewave
 
       while (time < end_time - time_tolerance)
         {
-          dt = water->stable_time_step();
+          {
+            TimerOutput::Scope scope(timer, "water: advance");
+            dt = water->stable_time_step();
+          }
           if (scene.maximum_time_step > 0.)
             dt = std::min(dt, scene.maximum_time_step);
           const double target = std::min(next_output, end_time);

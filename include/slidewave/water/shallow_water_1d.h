@@ -225,6 +225,8 @@ namespace slidewave
 
       std::vector<double> inverse_width;
       std::vector<double> center;
+      /** 1 / (x_{i+1} - x_i), the inverse distances between neighbouring centres. */
+      std::vector<double> inverse_spacing;
 
       std::vector<double> h, hu, bed_elevation;
       double              boundary_inflow = 0.;

@@ -6,6 +6,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parameter_documentation.h>
 #include <slidewave/core/scene_parameters.h>
+#include <slidewave/mpm/material_point_scene.h>
 #include <slidewave/water/water_scene.h>
 
 #include <cstdlib>
@@ -167,6 +168,7 @@ namespace slidewave
   {
     SceneParameters::declare_parameters(prm);
     water::WaterScene::declare_parameters(prm);
+    mpm::MaterialPointScene::declare_parameters(prm);
   }
 
 
@@ -290,6 +292,17 @@ namespace slidewave
                   }
                 prepare_output_directory(scene.output_directory, input_file);
                 return water_scene.run() ? success : verification_error;
+              }
+            case Physics::material_points:
+              {
+                mpm::MaterialPointScene scene_of_material_points(scene, prm);
+                if (validate_only)
+                  {
+                    out << input_file << ": valid\n";
+                    return success;
+                  }
+                prepare_output_directory(scene.output_directory, input_file);
+                return scene_of_material_points.run() ? success : verification_error;
               }
             case Physics::none:
               break;

@@ -16,10 +16,12 @@ namespace slidewave
 
     prm.declare_entry("Physics",
                       "none",
-                      Selection("none|shallow water"),
+                      Selection("none|shallow water|material points"),
                       "The physics this scene switches on. 'shallow water': the 1D "
                       "well-balanced finite-volume water column of paper 000 (subsection "
-                      "'Shallow water'). A scene must choose one.");
+                      "'Shallow water'). 'material points': the 2D plane-strain material "
+                      "point method for soil of paper 000 (subsection 'Material points'). A "
+                      "scene must choose one.");
     prm.declare_entry("Output directory",
                       "",
                       dealii::Patterns::Anything(),
@@ -85,10 +87,13 @@ namespace slidewave
     const std::string physics_name = prm.get("Physics");
     if (physics_name == "shallow water")
       physics = Physics::shallow_water;
+    else if (physics_name == "material points")
+      physics = Physics::material_points;
     else
       throw InputError("Physics",
                        physics_name,
-                       "one of 'shallow water' (a scene must choose its physics)");
+                       "one of 'shallow water', 'material points' (a scene must choose its "
+                       "physics)");
 
     scene_directory = std::filesystem::path(input_file).parent_path().string();
     output_directory = prm.get("Output directory");

@@ -14,7 +14,8 @@ namespace slidewave
   enum class Physics
   {
     none,
-    shallow_water
+    shallow_water,
+    material_points
   };
 
   /**

@@ -1,0 +1,137 @@
+#ifndef slidewave_materials_material_h
+#define slidewave_materials_material_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <optional>
+#include <slidewave/materials/drucker_prager.h>
+#include <slidewave/materials/linear_elastic.h>
+#include <string>
+
+namespace slidewave
+{
+  namespace materials
+  {
+    /** The constitutive models a material can follow. */
+    enum class MaterialModel
+    {
+      linear_elastic,
+      drucker_prager
+    };
+
+
+
+    /**
+     * The parameters of one material of the 2D plane-strain material point
+     * method: its name, its model, its density, its elasticity and, for the
+     * Drucker–Prager model, its strength (paper 000, §2). Every entry is
+     * read and checked whatever the model, so a file does not hide a wrong
+     * value behind a model that does not use it.
+     */
+    struct MaterialParameters
+    {
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /** Reads and checks; @p path is the subsection path used in error
+       * messages. */
+      void
+      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+
+      std::string   name            = "soil";
+      MaterialModel model           = MaterialModel::drucker_prager;
+      double        density         = 2000.;
+      double        youngs_modulus  = 1e7;
+      double        poisson_ratio   = 0.3;
+      double        friction_angle  = 30.;
+      double        cohesion        = 0.;
+      double        dilatancy_angle = 0.;
+      double        tension_cutoff  = 0.;
+    };
+
+
+
+    /**
+     * Adds the Jaumann (co-rotational) correction of a stress for the spin
+     * increment @p spin_increment_xy of one time step (paper 000, Eqs. 5 and
+     * 6, integrated with one forward Euler step):
+     *
+     *   σ ← σ + W σ - σ W,
+     *
+     * where W is the spin increment, antisymmetric and in the xy plane:
+     * W_xy = -W_yx = ω = 1/2 (∂v_x/∂y - ∂v_y/∂x) Δt, all other entries zero.
+     * In components, σ_xx += 2 ω σ_xy, σ_yy -= 2 ω σ_xy,
+     * σ_xy += ω (σ_yy - σ_xx), σ_xz += ω σ_yz, σ_yz -= ω σ_xz; σ_zz and the
+     * trace do not change.
+     *
+     * Sign check: a rigid rotation counterclockwise (from x towards y) at
+     * angular velocity Ω has v = Ω (-y, x), so ω = -Ω Δt; the update is then
+     * the first-order expansion of R σ R^T for the rotation R of angle Ω Δt,
+     * which turns a uniaxial stress along x towards y. The stress
+     * invariants are kept to first order; the relative error in J2 is of
+     * order ω^2 per step.
+     */
+    void
+    apply_jaumann_rotation(dealii::SymmetricTensor<2, 3> &stress,
+                           double                         spin_increment_xy);
+
+
+
+    /**
+     * A material: the parameters it was made from and the constitutive
+     * model that turns a material point's strain and spin increments into
+     * its new stress. Stresses are in Pa, tension positive, full 3x3 tensors
+     * of which plane strain carries xx, yy, xy and zz.
+     */
+    class Material
+    {
+    public:
+      explicit Material(const MaterialParameters &parameters);
+
+      /**
+       * The stress update of one material point over one time step:
+       * 1. the Jaumann rotation of the old @p stress by the spin increment
+       *    @p spin_increment_xy (see apply_jaumann_rotation());
+       * 2. the elastic predictor with @p strain_increment (paper 000, Eq. 2;
+       *    its zz component is zero in plane strain);
+       * 3. for the Drucker–Prager model, the return mapping of
+       *    DruckerPrager, which adds to @p equivalent_plastic_strain.
+       * A linear elastic material leaves @p equivalent_plastic_strain alone.
+       */
+      void
+      update_stress(dealii::SymmetricTensor<2, 3>       &stress,
+                    const dealii::SymmetricTensor<2, 3> &strain_increment,
+                    double                               spin_increment_xy,
+                    double &equivalent_plastic_strain) const;
+
+      /**
+       * K + 4G/3 [Pa], which sets the speed of compression waves and thereby
+       * the critical time step (paper 000, Eq. 22).
+       */
+      double
+      p_wave_modulus() const;
+
+      /** The mass density [kg/m^3]. */
+      double
+      density() const;
+
+      /** The name geometry regions refer to the material by. */
+      const std::string &
+      name() const;
+
+      MaterialModel
+      model() const;
+
+      const LinearElastic &
+      elasticity() const;
+
+    private:
+      MaterialParameters parameters;
+      LinearElastic      elastic;
+      /** The plastic model; set for MaterialModel::drucker_prager only. */
+      std::optional<DruckerPrager> plasticity;
+    };
+  } // namespace materials
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,51 @@
+#ifndef slidewave_mpm_material_point_scene_h
+#define slidewave_mpm_material_point_scene_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <slidewave/core/scene_parameters.h>
+#include <slidewave/core/statistics.h>
+#include <slidewave/mpm/material_point_solver.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    /**
+     * A scene of soil or rock only (Physics = material points): builds the grid and the
+     * material points from subsection "Material points", runs the time loop, and writes the
+     * particles (.pvtu with a .pvd time series) and statistics.
+     */
+    class MaterialPointScene
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      MaterialPointScene(const SceneParameters &scene, dealii::ParameterHandler &prm);
+
+      /** Runs the scene; throws RunFailure when a material point becomes invalid. */
+      bool
+      run();
+
+    private:
+      void
+      write_particles(unsigned int index, double time);
+
+      void
+      add_statistics(Statistics &statistics, unsigned int step, double time, double dt) const;
+
+      const SceneParameters                 &scene;
+      SolverParameters                       parameters;
+      std::unique_ptr<MaterialPointSolver>   solver;
+      std::vector<std::pair<double, std::string>> particle_files;
+    };
+  } // namespace mpm
+} // namespace slidewave
+
+#endif

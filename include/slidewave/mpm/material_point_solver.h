@@ -1,0 +1,199 @@
+#ifndef slidewave_mpm_material_point_solver_h
+#define slidewave_mpm_material_point_solver_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/particles/particle_handler.h>
+
+#include <slidewave/materials/material.h>
+#include <slidewave/mpm/material_region.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    enum class UpdateScheme
+    {
+      usl, ///< update stress last (paper 000, Algorithm 1)
+      musl ///< modified USL: strains from velocities re-mapped from the particles
+    };
+
+    enum class GridBoundary
+    {
+      free,   ///< nothing imposed
+      roller, ///< normal velocity zero (free slip)
+      fixed   ///< both velocity components zero (no slip)
+    };
+
+    /**
+     * Numerical and physical parameters of the material points, the background grid and its
+     * boundaries (subsection "Material points").
+     */
+    struct SolverParameters
+    {
+      /** Material subsections a scene may declare ("Material 1" ... ). */
+      static constexpr unsigned int max_materials = 4;
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * Reads and checks everything; only the materials that some region refers to are
+       * read.
+       */
+      void
+      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+
+      dealii::Point<2>     lower_left, upper_right;
+      double               cell_size              = 0.01;
+      unsigned int         particles_per_direction = 2;
+      UpdateScheme         update_scheme          = UpdateScheme::usl;
+      double               flip_fraction          = 0.99;
+      double               time_step_multiplier   = 0.5;
+      double               fixed_time_step        = 0.;
+      bool                 b_bar                  = true;
+      dealii::Tensor<1, 2> gravity;
+      double               damping                = 0.;
+      /** Boundary conditions on the left, right, bottom and top sides (ids 0-3). */
+      std::array<GridBoundary, 4> boundaries{{GridBoundary::roller, GridBoundary::roller,
+                                              GridBoundary::fixed, GridBoundary::free}};
+
+      std::vector<materials::MaterialParameters> materials;
+      std::vector<MaterialRegion>                regions;
+    };
+
+
+
+    /**
+     * The explicit material point method of paper 000 (§3.1, Eqs. 13–23) in 2D plane
+     * strain: material points in deal.II's ParticleHandler on a background grid of Q1 cells
+     * (a parallel::distributed::Triangulation), lumped nodal mass, and per step
+     *
+     *   1. particle to grid: nodal mass, momentum, internal and external forces
+     *      (Eqs. 14–17);
+     *   2. grid update: accelerations and velocities (Eqs. 18–19), boundary conditions;
+     *   3. grid to particle: velocities (PIC/FLIP blend) and positions (Eqs. 20–21);
+     *   4. stresses from the updated nodal velocities (USL), or from velocities mapped back
+     *      from the particles (MUSL), with the Jaumann rate (Eqs. 5–6) and, optionally, the
+     *      B-bar treatment of the volumetric strain against locking.
+     *
+     * Nodal quantities live in deal.II distributed vectors (one per component) on a scalar
+     * Q1 DoFHandler; shape functions are evaluated by hand on the axis-aligned cells.
+     * The class allocates nothing per particle per step.
+     */
+    class MaterialPointSolver
+    {
+    public:
+      explicit MaterialPointSolver(const SolverParameters &parameters);
+
+      /** Creates the grid and fills the regions with material points. */
+      void
+      setup();
+
+      /** The time step of Eq. 23 (or the fixed one). */
+      double
+      stable_time_step() const;
+
+      /** One step of length @p dt. */
+      void
+      advance(double dt);
+
+      /**
+       * Checks the particles for non-finite values and non-positive volumes; returns a
+       * description of the first bad one, or "" when all is well (collective).
+       */
+      std::string
+      find_invalid_particle() const;
+
+      /** Integral quantities, reduced over all ranks (collective). */
+      struct Integrals
+      {
+        double       mass = 0., momentum_x = 0., momentum_y = 0., kinetic_energy = 0.;
+        double       max_speed = 0., runout = 0., max_height = 0.;
+        double       lost_mass = 0.;
+        unsigned int n_particles = 0;
+      };
+
+      Integrals
+      integrals() const;
+
+      const dealii::parallel::distributed::Triangulation<2> &
+      triangulation() const
+      {
+        return tria;
+      }
+
+      const dealii::Particles::ParticleHandler<2> &
+      particles() const
+      {
+        return particle_handler;
+      }
+
+      const dealii::DoFHandler<2> &
+      dof_handler() const
+      {
+        return dofs;
+      }
+
+      /** Nodal velocities after the last grid update (ghosted). */
+      const dealii::LinearAlgebra::distributed::Vector<double> &
+      nodal_velocity(unsigned int component) const
+      {
+        return velocity[component];
+      }
+
+    private:
+      using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+      void
+      create_particles();
+
+      void
+      particles_to_grid();
+
+      void
+      update_grid(double dt);
+
+      void
+      grid_to_particles(double dt);
+
+      void
+      remap_velocities_to_grid();
+
+      void
+      update_stresses(double dt);
+
+      void
+      apply_boundary_conditions(Vector &vx, Vector &vy) const;
+
+      SolverParameters                        prm;
+      std::vector<materials::Material>        materials;
+      dealii::parallel::distributed::Triangulation<2> tria;
+      dealii::FE_Q<2>                         fe;
+      dealii::DoFHandler<2>                   dofs;
+      dealii::Particles::ParticleHandler<2>   particle_handler;
+
+      Vector nodal_mass;
+      std::array<Vector, 2> momentum, force, velocity, velocity_old;
+
+      /** Locally owned dofs on each side (0-3) where a velocity component is held at 0. */
+      std::array<std::vector<dealii::types::global_dof_index>, 2> constrained_dofs;
+
+      double lost_mass = 0.;
+
+      /** Side arrays reused every step (no allocation per particle). */
+      std::vector<dealii::Point<2>>     new_positions;
+      std::vector<dealii::Tensor<2, 2>> cell_gradients;
+    };
+  } // namespace mpm
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,52 @@
+#ifndef slidewave_mpm_material_region_h
+#define slidewave_mpm_material_region_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    /**
+     * A part of the domain filled with material points of one material at the start:
+     * a rectangle or a polygon, the name of its material and its initial velocity.
+     * Where regions overlap, the one declared first wins.
+     */
+    struct MaterialRegion
+    {
+      /** Largest number of regions a scene may declare ("Region 1" ... ). */
+      static constexpr unsigned int max_regions = 4;
+
+      /** Declares the entries of one "Region N" subsection. */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /**
+       * Reads one region (the handler inside its subsection); returns false when the
+       * region is unused (Shape = none). @p path names the subsection in errors.
+       */
+      bool
+      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+
+      /** Whether @p p lies inside the region (boundary included). */
+      bool
+      contains(const dealii::Point<2> &p) const;
+
+      /** Bounding box: lower left and upper right corners. */
+      std::pair<dealii::Point<2>, dealii::Point<2>>
+      bounding_box() const;
+
+      std::string                  material_name;
+      /** Index of the material in SolverParameters::materials (set when parsed). */
+      unsigned int                 material_index = 0;
+      dealii::Tensor<1, 2>         initial_velocity;
+      std::vector<dealii::Point<2>> polygon; ///< counter-clockwise or clockwise, closed implicitly
+    };
+  } // namespace mpm
+} // namespace slidewave
+
+#endif

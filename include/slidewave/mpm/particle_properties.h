@@ -1,0 +1,59 @@
+#ifndef slidewave_mpm_particle_properties_h
+#define slidewave_mpm_particle_properties_h
+
+#include <array>
+#include <string>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    /**
+     * The state a material point carries, as indices into its property array. A property
+     * is found by name, never by a magic number; `property_names` (same order) names them
+     * in the output files.
+     */
+    namespace property
+    {
+      enum Index : unsigned int
+      {
+        mass,                      ///< m_p [kg per m of thickness]
+        volume,                    ///< current V_p [m^2]
+        initial_volume,            ///< V_p at t = 0 [m^2]
+        velocity_x,                ///< v_p [m/s]
+        velocity_y,
+        stress_xx,                 ///< Cauchy stress, tension positive [Pa]
+        stress_yy,
+        stress_xy,
+        stress_zz,                 ///< out of plane (plane strain)
+        equivalent_plastic_strain, ///< accumulated, dimensionless
+        initial_x,                 ///< position at t = 0 [m]
+        initial_y,
+        material_id,               ///< index of the material (stored as a double)
+        n_properties
+      };
+    } // namespace property
+
+    inline const std::array<std::string, property::n_properties> &
+    property_names()
+    {
+      static const std::array<std::string, property::n_properties> names{
+        {"mass",
+         "volume",
+         "initial_volume",
+         "velocity_x",
+         "velocity_y",
+         "stress_xx",
+         "stress_yy",
+         "stress_xy",
+         "stress_zz",
+         "equivalent_plastic_strain",
+         "initial_x",
+         "initial_y",
+         "material_id"}};
+      return names;
+    }
+  } // namespace mpm
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,216 @@
+#include <deal.II/base/utilities.h>
+#include <slidewave/core/input_error.h>
+#include <slidewave/materials/material.h>
+
+namespace slidewave
+{
+  namespace materials
+  {
+    void
+    MaterialParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.declare_entry(
+        "Name",
+        "soil",
+        Anything(),
+        "The name of the material; geometry regions refer to it "
+        "by this name.");
+      prm.declare_entry(
+        "Model",
+        "drucker prager",
+        Selection("linear elastic|drucker prager"),
+        "'linear elastic': Hooke's law only. 'drucker prager': "
+        "linear elasticity with the non-associative "
+        "Drucker-Prager criterion matched to Mohr-Coulomb in "
+        "plane strain and a tension cutoff (paper 000, Eqs. 2-4).");
+      prm.declare_entry("Density",
+                        "2000",
+                        Double(),
+                        "Mass density rho [kg/m^3] (of the saturated soil in a "
+                        "total stress analysis).");
+      prm.declare_entry("Young's modulus",
+                        "1e7",
+                        Double(),
+                        "Young's modulus E [Pa] of the linear elasticity.");
+      prm.declare_entry("Poisson ratio",
+                        "0.3",
+                        Double(),
+                        "Poisson ratio nu [-] of the linear elasticity, in "
+                        "(-1, 0.5) so that the bulk and shear moduli are "
+                        "positive; values close to 0.5 (nearly incompressible) "
+                        "make the time step small.");
+      prm.declare_entry("Friction angle",
+                        "30",
+                        Double(),
+                        "Friction angle phi [degrees] of the Drucker-Prager "
+                        "criterion, in [0, 90). 0 gives the undrained (von "
+                        "Mises) criterion sqrt(J2) = c of a total stress "
+                        "analysis, where the cohesion is the undrained shear "
+                        "strength s_u.");
+      prm.declare_entry(
+        "Cohesion",
+        "0",
+        Double(),
+        "Cohesion c [Pa] of the Drucker-Prager criterion, >= 0.");
+      prm.declare_entry(
+        "Dilatancy angle",
+        "0",
+        Double(),
+        "Dilatancy angle psi [degrees] of the plastic potential, "
+        "in [0, friction angle]: 0 gives plastic flow without "
+        "volume change, the friction angle gives associated "
+        "flow.");
+      prm.declare_entry(
+        "Tension cutoff",
+        "0",
+        Double(),
+        "Tensile strength T [Pa] on the mean stress p = tr(sigma)/3 "
+        "(tension positive), >= 0: the Drucker-Prager model keeps "
+        "p <= T. With a friction angle above 0, values above "
+        "c cot(phi), the apex of the cone, have no effect.");
+    }
+
+
+
+    void
+    MaterialParameters::parse_parameters(dealii::ParameterHandler &prm,
+                                         const std::string        &path)
+    {
+      name            = dealii::Utilities::trim(prm.get("Name"));
+      model           = prm.get("Model") == "linear elastic" ?
+                          MaterialModel::linear_elastic :
+                          MaterialModel::drucker_prager;
+      density         = prm.get_double("Density");
+      youngs_modulus  = prm.get_double("Young's modulus");
+      poisson_ratio   = prm.get_double("Poisson ratio");
+      friction_angle  = prm.get_double("Friction angle");
+      cohesion        = prm.get_double("Cohesion");
+      dilatancy_angle = prm.get_double("Dilatancy angle");
+      tension_cutoff  = prm.get_double("Tension cutoff");
+
+      if (name.empty())
+        throw InputError(path + "/Name",
+                         prm.get("Name"),
+                         "a non-empty name, by which geometry regions refer to "
+                         "the material");
+      require_positive(path + "/Density", density);
+      require_positive(path + "/Young's modulus", youngs_modulus);
+      if (!(poisson_ratio > -1. && poisson_ratio < 0.5))
+        throw InputError(
+          path + "/Poisson ratio",
+          to_string(poisson_ratio),
+          "a number in (-1, 0.5), where the bulk and shear moduli "
+          "are positive and finite");
+      require_in_range(
+        path + "/Friction angle", friction_angle, 0., true, 90., false);
+      if (!(dilatancy_angle >= 0. && dilatancy_angle <= friction_angle))
+        throw InputError(path + "/Dilatancy angle",
+                         to_string(dilatancy_angle),
+                         "a number in [0, " + to_string(friction_angle)
+                           + "]: the dilatancy angle may not exceed the "
+                             "friction angle");
+      require_non_negative(path + "/Cohesion", cohesion);
+      require_non_negative(path + "/Tension cutoff", tension_cutoff);
+    }
+
+
+
+    void
+    apply_jaumann_rotation(dealii::SymmetricTensor<2, 3> &stress,
+                           const double                   spin_increment_xy)
+    {
+      // σ + Wσ - σW for W_xy = ω, W_yx = -ω (see the documentation in the
+      // header); computed from the old components.
+      const double omega = spin_increment_xy;
+      const double xx    = stress[0][0];
+      const double yy    = stress[1][1];
+      const double xy    = stress[0][1];
+      const double xz    = stress[0][2];
+      const double yz    = stress[1][2];
+      stress[0][0] += 2. * omega * xy;
+      stress[1][1] -= 2. * omega * xy;
+      stress[0][1] += omega * (yy - xx);
+      stress[0][2] += omega * yz;
+      stress[1][2] -= omega * xz;
+    }
+
+
+
+    Material::Material(const MaterialParameters &parameters)
+      : parameters(parameters)
+      , elastic(parameters.youngs_modulus, parameters.poisson_ratio)
+    {
+      if (parameters.model == MaterialModel::drucker_prager)
+        plasticity.emplace(parameters.youngs_modulus,
+                           parameters.poisson_ratio,
+                           parameters.friction_angle,
+                           parameters.cohesion,
+                           parameters.dilatancy_angle,
+                           parameters.tension_cutoff);
+    }
+
+
+
+    void
+    Material::update_stress(
+      dealii::SymmetricTensor<2, 3>       &stress,
+      const dealii::SymmetricTensor<2, 3> &strain_increment,
+      const double                         spin_increment_xy,
+      double                              &equivalent_plastic_strain) const
+    {
+      apply_jaumann_rotation(stress, spin_increment_xy);
+      switch (parameters.model)
+        {
+          case MaterialModel::linear_elastic:
+            stress += elastic.stress_increment(strain_increment);
+            break;
+          case MaterialModel::drucker_prager:
+            plasticity->update_stress(stress,
+                                      strain_increment,
+                                      equivalent_plastic_strain);
+            break;
+        }
+    }
+
+
+
+    double
+    Material::p_wave_modulus() const
+    {
+      return elastic.p_wave_modulus();
+    }
+
+
+
+    double
+    Material::density() const
+    {
+      return parameters.density;
+    }
+
+
+
+    const std::string &
+    Material::name() const
+    {
+      return parameters.name;
+    }
+
+
+
+    MaterialModel
+    Material::model() const
+    {
+      return parameters.model;
+    }
+
+
+
+    const LinearElastic &
+    Material::elasticity() const
+    {
+      return elastic;
+    }
+  } // namespace materials
+} // namespace slidewave

@@ -1,0 +1,199 @@
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/particles/data_out.h>
+
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/progress_reporter.h>
+#include <slidewave/mpm/material_point_scene.h>
+#include <slidewave/mpm/particle_properties.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    namespace
+    {
+      const std::string section = "Material points";
+    }
+
+
+
+    void
+    MaterialPointScene::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection(section);
+      SolverParameters::declare_parameters(prm);
+      prm.leave_subsection();
+    }
+
+
+
+    MaterialPointScene::MaterialPointScene(const SceneParameters    &scene_parameters,
+                                           dealii::ParameterHandler &prm)
+      : scene(scene_parameters)
+    {
+      prm.enter_subsection(section);
+      parameters.parse_parameters(prm, section);
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    MaterialPointScene::write_particles(const unsigned int index, const double time)
+    {
+      const auto &names = property_names();
+      std::vector<std::string> data_names(names.begin(), names.end());
+      std::vector<dealii::DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(property::n_properties,
+                       dealii::DataComponentInterpretation::component_is_scalar);
+      interpretation[property::velocity_x] =
+        dealii::DataComponentInterpretation::component_is_part_of_vector;
+      interpretation[property::velocity_y] =
+        dealii::DataComponentInterpretation::component_is_part_of_vector;
+      data_names[property::velocity_x] = "velocity";
+      data_names[property::velocity_y] = "velocity";
+
+      dealii::Particles::DataOut<2> data_out;
+      data_out.build_patches(solver->particles(), data_names, interpretation);
+      const std::string directory = scene.output_directory + "/particles/";
+      const std::string record    = data_out.write_vtu_with_pvtu_record(
+        directory, "particles", index, MPI_COMM_WORLD, 5);
+      particle_files.emplace_back(time, "particles/" + record);
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          std::ofstream pvd(scene.output_directory + "/particles.pvd");
+          dealii::DataOutBase::write_pvd_record(pvd, particle_files);
+        }
+    }
+
+
+
+    void
+    MaterialPointScene::add_statistics(Statistics        &statistics,
+                                       const unsigned int step,
+                                       const double       time,
+                                       const double       dt) const
+    {
+      const auto integrals = solver->integrals();
+      statistics.add_value("time", time);
+      statistics.add_value("step", step);
+      statistics.add_value("dt", dt);
+      statistics.add_value("particles", integrals.n_particles);
+      statistics.add_value("mass", integrals.mass);
+      statistics.add_value("lost_mass", integrals.lost_mass);
+      statistics.add_value("momentum_x", integrals.momentum_x);
+      statistics.add_value("momentum_y", integrals.momentum_y);
+      statistics.add_value("kinetic_energy", integrals.kinetic_energy);
+      statistics.add_value("max_particle_speed", integrals.max_speed);
+      statistics.add_value("runout", integrals.runout);
+      statistics.add_value("max_surface_height", integrals.max_height);
+    }
+
+
+
+    bool
+    MaterialPointScene::run()
+    {
+      using dealii::TimerOutput;
+      const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      const bool test_mode = scene.test_mode;
+      dealii::ConditionalOStream pcout(std::cout, is_writer && !test_mode);
+      TimerOutput timer(MPI_COMM_WORLD, pcout,
+                        test_mode ? TimerOutput::never : TimerOutput::summary,
+                        TimerOutput::wall_times);
+
+      if (is_writer)
+        std::filesystem::create_directories(scene.output_directory + "/particles");
+      MPI_Barrier(MPI_COMM_WORLD);
+
+      {
+        TimerOutput::Scope scope(timer, "mpm: setup");
+        solver = std::make_unique<MaterialPointSolver>(parameters);
+        solver->setup();
+      }
+      pcout << "Material points: " << solver->particles().n_global_particles()
+            << " particles on " << solver->triangulation().n_global_active_cells()
+            << " cells; output in " << scene.output_directory << std::endl;
+
+      Statistics statistics;
+      statistics.open(scene.output_directory + "/statistics.csv", is_writer,
+                      is_writer && test_mode ? &std::cout : nullptr);
+      ProgressReporter progress(is_writer && !test_mode ? &std::cout : nullptr,
+                                scene.start_time, scene.end_time);
+
+      double       time           = scene.start_time;
+      unsigned int step           = 0;
+      unsigned int output_index   = 0;
+      double       dt             = 0.;
+      const double end_time       = scene.end_time;
+      const double time_tolerance = 1e-12 * (end_time - scene.start_time);
+      double       next_output    = scene.output_interval > 0. ?
+                                      scene.start_time + scene.output_interval :
+                                      end_time;
+
+      if (!test_mode)
+        {
+          TimerOutput::Scope scope(timer, "mpm: output");
+          write_particles(output_index++, time);
+        }
+      add_statistics(statistics, step, time, dt);
+      statistics.end_row();
+
+      while (time < end_time - time_tolerance)
+        {
+          {
+            TimerOutput::Scope scope(timer, "mpm: time step");
+            dt = solver->stable_time_step();
+          }
+          if (scene.maximum_time_step > 0.)
+            dt = std::min(dt, scene.maximum_time_step);
+          const double target         = std::min(next_output, end_time);
+          const bool   reaches_target = time + dt >= target - time_tolerance;
+          if (reaches_target)
+            dt = target - time;
+          {
+            TimerOutput::Scope scope(timer, "mpm: advance");
+            solver->advance(dt);
+          }
+          time = reaches_target ? target : time + dt;
+          ++step;
+
+          const std::string problem = solver->find_invalid_particle();
+          if (!problem.empty())
+            throw RunFailure("at step " + std::to_string(step) + ", t = " + to_string(time) +
+                             " s: " + problem);
+
+          const bool is_output_time = reaches_target && target == next_output;
+          const bool at_end         = time >= end_time - time_tolerance;
+          if (is_output_time || at_end)
+            {
+              if (!test_mode)
+                {
+                  TimerOutput::Scope scope(timer, "mpm: output");
+                  write_particles(output_index++, time);
+                }
+              if (is_output_time)
+                next_output = scene.output_interval > 0. ? next_output + scene.output_interval :
+                                                           end_time;
+            }
+          if (step % scene.statistics_interval == 0 || is_output_time || at_end)
+            {
+              TimerOutput::Scope scope(timer, "mpm: statistics");
+              add_statistics(statistics, step, time, dt);
+              statistics.end_row();
+            }
+          progress.report(step, time, dt, at_end);
+        }
+      return true;
+    }
+  } // namespace mpm
+} // namespace slidewave

@@ -1,0 +1,766 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+
+#include <slidewave/core/input_error.h>
+#include <slidewave/mpm/material_point_solver.h>
+#include <slidewave/mpm/particle_properties.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    namespace
+    {
+      std::vector<double>
+      parse_numbers(const std::string &parameter, const std::string &text,
+                    const unsigned int count)
+      {
+        std::vector<double> values;
+        for (const auto &item : dealii::Utilities::split_string_list(text, ','))
+          {
+            try
+              {
+                std::size_t  used  = 0;
+                const double value = std::stod(item, &used);
+                if (used != item.size() || !std::isfinite(value))
+                  throw std::invalid_argument("");
+                values.push_back(value);
+              }
+            catch (const std::exception &)
+              {
+                values.clear();
+                break;
+              }
+          }
+        if (values.size() != count)
+          throw InputError(parameter, text,
+                           std::to_string(count) + " comma-separated numbers");
+        return values;
+      }
+
+      GridBoundary
+      boundary_type(const std::string &name)
+      {
+        return name == "fixed" ? GridBoundary::fixed :
+               name == "roller" ? GridBoundary::roller :
+                                  GridBoundary::free;
+      }
+
+      /**
+       * Q1 shape values and gradients at reference point (xi, eta) of an axis-aligned cell
+       * of size hx x hy, in deal.II's vertex order (0,0), (1,0), (0,1), (1,1).
+       */
+      inline void
+      q1_shape(const double xi, const double eta, const double inv_hx, const double inv_hy,
+               double (&value)[4], double (&grad_x)[4], double (&grad_y)[4])
+      {
+        value[0]  = (1. - xi) * (1. - eta);
+        value[1]  = xi * (1. - eta);
+        value[2]  = (1. - xi) * eta;
+        value[3]  = xi * eta;
+        grad_x[0] = -(1. - eta) * inv_hx;
+        grad_x[1] = (1. - eta) * inv_hx;
+        grad_x[2] = -eta * inv_hx;
+        grad_x[3] = eta * inv_hx;
+        grad_y[0] = -(1. - xi) * inv_hy;
+        grad_y[1] = -xi * inv_hy;
+        grad_y[2] = (1. - xi) * inv_hy;
+        grad_y[3] = xi * inv_hy;
+      }
+    } // namespace
+
+
+
+    void
+    SolverParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.declare_entry("Update scheme", "usl", Selection("usl|musl"),
+                        "'usl': stresses from the updated nodal velocities (update stress "
+                        "last, paper 000). 'musl': from nodal velocities re-mapped from the "
+                        "updated particle velocities (less noisy for fast flows).");
+      prm.declare_entry("FLIP fraction", "0.99", Double(0., 1.),
+                        "Blend of the particle velocity update: 1 is pure FLIP (increments "
+                        "of the nodal velocities, no dissipation, noisy), 0 pure PIC (nodal "
+                        "velocities, dissipative).");
+      prm.declare_entry("Time step multiplier", "0.5", Double(),
+                        "alpha in dt = alpha h / max_p (c_p + |v_p|) (paper 000, Eq. 23); "
+                        "in (0, 1].");
+      prm.declare_entry("Fixed time step", "0", Double(0.),
+                        "If > 0, this time step [s] instead of Eq. 23 (it is checked against "
+                        "the stability limit at the start).");
+      prm.declare_entry("B-bar", "true", Bool(),
+                        "Average the volumetric strain increment over each cell (B-bar / "
+                        "mean dilatation, paper 000 §3.1) against volumetric locking.");
+      prm.declare_entry("Gravity", "0, -9.81", Anything(), "Gravity vector g_x, g_y [m/s^2].");
+      prm.declare_entry("Local damping", "0", Double(0., 1.),
+                        "Cundall's local non-viscous damping coefficient of the nodal "
+                        "forces, for quasi-static loading; 0 for dynamics.");
+      prm.declare_entry("Particles per direction", "2", Integer(1, 10),
+                        "Material points per cell per direction at the start (n x n per "
+                        "cell, at the centres of n x n sub-cells).");
+      prm.enter_subsection("Grid");
+      {
+        prm.declare_entry("Lower left", "0, 0", Anything(), "Corner x, y of the domain [m].");
+        prm.declare_entry("Upper right", "1, 1", Anything(), "Corner x, y of the domain [m].");
+        prm.declare_entry("Cell size", "0.05", Double(),
+                          "Side of the square background cells [m]; the domain sides must "
+                          "be (close to) multiples of it.");
+      }
+      prm.leave_subsection();
+      prm.enter_subsection("Boundary conditions");
+      for (const std::string side : {"Left", "Right", "Bottom", "Top"})
+        prm.declare_entry(side,
+                          side == "Bottom" ? "fixed" : side == "Top" ? "free" : "roller",
+                          Selection("free|roller|fixed"),
+                          "Grid velocity condition on this side: 'fixed' (no slip), "
+                          "'roller' (free slip), 'free'.");
+      prm.leave_subsection();
+      for (unsigned int m = 1; m <= max_materials; ++m)
+        {
+          prm.enter_subsection("Material " + std::to_string(m));
+          materials::MaterialParameters::declare_parameters(prm);
+          prm.leave_subsection();
+        }
+      for (unsigned int r = 1; r <= MaterialRegion::max_regions; ++r)
+        {
+          prm.enter_subsection("Region " + std::to_string(r));
+          MaterialRegion::declare_parameters(prm);
+          prm.leave_subsection();
+        }
+    }
+
+
+
+    void
+    SolverParameters::parse_parameters(dealii::ParameterHandler &prm, const std::string &path)
+    {
+      update_scheme = prm.get("Update scheme") == "musl" ? UpdateScheme::musl : UpdateScheme::usl;
+      flip_fraction = prm.get_double("FLIP fraction");
+      time_step_multiplier = prm.get_double("Time step multiplier");
+      require_in_range(path + "/Time step multiplier", time_step_multiplier, 0., false, 1., true);
+      fixed_time_step = prm.get_double("Fixed time step");
+      b_bar           = prm.get_bool("B-bar");
+      const auto g    = parse_numbers(path + "/Gravity", prm.get("Gravity"), 2);
+      gravity[0]      = g[0];
+      gravity[1]      = g[1];
+      damping         = prm.get_double("Local damping");
+      particles_per_direction = prm.get_integer("Particles per direction");
+
+      prm.enter_subsection("Grid");
+      {
+        const auto a = parse_numbers(path + "/Grid/Lower left", prm.get("Lower left"), 2);
+        const auto b = parse_numbers(path + "/Grid/Upper right", prm.get("Upper right"), 2);
+        lower_left   = dealii::Point<2>(a[0], a[1]);
+        upper_right  = dealii::Point<2>(b[0], b[1]);
+        cell_size    = prm.get_double("Cell size");
+        require_positive(path + "/Grid/Cell size", cell_size);
+        if (!(b[0] > a[0]) || !(b[1] > a[1]))
+          throw InputError(path + "/Grid/Upper right", prm.get("Upper right"),
+                           "a corner above and to the right of 'Lower left'");
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            const double n = (b[d] - a[d]) / cell_size;
+            if (std::abs(n - std::round(n)) > 1e-6 * n)
+              throw InputError(path + "/Grid/Cell size", to_string(cell_size),
+                               "a size that divides the domain sides (" +
+                                 to_string(b[0] - a[0]) + " x " + to_string(b[1] - a[1]) +
+                                 " m)");
+          }
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Boundary conditions");
+      boundaries = {{boundary_type(prm.get("Left")), boundary_type(prm.get("Right")),
+                     boundary_type(prm.get("Bottom")), boundary_type(prm.get("Top"))}};
+      prm.leave_subsection();
+
+      // Regions first: they say which materials the scene uses. Only those material
+      // subsections are read (and checked); the others are ignored.
+      regions.clear();
+      for (unsigned int r = 1; r <= MaterialRegion::max_regions; ++r)
+        {
+          prm.enter_subsection("Region " + std::to_string(r));
+          MaterialRegion    region;
+          const std::string region_path = path + "/Region " + std::to_string(r);
+          if (region.parse_parameters(prm, region_path))
+            {
+              const std::string entry =
+                prm.get("Shape") == "rectangle" ? "Rectangle" : "Polygon";
+              const auto box = region.bounding_box();
+              for (unsigned int d = 0; d < 2; ++d)
+                if (box.first[d] < lower_left[d] - 1e-12 ||
+                    box.second[d] > upper_right[d] + 1e-12)
+                  throw InputError(region_path + "/" + entry, prm.get(entry),
+                                   "a region inside the grid [" + to_string(lower_left[0]) +
+                                     ", " + to_string(upper_right[0]) + "] x [" +
+                                     to_string(lower_left[1]) + ", " +
+                                     to_string(upper_right[1]) + "]");
+              regions.push_back(region);
+            }
+          prm.leave_subsection();
+        }
+
+      materials.clear();
+      for (unsigned int r = 0; r < regions.size(); ++r)
+        {
+          MaterialRegion           &region = regions[r];
+          const std::string         region_path = path + "/Region " + std::to_string(r + 1);
+          std::vector<unsigned int> slots;
+          for (unsigned int m = 1; m <= max_materials; ++m)
+            {
+              prm.enter_subsection("Material " + std::to_string(m));
+              if (dealii::Utilities::trim(prm.get("Name")) == region.material_name)
+                slots.push_back(m);
+              prm.leave_subsection();
+            }
+          if (slots.empty())
+            throw InputError(region_path + "/Material", region.material_name,
+                             "the name of a declared material ('Material N/Name')");
+          if (slots.size() > 1)
+            throw InputError(region_path + "/Material", region.material_name,
+                             "a material name declared once (it is the name of 'Material " +
+                               std::to_string(slots[0]) + "' and 'Material " +
+                               std::to_string(slots[1]) + "')");
+          // Read each used material once, however many regions use it.
+          region.material_index = materials.size();
+          for (unsigned int k = 0; k < materials.size(); ++k)
+            if (materials[k].name == region.material_name)
+              region.material_index = k;
+          if (region.material_index == materials.size())
+            {
+              const std::string slot = "Material " + std::to_string(slots[0]);
+              prm.enter_subsection(slot);
+              materials::MaterialParameters material;
+              material.parse_parameters(prm, path + "/" + slot);
+              material.name = region.material_name;
+              prm.leave_subsection();
+              materials.push_back(material);
+            }
+        }
+      if (regions.empty())
+        throw InputError(path + "/Region 1/Shape", "none",
+                         "at least one region filled with material ('rectangle' or "
+                         "'polygon')");
+    }
+
+
+
+    MaterialPointSolver::MaterialPointSolver(const SolverParameters &parameters)
+      : prm(parameters)
+      , tria(MPI_COMM_WORLD)
+      , fe(1)
+    {
+      for (const auto &material : prm.materials)
+        materials.emplace_back(material);
+    }
+
+
+
+    void
+    MaterialPointSolver::setup()
+    {
+      const std::vector<unsigned int> subdivisions{
+        static_cast<unsigned int>(
+          std::round((prm.upper_right[0] - prm.lower_left[0]) / prm.cell_size)),
+        static_cast<unsigned int>(
+          std::round((prm.upper_right[1] - prm.lower_left[1]) / prm.cell_size))};
+      dealii::GridGenerator::subdivided_hyper_rectangle(tria, subdivisions, prm.lower_left,
+                                                        prm.upper_right, /*colorize=*/true);
+      dofs.reinit(tria);
+      dofs.distribute_dofs(fe);
+
+      const dealii::IndexSet owned = dofs.locally_owned_dofs();
+      dealii::IndexSet       relevant;
+      dealii::DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+      nodal_mass.reinit(owned, relevant, MPI_COMM_WORLD);
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          momentum[d].reinit(nodal_mass);
+          force[d].reinit(nodal_mass);
+          velocity[d].reinit(nodal_mass);
+          velocity_old[d].reinit(nodal_mass);
+        }
+
+      // Sides 0, 1 (left, right) hold the x velocity for rollers; 2, 3 the y velocity;
+      // fixed sides hold both.
+      for (unsigned int side = 0; side < 4; ++side)
+        {
+          if (prm.boundaries[side] == GridBoundary::free)
+            continue;
+          dealii::IndexSet on_side;
+          dealii::DoFTools::extract_boundary_dofs(dofs, dealii::ComponentMask(), on_side,
+                                                  {static_cast<dealii::types::boundary_id>(side)});
+          on_side = on_side & owned;
+          const unsigned int normal = side < 2 ? 0 : 1;
+          for (unsigned int d = 0; d < 2; ++d)
+            if (d == normal || prm.boundaries[side] == GridBoundary::fixed)
+              for (const auto index : on_side)
+                constrained_dofs[d].push_back(index);
+        }
+
+      particle_handler.initialize(tria, dealii::StaticMappingQ1<2>::mapping,
+                                  property::n_properties);
+      particle_handler.signals.particle_lost.connect(
+        [this](const dealii::Particles::ParticleIterator<2> &particle,
+               const typename dealii::Triangulation<2>::active_cell_iterator &) {
+          lost_mass += particle->get_properties()[property::mass];
+        });
+      create_particles();
+    }
+
+
+
+    void
+    MaterialPointSolver::create_particles()
+    {
+      const unsigned int n      = prm.particles_per_direction;
+      std::vector<double> properties(property::n_properties, 0.);
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          const dealii::Point<2> origin = cell->vertex(0);
+          const double hx = cell->vertex(1)[0] - origin[0];
+          const double hy = cell->vertex(2)[1] - origin[1];
+          for (unsigned int j = 0; j < n; ++j)
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const dealii::Point<2> reference((i + 0.5) / n, (j + 0.5) / n);
+                const dealii::Point<2> position(origin[0] + reference[0] * hx,
+                                                origin[1] + reference[1] * hy);
+                int region_index = -1;
+                for (unsigned int r = 0; r < prm.regions.size() && region_index < 0; ++r)
+                  if (prm.regions[r].contains(position))
+                    region_index = r;
+                if (region_index < 0)
+                  continue;
+                const MaterialRegion &region = prm.regions[region_index];
+                const unsigned int    m      = region.material_index;
+                const double volume = hx * hy / (n * n);
+                std::fill(properties.begin(), properties.end(), 0.);
+                properties[property::mass]           = prm.materials[m].density * volume;
+                properties[property::volume]         = volume;
+                properties[property::initial_volume] = volume;
+                properties[property::velocity_x]     = region.initial_velocity[0];
+                properties[property::velocity_y]     = region.initial_velocity[1];
+                properties[property::initial_x]      = position[0];
+                properties[property::initial_y]      = position[1];
+                properties[property::material_id]    = m;
+                // Identifiers that do not depend on the partition: the global index of the
+                // cell and the position in it.
+                const dealii::types::particle_index id =
+                  cell->global_active_cell_index() * n * n + j * n + i;
+                particle_handler.insert_particle(position, reference, id, cell,
+                                                 dealii::make_array_view(properties));
+              }
+        }
+      particle_handler.update_cached_numbers();
+    }
+
+
+
+    double
+    MaterialPointSolver::stable_time_step() const
+    {
+      double max_speed = 0.;
+      for (const auto &particle : particle_handler)
+        {
+          const auto   p       = particle.get_properties();
+          const double density = p[property::mass] / p[property::volume];
+          const double c =
+            std::sqrt(materials[static_cast<unsigned int>(p[property::material_id])]
+                        .p_wave_modulus() /
+                      density);
+          const double v = std::sqrt(p[property::velocity_x] * p[property::velocity_x] +
+                                     p[property::velocity_y] * p[property::velocity_y]);
+          max_speed = std::max(max_speed, c + v);
+        }
+      max_speed = dealii::Utilities::MPI::max(max_speed, MPI_COMM_WORLD);
+      const double limit = max_speed > 0. ? prm.time_step_multiplier * prm.cell_size / max_speed :
+                                            std::numeric_limits<double>::infinity();
+      return prm.fixed_time_step > 0. ? prm.fixed_time_step : limit;
+    }
+
+
+
+    void
+    MaterialPointSolver::particles_to_grid()
+    {
+      nodal_mass = 0.;
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          momentum[d] = 0.;
+          force[d]    = 0.;
+        }
+      const auto &partitioner = nodal_mass.get_partitioner();
+      std::vector<dealii::types::global_dof_index> dof_indices(4);
+      unsigned int                                 local[4];
+      double N[4], dNx[4], dNy[4];
+
+      for (const auto &cell : dofs.active_cell_iterators())
+        {
+          if (!cell->is_locally_owned() || particle_handler.n_particles_in_cell(cell) == 0)
+            continue;
+          cell->get_dof_indices(dof_indices);
+          for (unsigned int a = 0; a < 4; ++a)
+            local[a] = partitioner->global_to_local(dof_indices[a]);
+          const double inv_hx = 1. / (cell->vertex(1)[0] - cell->vertex(0)[0]);
+          const double inv_hy = 1. / (cell->vertex(2)[1] - cell->vertex(0)[1]);
+
+          for (const auto &particle : particle_handler.particles_in_cell(cell))
+            {
+              const dealii::Point<2> ref = particle.get_reference_location();
+              q1_shape(ref[0], ref[1], inv_hx, inv_hy, N, dNx, dNy);
+              const auto   p  = particle.get_properties();
+              const double m  = p[property::mass];
+              const double V  = p[property::volume];
+              const double vx = p[property::velocity_x], vy = p[property::velocity_y];
+              const double sxx = p[property::stress_xx], syy = p[property::stress_yy],
+                           sxy = p[property::stress_xy];
+              for (unsigned int a = 0; a < 4; ++a)
+                {
+                  const double w = N[a] * m;
+                  nodal_mass.local_element(local[a]) += w;
+                  momentum[0].local_element(local[a]) += w * vx;
+                  momentum[1].local_element(local[a]) += w * vy;
+                  // Internal force -V sigma grad N (Eq. 16) plus gravity (Eq. 15).
+                  force[0].local_element(local[a]) +=
+                    -V * (sxx * dNx[a] + sxy * dNy[a]) + w * prm.gravity[0];
+                  force[1].local_element(local[a]) +=
+                    -V * (sxy * dNx[a] + syy * dNy[a]) + w * prm.gravity[1];
+                }
+            }
+        }
+      nodal_mass.compress(dealii::VectorOperation::add);
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          momentum[d].compress(dealii::VectorOperation::add);
+          force[d].compress(dealii::VectorOperation::add);
+        }
+    }
+
+
+
+    void
+    MaterialPointSolver::apply_boundary_conditions(Vector &vx, Vector &vy) const
+    {
+      for (const auto index : constrained_dofs[0])
+        vx[index] = 0.;
+      for (const auto index : constrained_dofs[1])
+        vy[index] = 0.;
+    }
+
+
+
+    void
+    MaterialPointSolver::update_grid(const double dt)
+    {
+      // Nodes with less than this mass are treated as empty: their velocity is zero.
+      const double   tiny  = 1e-12 * prm.cell_size * prm.cell_size *
+                          (prm.materials.empty() ? 1. : prm.materials[0].density);
+      const unsigned n_own = nodal_mass.locally_owned_size();
+      for (unsigned int i = 0; i < n_own; ++i)
+        {
+          const double m = nodal_mass.local_element(i);
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              if (m > tiny)
+                {
+                  const double v = momentum[d].local_element(i) / m;
+                  double       f = force[d].local_element(i);
+                  // Cundall's local damping: a force opposing the motion, proportional
+                  // to the unbalanced force.
+                  if (prm.damping > 0.)
+                    f -= prm.damping * std::abs(f) * (v > 0. ? 1. : v < 0. ? -1. : 0.);
+                  velocity_old[d].local_element(i) = v;
+                  velocity[d].local_element(i)     = v + dt * f / m; // Eqs. 18-19
+                }
+              else
+                {
+                  velocity_old[d].local_element(i) = 0.;
+                  velocity[d].local_element(i)     = 0.;
+                }
+            }
+        }
+      apply_boundary_conditions(velocity[0], velocity[1]);
+      apply_boundary_conditions(velocity_old[0], velocity_old[1]);
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          velocity[d].update_ghost_values();
+          velocity_old[d].update_ghost_values();
+        }
+    }
+
+
+
+    void
+    MaterialPointSolver::remap_velocities_to_grid()
+    {
+      // MUSL: nodal momentum from the updated particle velocities, on the old positions.
+      for (unsigned int d = 0; d < 2; ++d)
+        momentum[d] = 0.;
+      const auto &partitioner = nodal_mass.get_partitioner();
+      std::vector<dealii::types::global_dof_index> dof_indices(4);
+      unsigned int                                 local[4];
+      double                                       N[4], dNx[4], dNy[4];
+      for (const auto &cell : dofs.active_cell_iterators())
+        {
+          if (!cell->is_locally_owned() || particle_handler.n_particles_in_cell(cell) == 0)
+            continue;
+          cell->get_dof_indices(dof_indices);
+          for (unsigned int a = 0; a < 4; ++a)
+            local[a] = partitioner->global_to_local(dof_indices[a]);
+          for (const auto &particle : particle_handler.particles_in_cell(cell))
+            {
+              const dealii::Point<2> ref = particle.get_reference_location();
+              q1_shape(ref[0], ref[1], 1., 1., N, dNx, dNy);
+              const auto p = particle.get_properties();
+              for (unsigned int a = 0; a < 4; ++a)
+                {
+                  momentum[0].local_element(local[a]) +=
+                    N[a] * p[property::mass] * p[property::velocity_x];
+                  momentum[1].local_element(local[a]) +=
+                    N[a] * p[property::mass] * p[property::velocity_y];
+                }
+            }
+        }
+      for (unsigned int d = 0; d < 2; ++d)
+        momentum[d].compress(dealii::VectorOperation::add);
+      const double   tiny  = 1e-12 * prm.cell_size * prm.cell_size *
+                          (prm.materials.empty() ? 1. : prm.materials[0].density);
+      const unsigned n_own = nodal_mass.locally_owned_size();
+      for (unsigned int i = 0; i < n_own; ++i)
+        {
+          const double m = nodal_mass.local_element(i);
+          for (unsigned int d = 0; d < 2; ++d)
+            velocity[d].local_element(i) = m > tiny ? momentum[d].local_element(i) / m : 0.;
+        }
+      apply_boundary_conditions(velocity[0], velocity[1]);
+      for (unsigned int d = 0; d < 2; ++d)
+        velocity[d].update_ghost_values();
+    }
+
+
+
+    void
+    MaterialPointSolver::grid_to_particles(const double dt)
+    {
+      // Velocities (PIC/FLIP, Eq. 20) and new positions (Eq. 21); the positions are
+      // kept aside until the stresses have been updated on the old positions.
+      const auto &partitioner = nodal_mass.get_partitioner();
+      std::vector<dealii::types::global_dof_index> dof_indices(4);
+      unsigned int                                 local[4];
+      double                                       N[4], dNx[4], dNy[4];
+      const double flip = prm.flip_fraction;
+      for (const auto &cell : dofs.active_cell_iterators())
+        {
+          if (!cell->is_locally_owned() || particle_handler.n_particles_in_cell(cell) == 0)
+            continue;
+          cell->get_dof_indices(dof_indices);
+          for (unsigned int a = 0; a < 4; ++a)
+            local[a] = partitioner->global_to_local(dof_indices[a]);
+          for (auto &particle : particle_handler.particles_in_cell(cell))
+            {
+              const dealii::Point<2> ref = particle.get_reference_location();
+              q1_shape(ref[0], ref[1], 1., 1., N, dNx, dNy);
+              double v_new[2] = {0., 0.}, dv[2] = {0., 0.};
+              for (unsigned int a = 0; a < 4; ++a)
+                for (unsigned int d = 0; d < 2; ++d)
+                  {
+                    const double vn = velocity[d].local_element(local[a]);
+                    v_new[d] += N[a] * vn;
+                    dv[d] += N[a] * (vn - velocity_old[d].local_element(local[a]));
+                  }
+              auto p = particle.get_properties();
+              p[property::velocity_x] =
+                flip * (p[property::velocity_x] + dv[0]) + (1. - flip) * v_new[0];
+              p[property::velocity_y] =
+                flip * (p[property::velocity_y] + dv[1]) + (1. - flip) * v_new[1];
+              new_positions[particle.get_local_index()] =
+                particle.get_location() + dt * dealii::Tensor<1, 2>({v_new[0], v_new[1]});
+            }
+        }
+    }
+
+
+
+    void
+    MaterialPointSolver::update_stresses(const double dt)
+    {
+      const auto &partitioner = nodal_mass.get_partitioner();
+      std::vector<dealii::types::global_dof_index> dof_indices(4);
+      unsigned int                                 local[4];
+      double                                       N[4], dNx[4], dNy[4];
+      for (const auto &cell : dofs.active_cell_iterators())
+        {
+          const unsigned int n_in_cell =
+            cell->is_locally_owned() ? particle_handler.n_particles_in_cell(cell) : 0;
+          if (n_in_cell == 0)
+            continue;
+          cell->get_dof_indices(dof_indices);
+          for (unsigned int a = 0; a < 4; ++a)
+            local[a] = partitioner->global_to_local(dof_indices[a]);
+          const double inv_hx = 1. / (cell->vertex(1)[0] - cell->vertex(0)[0]);
+          const double inv_hy = 1. / (cell->vertex(2)[1] - cell->vertex(0)[1]);
+
+          // Velocity gradients of the particles of this cell (Eq. 5); then, with B-bar,
+          // the volumetric part replaced by its volume-weighted cell average.
+          cell_gradients.resize(n_in_cell);
+          double volume_sum = 0., volumetric_sum = 0.;
+          unsigned int k = 0;
+          for (const auto &particle : particle_handler.particles_in_cell(cell))
+            {
+              const dealii::Point<2> ref = particle.get_reference_location();
+              q1_shape(ref[0], ref[1], inv_hx, inv_hy, N, dNx, dNy);
+              dealii::Tensor<2, 2> L;
+              for (unsigned int a = 0; a < 4; ++a)
+                {
+                  const double vx = velocity[0].local_element(local[a]);
+                  const double vy = velocity[1].local_element(local[a]);
+                  L[0][0] += vx * dNx[a];
+                  L[0][1] += vx * dNy[a];
+                  L[1][0] += vy * dNx[a];
+                  L[1][1] += vy * dNy[a];
+                }
+              cell_gradients[k++] = L;
+              const double V = particle.get_properties()[property::volume];
+              volume_sum += V;
+              volumetric_sum += V * (L[0][0] + L[1][1]);
+            }
+          const double mean_volumetric = volumetric_sum / volume_sum;
+
+          k = 0;
+          for (auto &particle : particle_handler.particles_in_cell(cell))
+            {
+              const dealii::Tensor<2, 2> &L = cell_gradients[k++];
+              dealii::SymmetricTensor<2, 3> strain_increment;
+              strain_increment[0][0] = L[0][0] * dt;
+              strain_increment[1][1] = L[1][1] * dt;
+              strain_increment[0][1] = 0.5 * (L[0][1] + L[1][0]) * dt;
+              if (prm.b_bar)
+                {
+                  const double correction = 0.5 * (mean_volumetric - (L[0][0] + L[1][1])) * dt;
+                  strain_increment[0][0] += correction;
+                  strain_increment[1][1] += correction;
+                }
+              const double spin_xy = 0.5 * (L[0][1] - L[1][0]) * dt;
+
+              auto p = particle.get_properties();
+              dealii::SymmetricTensor<2, 3> stress;
+              stress[0][0] = p[property::stress_xx];
+              stress[1][1] = p[property::stress_yy];
+              stress[0][1] = p[property::stress_xy];
+              stress[2][2] = p[property::stress_zz];
+              double plastic = p[property::equivalent_plastic_strain];
+              materials[static_cast<unsigned int>(p[property::material_id])].update_stress(
+                stress, strain_increment, spin_xy, plastic);
+              p[property::stress_xx]                 = stress[0][0];
+              p[property::stress_yy]                 = stress[1][1];
+              p[property::stress_xy]                 = stress[0][1];
+              p[property::stress_zz]                 = stress[2][2];
+              p[property::equivalent_plastic_strain] = plastic;
+              p[property::volume] *= 1. + strain_increment[0][0] + strain_increment[1][1];
+            }
+        }
+    }
+
+
+
+    void
+    MaterialPointSolver::advance(const double dt)
+    {
+      particles_to_grid();
+      update_grid(dt);
+      new_positions.resize(particle_handler.n_locally_owned_particles());
+      grid_to_particles(dt);
+      if (prm.update_scheme == UpdateScheme::musl)
+        remap_velocities_to_grid();
+      update_stresses(dt);
+      for (auto &particle : particle_handler)
+        particle.set_location(new_positions[particle.get_local_index()]);
+      particle_handler.sort_particles_into_subdomains_and_cells();
+    }
+
+
+
+    std::string
+    MaterialPointSolver::find_invalid_particle() const
+    {
+      std::string problem;
+      for (const auto &particle : particle_handler)
+        {
+          const auto p  = particle.get_properties();
+          bool       ok = p[property::volume] > 0.;
+          for (unsigned int i = 0; i < property::n_properties; ++i)
+            ok = ok && std::isfinite(p[i]);
+          for (unsigned int d = 0; d < 2; ++d)
+            ok = ok && std::isfinite(particle.get_location()[d]);
+          if (!ok)
+            {
+              std::ostringstream out;
+              out << "material point " << particle.get_id() << " at (" << particle.get_location()
+                  << ") has " << (std::isfinite(p[property::volume]) && p[property::volume] <= 0. ?
+                                    "a non-positive volume" :
+                                    "non-finite values")
+                  << " (velocity " << p[property::velocity_x] << ", " << p[property::velocity_y]
+                  << "; stress " << p[property::stress_xx] << ", " << p[property::stress_yy]
+                  << ", " << p[property::stress_xy] << ")";
+              problem = out.str();
+              break;
+            }
+        }
+      // Every rank learns the problem of the lowest rank that has one.
+      const unsigned int my_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+      const unsigned int first   = dealii::Utilities::MPI::min(
+        problem.empty() ? dealii::numbers::invalid_unsigned_int : my_rank, MPI_COMM_WORLD);
+      if (first == dealii::numbers::invalid_unsigned_int)
+        return "";
+      return dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, problem, first);
+    }
+
+
+
+    MaterialPointSolver::Integrals
+    MaterialPointSolver::integrals() const
+    {
+      Integrals result;
+      double    sums[4] = {0., 0., 0., 0.};
+      double    maxima[3] = {0., -std::numeric_limits<double>::infinity(),
+                          -std::numeric_limits<double>::infinity()};
+      for (const auto &particle : particle_handler)
+        {
+          const auto   p  = particle.get_properties();
+          const double m  = p[property::mass];
+          const double vx = p[property::velocity_x], vy = p[property::velocity_y];
+          sums[0] += m;
+          sums[1] += m * vx;
+          sums[2] += m * vy;
+          sums[3] += 0.5 * m * (vx * vx + vy * vy);
+          maxima[0] = std::max(maxima[0], std::sqrt(vx * vx + vy * vy));
+          maxima[1] = std::max(maxima[1], particle.get_location()[0]);
+          maxima[2] = std::max(maxima[2], particle.get_location()[1]);
+        }
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 4), MPI_COMM_WORLD,
+                                  dealii::ArrayView<double>(sums, 4));
+      dealii::Utilities::MPI::max(dealii::ArrayView<const double>(maxima, 3), MPI_COMM_WORLD,
+                                  dealii::ArrayView<double>(maxima, 3));
+      result.mass           = sums[0];
+      result.momentum_x     = sums[1];
+      result.momentum_y     = sums[2];
+      result.kinetic_energy = sums[3];
+      result.max_speed      = maxima[0];
+      result.runout         = maxima[1];
+      result.max_height     = maxima[2];
+      result.lost_mass      = dealii::Utilities::MPI::sum(lost_mass, MPI_COMM_WORLD);
+      result.n_particles    = particle_handler.n_global_particles();
+      return result;
+    }
+  } // namespace mpm
+} // namespace slidewave

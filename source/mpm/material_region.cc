@@ -1,0 +1,146 @@
+#include <deal.II/base/utilities.h>
+
+#include <slidewave/core/input_error.h>
+#include <slidewave/mpm/material_region.h>
+
+#include <cmath>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    namespace
+    {
+      std::vector<double>
+      parse_numbers(const std::string &parameter, const std::string &text,
+                    const std::string &allowed)
+      {
+        std::vector<double> values;
+        for (const auto &item : dealii::Utilities::split_string_list(text, ','))
+          {
+            try
+              {
+                std::size_t  used  = 0;
+                const double value = std::stod(item, &used);
+                if (used != item.size() || !std::isfinite(value))
+                  throw std::invalid_argument("");
+                values.push_back(value);
+              }
+            catch (const std::exception &)
+              {
+                throw InputError(parameter, text, allowed);
+              }
+          }
+        return values;
+      }
+    } // namespace
+
+
+
+    void
+    MaterialRegion::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.declare_entry("Shape",
+                        "none",
+                        Selection("none|rectangle|polygon"),
+                        "'none': this region is not used. 'rectangle': 'Rectangle'. "
+                        "'polygon': 'Polygon'.");
+      prm.declare_entry("Rectangle", "0, 0, 1, 1", Anything(),
+                        "x_min, y_min, x_max, y_max [m].");
+      prm.declare_entry("Polygon", "", Anything(),
+                        "Vertices 'x1, y1; x2, y2; ...' [m], at least three, in order "
+                        "around the polygon.");
+      prm.declare_entry("Material", "", Anything(),
+                        "Name of the material filling the region (a 'Material N/Name').");
+      prm.declare_entry("Initial velocity", "0, 0", Anything(),
+                        "Initial velocity v_x, v_y of the region's material points [m/s].");
+    }
+
+
+
+    bool
+    MaterialRegion::parse_parameters(dealii::ParameterHandler &prm, const std::string &path)
+    {
+      const std::string shape = prm.get("Shape");
+      if (shape == "none")
+        return false;
+      if (shape == "rectangle")
+        {
+          const auto r = parse_numbers(path + "/Rectangle", prm.get("Rectangle"),
+                                       "four numbers x_min, y_min, x_max, y_max");
+          if (r.size() != 4 || !(r[2] > r[0]) || !(r[3] > r[1]))
+            throw InputError(path + "/Rectangle", prm.get("Rectangle"),
+                             "four numbers x_min, y_min, x_max, y_max with x_min < x_max "
+                             "and y_min < y_max");
+          polygon = {dealii::Point<2>(r[0], r[1]), dealii::Point<2>(r[2], r[1]),
+                     dealii::Point<2>(r[2], r[3]), dealii::Point<2>(r[0], r[3])};
+        }
+      else
+        {
+          for (const auto &vertex : dealii::Utilities::split_string_list(prm.get("Polygon"), ';'))
+            {
+              const auto v = parse_numbers(path + "/Polygon", vertex,
+                                           "vertices 'x1, y1; x2, y2; ...'");
+              if (v.size() != 2)
+                throw InputError(path + "/Polygon", prm.get("Polygon"),
+                                 "vertices 'x1, y1; x2, y2; ...' (two numbers each)");
+              polygon.emplace_back(v[0], v[1]);
+            }
+          if (polygon.size() < 3)
+            throw InputError(path + "/Polygon", prm.get("Polygon"), "at least three vertices");
+        }
+      material_name = dealii::Utilities::trim(prm.get("Material"));
+      if (material_name.empty())
+        throw InputError(path + "/Material", "", "the name of a declared material");
+      const auto v = parse_numbers(path + "/Initial velocity", prm.get("Initial velocity"),
+                                   "two numbers v_x, v_y");
+      if (v.size() != 2)
+        throw InputError(path + "/Initial velocity", prm.get("Initial velocity"),
+                         "two numbers v_x, v_y");
+      initial_velocity[0] = v[0];
+      initial_velocity[1] = v[1];
+      return true;
+    }
+
+
+
+    bool
+    MaterialRegion::contains(const dealii::Point<2> &p) const
+    {
+      // Even-odd rule; points on an edge count as inside.
+      bool               inside = false;
+      const unsigned int n      = polygon.size();
+      for (unsigned int i = 0, j = n - 1; i < n; j = i++)
+        {
+          const auto &a = polygon[i];
+          const auto &b = polygon[j];
+          // On the edge a-b?
+          const double cross = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+          if (std::abs(cross) <= 1e-12 * (a.distance(b) + 1.) &&
+              p[0] >= std::min(a[0], b[0]) - 1e-12 && p[0] <= std::max(a[0], b[0]) + 1e-12 &&
+              p[1] >= std::min(a[1], b[1]) - 1e-12 && p[1] <= std::max(a[1], b[1]) + 1e-12)
+            return true;
+          if ((a[1] > p[1]) != (b[1] > p[1]) &&
+              p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
+            inside = !inside;
+        }
+      return inside;
+    }
+
+
+
+    std::pair<dealii::Point<2>, dealii::Point<2>>
+    MaterialRegion::bounding_box() const
+    {
+      dealii::Point<2> lower = polygon[0], upper = polygon[0];
+      for (const auto &p : polygon)
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            lower[d] = std::min(lower[d], p[d]);
+            upper[d] = std::max(upper[d], p[d]);
+          }
+      return {lower, upper};
+    }
+  } // namespace mpm
+} // namespace slidewave

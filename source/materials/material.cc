@@ -12,7 +12,7 @@ namespace slidewave
       using namespace dealii::Patterns;
       prm.declare_entry(
         "Name",
-        "soil",
+        "",
         Anything(),
         "The name of the material; geometry regions refer to it "
         "by this name.");

@@ -29,8 +29,29 @@ namespace slidewave
     void
     MaterialPointScene::declare_parameters(dealii::ParameterHandler &prm)
     {
+      using namespace dealii::Patterns;
       prm.enter_subsection(section);
       SolverParameters::declare_parameters(prm);
+      prm.enter_subsection("Verification");
+      {
+        prm.declare_entry("Exact solution", "none",
+                          Selection("none|bar vibration|self weight column"),
+                          "'bar vibration': axial vibration of an elastic bar fixed at x = 0 "
+                          "and free at x = L, started with v = A sin(pi x / (2 L)); the "
+                          "centre-of-mass velocity is compared with A cos(omega t) / (beta L) "
+                          "at every step (material of Region 1). 'self weight column': at the "
+                          "end, sigma_yy of every point against -rho g (H - Y), Y its initial "
+                          "height, normalized by sum rho g H V (Coombs and Augarde 2020).");
+        prm.declare_entry("Bar length", "25", Double(0.), "L of the vibrating bar [m].");
+        prm.declare_entry("Bar amplitude", "0.1", Double(0.),
+                          "A, the initial velocity amplitude of the bar [m/s].");
+        prm.declare_entry("Column height", "1", Double(0.),
+                          "H, the initial height of the column's top [m].");
+        prm.declare_entry("Tolerance", "0", Double(0.),
+                          "If > 0, the run fails (exit status 3) when the error exceeds it "
+                          "(bar: largest error over the run, in m/s).");
+      }
+      prm.leave_subsection();
       prm.leave_subsection();
     }
 
@@ -42,7 +63,52 @@ namespace slidewave
     {
       prm.enter_subsection(section);
       parameters.parse_parameters(prm, section);
+      prm.enter_subsection("Verification");
+      {
+        const std::string type = prm.get("Exact solution");
+        exact_solution = type == "bar vibration"      ? ExactSolution::bar_vibration :
+                         type == "self weight column" ? ExactSolution::self_weight_column :
+                                                        ExactSolution::none;
+        bar_length    = prm.get_double("Bar length");
+        bar_amplitude = prm.get_double("Bar amplitude");
+        column_height = prm.get_double("Column height");
+        tolerance     = prm.get_double("Tolerance");
+      }
       prm.leave_subsection();
+      prm.leave_subsection();
+    }
+
+
+
+    double
+    MaterialPointScene::bar_velocity_error(const double time) const
+    {
+      const auto  &material = parameters.materials[parameters.regions[0].material_index];
+      const double beta     = M_PI / (2. * bar_length);
+      const double omega    = beta * std::sqrt(material.youngs_modulus / material.density);
+      const auto   integrals = solver->integrals();
+      const double exact =
+        bar_amplitude * std::cos(omega * (time - scene.start_time)) / (beta * bar_length);
+      return std::abs(integrals.momentum_x / integrals.mass - exact);
+    }
+
+
+
+    double
+    MaterialPointScene::column_stress_error() const
+    {
+      const double g = std::abs(parameters.gravity[1]);
+      double       error = 0., norm = 0.;
+      for (const auto &particle : solver->particles())
+        {
+          const auto   p       = particle.get_properties();
+          const double rho0    = p[property::mass] / p[property::initial_volume];
+          const double exact   = -rho0 * g * (column_height - p[property::initial_y]);
+          error += std::abs(p[property::stress_yy] - exact) * p[property::initial_volume];
+          norm += rho0 * g * column_height * p[property::initial_volume];
+        }
+      return dealii::Utilities::MPI::sum(error, MPI_COMM_WORLD) /
+             dealii::Utilities::MPI::sum(norm, MPI_COMM_WORLD);
     }
 
 
@@ -130,6 +196,7 @@ namespace slidewave
       ProgressReporter progress(is_writer && !test_mode ? &std::cout : nullptr,
                                 scene.start_time, scene.end_time);
 
+      double       max_error      = 0.;
       double       time           = scene.start_time;
       unsigned int step           = 0;
       unsigned int output_index   = 0;
@@ -191,9 +258,30 @@ namespace slidewave
               add_statistics(statistics, step, time, dt);
               statistics.end_row();
             }
+          if (exact_solution == ExactSolution::bar_vibration)
+            max_error = std::max(max_error, bar_velocity_error(time));
           progress.report(step, time, dt, at_end);
         }
-      return true;
+
+      if (exact_solution == ExactSolution::self_weight_column)
+        max_error = column_stress_error();
+      bool within = true;
+      if (exact_solution != ExactSolution::none && is_writer)
+        {
+          char line[160];
+          std::snprintf(line, sizeof(line), "%s error against the exact solution = %.4e",
+                        exact_solution == ExactSolution::bar_vibration ?
+                          "Largest centre-of-mass velocity" :
+                          "Normalized sigma_yy",
+                        max_error);
+          std::cout << line;
+          if (tolerance > 0.)
+            std::cout << " <= " << tolerance << ": " << (max_error <= tolerance ? "yes" : "no");
+          std::cout << std::endl;
+        }
+      if (tolerance > 0.)
+        within = max_error <= tolerance;
+      return within;
     }
   } // namespace mpm
 } // namespace slidewave

@@ -348,8 +348,9 @@ namespace slidewave
                 properties[property::mass]           = prm.materials[m].density * volume;
                 properties[property::volume]         = volume;
                 properties[property::initial_volume] = volume;
-                properties[property::velocity_x]     = region.initial_velocity[0];
-                properties[property::velocity_y]     = region.initial_velocity[1];
+                const dealii::Tensor<1, 2> v         = region.initial_velocity(position);
+                properties[property::velocity_x]     = v[0];
+                properties[property::velocity_y]     = v[1];
                 properties[property::initial_x]      = position[0];
                 properties[property::initial_y]      = position[1];
                 properties[property::material_id]    = m;

@@ -4,6 +4,8 @@
 #include <slidewave/mpm/material_region.h>
 
 #include <cmath>
+#include <iostream>
+#include <sstream>
 
 namespace slidewave
 {
@@ -53,8 +55,9 @@ namespace slidewave
                         "around the polygon.");
       prm.declare_entry("Material", "", Anything(),
                         "Name of the material filling the region (a 'Material N/Name').");
-      prm.declare_entry("Initial velocity", "0, 0", Anything(),
-                        "Initial velocity v_x, v_y of the region's material points [m/s].");
+      prm.declare_entry("Initial velocity", "0; 0", Anything(),
+                        "Initial velocity of the region's material points [m/s]: two "
+                        "expressions of x and y separated by ';', e.g. '0.1*sin(pi*x/50); 0'.");
     }
 
 
@@ -93,13 +96,27 @@ namespace slidewave
       material_name = dealii::Utilities::trim(prm.get("Material"));
       if (material_name.empty())
         throw InputError(path + "/Material", "", "the name of a declared material");
-      const auto v = parse_numbers(path + "/Initial velocity", prm.get("Initial velocity"),
-                                   "two numbers v_x, v_y");
-      if (v.size() != 2)
-        throw InputError(path + "/Initial velocity", prm.get("Initial velocity"),
-                         "two numbers v_x, v_y");
-      initial_velocity[0] = v[0];
-      initial_velocity[1] = v[1];
+      const std::string velocity = prm.get("Initial velocity");
+      const auto        parts    = dealii::Utilities::split_string_list(velocity, ';');
+      // deal.II prints muparser's diagnosis to std::cerr before it throws: keep it quiet,
+      // the InputError says what is wrong.
+      std::ostringstream diagnosis;
+      std::streambuf    *cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
+      try
+        {
+          if (parts.size() != 2)
+            throw std::invalid_argument("two components");
+          velocity_function = std::make_shared<dealii::FunctionParser<2>>(2);
+          velocity_function->initialize("x,y", velocity, {{"pi", M_PI}});
+          velocity_function->value(dealii::Point<2>(), 0);
+          std::cerr.rdbuf(cerr_buffer);
+        }
+      catch (...)
+        {
+          std::cerr.rdbuf(cerr_buffer);
+          throw InputError(path + "/Initial velocity", velocity,
+                           "two expressions of x and y separated by ';' (muparser syntax)");
+        }
       return true;
     }
 
@@ -126,6 +143,17 @@ namespace slidewave
             inside = !inside;
         }
       return inside;
+    }
+
+
+
+    dealii::Tensor<1, 2>
+    MaterialRegion::initial_velocity(const dealii::Point<2> &p) const
+    {
+      dealii::Tensor<1, 2> v;
+      v[0] = velocity_function->value(p, 0);
+      v[1] = velocity_function->value(p, 1);
+      return v;
     }
 
 

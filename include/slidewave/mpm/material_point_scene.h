@@ -40,7 +40,25 @@ namespace slidewave
       void
       add_statistics(Statistics &statistics, unsigned int step, double time, double dt) const;
 
+      /** Error of the centre-of-mass velocity against the vibrating bar's exact value. */
+      double
+      bar_velocity_error(double time) const;
+
+      /** Normalized error of sigma_yy against the self-weight column's exact value. */
+      double
+      column_stress_error() const;
+
+      enum class ExactSolution
+      {
+        none,
+        bar_vibration,
+        self_weight_column
+      };
+
       const SceneParameters                 &scene;
+      ExactSolution exact_solution = ExactSolution::none;
+      double        bar_length = 25., bar_amplitude = 0.1, column_height = 1.;
+      double        tolerance = 0.;
       SolverParameters                       parameters;
       std::unique_ptr<MaterialPointSolver>   solver;
       std::vector<std::pair<double, std::string>> particle_files;

@@ -2,7 +2,10 @@
 #define slidewave_mpm_material_region_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
+
+#include <memory>
 
 #include <string>
 #include <vector>
@@ -43,7 +46,12 @@ namespace slidewave
       std::string                  material_name;
       /** Index of the material in SolverParameters::materials (set when parsed). */
       unsigned int                 material_index = 0;
-      dealii::Tensor<1, 2>         initial_velocity;
+      /** Initial velocity of a point at @p p. */
+      dealii::Tensor<1, 2>
+      initial_velocity(const dealii::Point<2> &p) const;
+
+      /** v_x(x, y) and v_y(x, y), muparser expressions. */
+      std::shared_ptr<dealii::FunctionParser<2>> velocity_function;
       std::vector<dealii::Point<2>> polygon; ///< counter-clockwise or clockwise, closed implicitly
     };
   } // namespace mpm

@@ -184,7 +184,7 @@ namespace slidewave
       {
         TimerOutput::Scope scope(timer, "mpm: setup");
         solver = std::make_unique<MaterialPointSolver>(parameters);
-        solver->setup();
+        solver->setup(scene.start_time);
       }
       pcout << "Material points: " << solver->particles().n_global_particles()
             << " particles on " << solver->triangulation().n_global_active_cells()

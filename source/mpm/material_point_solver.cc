@@ -3,11 +3,13 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <slidewave/core/input_error.h>
 #include <slidewave/mpm/material_point_solver.h>
 #include <slidewave/mpm/particle_properties.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -52,27 +54,6 @@ namespace slidewave
                                   GridBoundary::free;
       }
 
-      /**
-       * Q1 shape values and gradients at reference point (xi, eta) of an axis-aligned cell
-       * of size hx x hy, in deal.II's vertex order (0,0), (1,0), (0,1), (1,1).
-       */
-      inline void
-      q1_shape(const double xi, const double eta, const double inv_hx, const double inv_hy,
-               double (&value)[4], double (&grad_x)[4], double (&grad_y)[4])
-      {
-        value[0]  = (1. - xi) * (1. - eta);
-        value[1]  = xi * (1. - eta);
-        value[2]  = (1. - xi) * eta;
-        value[3]  = xi * eta;
-        grad_x[0] = -(1. - eta) * inv_hx;
-        grad_x[1] = (1. - eta) * inv_hx;
-        grad_x[2] = -eta * inv_hx;
-        grad_x[3] = eta * inv_hx;
-        grad_y[0] = -(1. - xi) * inv_hy;
-        grad_y[1] = -xi * inv_hy;
-        grad_y[2] = (1. - xi) * inv_hy;
-        grad_y[3] = xi * inv_hy;
-      }
     } // namespace
 
 
@@ -81,6 +62,12 @@ namespace slidewave
     SolverParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
       using namespace dealii::Patterns;
+      prm.declare_entry("Shape functions", "q1", Selection("q1|gimp|cpgimp"),
+                        "'q1': bilinear functions of the cell holding the point (standard "
+                        "MPM). 'gimp': uGIMP, Q1 averaged over a square domain of the "
+                        "point's initial size (paper 000, Eq. 11), smooth across cell faces "
+                        "(no cell-crossing noise). 'cpgimp': the domain stretches with the "
+                        "point along x and y.");
       prm.declare_entry("Update scheme", "usl", Selection("usl|musl"),
                         "'usl': stresses from the updated nodal velocities (update stress "
                         "last, paper 000). 'musl': from nodal velocities re-mapped from the "
@@ -122,6 +109,32 @@ namespace slidewave
                           "Grid velocity condition on this side: 'fixed' (no slip), "
                           "'roller' (free slip), 'free'.");
       prm.leave_subsection();
+      for (unsigned int w = 1; w <= RigidWall::max_walls; ++w)
+        {
+          prm.enter_subsection("Rigid wall " + std::to_string(w));
+          RigidWall::declare_parameters(prm);
+          prm.leave_subsection();
+        }
+      prm.enter_subsection("Initial stress");
+      {
+        prm.declare_entry("Type", "none", Selection("none|geostatic|gravity loading"),
+                          "'none': stress free. 'geostatic': sigma_yy = -g (weight of the "
+                          "material above the point per unit width), sigma_xx = sigma_zz = "
+                          "K0 sigma_yy (at rest, exact for horizontal layers). 'gravity "
+                          "loading': gravity is applied with heavy local damping and all "
+                          "rigid walls held, for 'Gravity loading time', before the start "
+                          "time; then velocities are zeroed and the scene starts.");
+        prm.declare_entry("K0", "auto", Anything(),
+                          "Coefficient of earth pressure at rest for 'geostatic': a number "
+                          "> 0, or 'auto': 1 - sin(phi) (Jaky) for Drucker-Prager, "
+                          "nu / (1 - nu) for linear elastic materials.");
+        prm.declare_entry("Gravity loading time", "0.5", Double(0.),
+                          "Duration [s] of the gravity loading phase; give it several "
+                          "periods of the slowest mode (about 4 H / c_p).");
+        prm.declare_entry("Gravity loading damping", "0.7", Double(0., 1.),
+                          "Cundall's local damping coefficient during gravity loading.");
+      }
+      prm.leave_subsection();
       for (unsigned int m = 1; m <= max_materials; ++m)
         {
           prm.enter_subsection("Material " + std::to_string(m));
@@ -141,6 +154,10 @@ namespace slidewave
     void
     SolverParameters::parse_parameters(dealii::ParameterHandler &prm, const std::string &path)
     {
+      const std::string shape = prm.get("Shape functions");
+      shape_function = shape == "gimp"   ? ShapeFunction::gimp :
+                       shape == "cpgimp" ? ShapeFunction::cpgimp :
+                                           ShapeFunction::q1;
       update_scheme = prm.get("Update scheme") == "musl" ? UpdateScheme::musl : UpdateScheme::usl;
       flip_fraction = prm.get_double("FLIP fraction");
       time_step_multiplier = prm.get_double("Time step multiplier");
@@ -179,6 +196,49 @@ namespace slidewave
       prm.enter_subsection("Boundary conditions");
       boundaries = {{boundary_type(prm.get("Left")), boundary_type(prm.get("Right")),
                      boundary_type(prm.get("Bottom")), boundary_type(prm.get("Top"))}};
+      prm.leave_subsection();
+
+      walls.clear();
+      for (unsigned int w = 1; w <= RigidWall::max_walls; ++w)
+        {
+          prm.enter_subsection("Rigid wall " + std::to_string(w));
+          RigidWall wall;
+          if (wall.parse_parameters(prm, path + "/Rigid wall " + std::to_string(w)))
+            walls.push_back(wall);
+          prm.leave_subsection();
+        }
+
+      prm.enter_subsection("Initial stress");
+      {
+        const std::string type = prm.get("Type");
+        initial_stress = type == "geostatic"       ? InitialStress::geostatic :
+                         type == "gravity loading" ? InitialStress::gravity_loading :
+                                                     InitialStress::none;
+        const std::string k0 = dealii::Utilities::trim(prm.get("K0"));
+        if (k0 == "auto")
+          lateral_stress_ratio = -1.;
+        else
+          {
+            bool ok = true;
+            try
+              {
+                std::size_t used     = 0;
+                lateral_stress_ratio = std::stod(k0, &used);
+                ok = used == k0.size() && std::isfinite(lateral_stress_ratio) &&
+                     lateral_stress_ratio > 0.;
+              }
+            catch (const std::exception &)
+              {
+                ok = false;
+              }
+            if (!ok)
+              throw InputError(path + "/Initial stress/K0", k0, "'auto' or a number > 0");
+          }
+        gravity_loading_time    = prm.get_double("Gravity loading time");
+        gravity_loading_damping = prm.get_double("Gravity loading damping");
+        if (initial_stress == InitialStress::gravity_loading)
+          require_positive(path + "/Initial stress/Gravity loading time", gravity_loading_time);
+      }
       prm.leave_subsection();
 
       // Regions first: they say which materials the scene uses. Only those material
@@ -256,6 +316,7 @@ namespace slidewave
       : prm(parameters)
       , tria(MPI_COMM_WORLD)
       , fe(1)
+      , damping(parameters.damping)
     {
       for (const auto &material : prm.materials)
         materials.emplace_back(material);
@@ -264,8 +325,9 @@ namespace slidewave
 
 
     void
-    MaterialPointSolver::setup()
+    MaterialPointSolver::setup(const double start_time)
     {
+      time = start_time;
       const std::vector<unsigned int> subdivisions{
         static_cast<unsigned int>(
           std::round((prm.upper_right[0] - prm.lower_left[0]) / prm.cell_size)),
@@ -294,16 +356,19 @@ namespace slidewave
         {
           if (prm.boundaries[side] == GridBoundary::free)
             continue;
-          dealii::IndexSet on_side;
-          dealii::DoFTools::extract_boundary_dofs(dofs, dealii::ComponentMask(), on_side,
-                                                  {static_cast<dealii::types::boundary_id>(side)});
-          on_side = on_side & owned;
+          const dealii::IndexSet on_side =
+            dealii::DoFTools::extract_boundary_dofs(
+              dofs, dealii::ComponentMask(), {static_cast<dealii::types::boundary_id>(side)}) &
+            owned;
           const unsigned int normal = side < 2 ? 0 : 1;
           for (unsigned int d = 0; d < 2; ++d)
             if (d == normal || prm.boundaries[side] == GridBoundary::fixed)
               for (const auto index : on_side)
-                constrained_dofs[d].push_back(index);
+                constrained_dofs[d].push_back(
+                  nodal_mass.get_partitioner()->global_to_local(index));
         }
+      build_cell_patches();
+      find_wall_nodes();
 
       particle_handler.initialize(tria, dealii::StaticMappingQ1<2>::mapping,
                                   property::n_properties);
@@ -313,6 +378,174 @@ namespace slidewave
           lost_mass += particle->get_properties()[property::mass];
         });
       create_particles();
+      if (prm.initial_stress == InitialStress::geostatic)
+        set_geostatic_stress();
+      else if (prm.initial_stress == InitialStress::gravity_loading)
+        load_gravity();
+    }
+
+
+
+    void
+    MaterialPointSolver::build_cell_patches()
+    {
+      const auto &partitioner = nodal_mass.get_partitioner();
+      const auto  vertex_to_cells = dealii::GridTools::vertex_to_cell_map(tria);
+      patch_start.assign(tria.n_active_cells() + 1, 0);
+      patch_cells.clear();
+      std::vector<dealii::types::global_dof_index> dof_indices(4);
+      const auto make_entry = [&](const dealii::DoFHandler<2>::active_cell_iterator &cell) {
+        PatchCell entry;
+        entry.x0 = cell->vertex(0)[0];
+        entry.y0 = cell->vertex(0)[1];
+        entry.hx = cell->vertex(1)[0] - entry.x0;
+        entry.hy = cell->vertex(2)[1] - entry.y0;
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int a = 0; a < 4; ++a)
+          entry.node[a] = partitioner->global_to_local(dof_indices[a]);
+        return entry;
+      };
+      for (const auto &cell : dofs.active_cell_iterators())
+        {
+          const unsigned int index = cell->active_cell_index();
+          patch_start[index + 1]   = patch_start[index];
+          if (!cell->is_locally_owned())
+            continue;
+          patch_cells.push_back(make_entry(cell));
+          std::vector<dealii::Triangulation<2>::active_cell_iterator> neighbours;
+          for (const unsigned int v : cell->vertex_indices())
+            for (const auto &other : vertex_to_cells[cell->vertex_index(v)])
+              if (other != cell && std::find(neighbours.begin(), neighbours.end(), other) ==
+                                     neighbours.end())
+                neighbours.push_back(other);
+          std::sort(neighbours.begin(), neighbours.end());
+          for (const auto &other : neighbours)
+            patch_cells.push_back(
+              make_entry(dealii::DoFHandler<2>::active_cell_iterator(&tria, other->level(),
+                                                                      other->index(), &dofs)));
+          patch_start[index + 1] = patch_cells.size();
+        }
+    }
+
+
+
+    void
+    MaterialPointSolver::find_wall_nodes()
+    {
+      supports.clear();
+      const auto  &partitioner = nodal_mass.get_partitioner();
+      const double tolerance   = 1e-6 * prm.cell_size;
+      for (const auto &wall : prm.walls)
+        {
+          WallNodes   held;
+          std::vector<unsigned int> on_wall;
+          held.release_time = wall.release_time;
+          for (const auto &cell : dofs.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  const auto dof = cell->vertex_dof_index(v, 0);
+                  if (partitioner->in_local_range(dof) && wall.contains(cell->vertex(v), tolerance))
+                    on_wall.push_back(partitioner->global_to_local(dof));
+                }
+          std::sort(on_wall.begin(), on_wall.end());
+          on_wall.erase(std::unique(on_wall.begin(), on_wall.end()), on_wall.end());
+          for (unsigned int d = 0; d < 2; ++d)
+            if (d == wall.normal_component() || wall.condition == RigidWall::Condition::fixed)
+              held.nodes[d] = on_wall;
+          supports.push_back(held);
+        }
+    }
+
+
+
+    void
+    MaterialPointSolver::set_geostatic_stress()
+    {
+      // The weight above each point, per unit width, from the points in its vertical strip
+      // (strips of the initial point spacing, which the points of a region fill on a
+      // lattice): a histogram of mass over strips and rows, summed over all ranks, then
+      // summed from the top down.
+      const double       spacing = prm.cell_size / prm.particles_per_direction;
+      const unsigned int n_x     = static_cast<unsigned int>(
+        std::round((prm.upper_right[0] - prm.lower_left[0]) / spacing));
+      const unsigned int n_y = static_cast<unsigned int>(
+        std::round((prm.upper_right[1] - prm.lower_left[1]) / spacing));
+      const auto bin = [&](const dealii::Point<2> &x, const unsigned int d, const unsigned int n) {
+        const int i = static_cast<int>(std::floor((x[d] - prm.lower_left[d]) / spacing));
+        return static_cast<unsigned int>(std::clamp(i, 0, static_cast<int>(n) - 1));
+      };
+      std::vector<double> mass(static_cast<std::size_t>(n_x) * n_y, 0.);
+      for (const auto &particle : particle_handler)
+        mass[static_cast<std::size_t>(bin(particle.get_location(), 0, n_x)) * n_y +
+             bin(particle.get_location(), 1, n_y)] += particle.get_properties()[property::mass];
+      dealii::Utilities::MPI::sum(mass, MPI_COMM_WORLD, mass);
+      // Weight above the bottom of each bin.
+      for (unsigned int i = 0; i < n_x; ++i)
+        for (int j = static_cast<int>(n_y) - 2; j >= 0; --j)
+          mass[static_cast<std::size_t>(i) * n_y + j] += mass[static_cast<std::size_t>(i) * n_y + j + 1];
+
+      const double g = std::abs(prm.gravity[1]);
+      for (auto &particle : particle_handler)
+        {
+          auto               p    = particle.get_properties();
+          const unsigned int i    = bin(particle.get_location(), 0, n_x);
+          const unsigned int j    = bin(particle.get_location(), 1, n_y);
+          const double       own  = p[property::mass];
+          const double       above = (j + 1 < n_y ? mass[static_cast<std::size_t>(i) * n_y + j + 1] : 0.);
+          const double       sigma_v = -g * (above + 0.5 * own) / spacing;
+          const auto &material = prm.materials[static_cast<unsigned int>(p[property::material_id])];
+          double k0 = prm.lateral_stress_ratio;
+          if (k0 < 0.)
+            k0 = material.model == materials::MaterialModel::drucker_prager ?
+                   1. - std::sin(material.friction_angle * M_PI / 180.) :
+                   material.poisson_ratio / (1. - material.poisson_ratio);
+          p[property::stress_yy] = sigma_v;
+          p[property::stress_xx] = k0 * sigma_v;
+          p[property::stress_zz] = k0 * sigma_v;
+          p[property::stress_xy] = 0.;
+        }
+    }
+
+
+
+    void
+    MaterialPointSolver::load_gravity()
+    {
+      const double start = time;
+      double       t     = 0.;
+      damping            = prm.gravity_loading_damping;
+      loading_gravity    = true; // every wall holds
+      const double end = prm.gravity_loading_time;
+      while (t < end * (1. - 1e-12))
+        {
+          const double dt = std::min(stable_time_step(), end - t);
+          advance(dt);
+          t += dt;
+        }
+      time            = start;
+      damping         = prm.damping;
+      loading_gravity = false;
+      for (auto &particle : particle_handler)
+        {
+          auto p = particle.get_properties();
+          p[property::velocity_x] = 0.;
+          p[property::velocity_y] = 0.;
+          p[property::initial_x]  = particle.get_location()[0];
+          p[property::initial_y]  = particle.get_location()[1];
+        }
+    }
+
+
+
+    std::array<double, 3>
+    MaterialPointSolver::nodal_totals()
+    {
+      particles_to_grid();
+      std::array<double, 3> totals{{nodal_mass.l1_norm(), 0., 0.}};
+      for (unsigned int d = 0; d < 2; ++d)
+        totals[d + 1] = momentum[d].mean_value() * momentum[d].size();
+      return totals;
     }
 
 
@@ -354,6 +587,8 @@ namespace slidewave
                 properties[property::initial_x]      = position[0];
                 properties[property::initial_y]      = position[1];
                 properties[property::material_id]    = m;
+                properties[property::domain_half_x]  = 0.5 * hx / n;
+                properties[property::domain_half_y]  = 0.5 * hy / n;
                 // Identifiers that do not depend on the partition: the global index of the
                 // cell and the position in it.
                 const dealii::types::particle_index id =
@@ -391,6 +626,30 @@ namespace slidewave
 
 
 
+    template <typename ParticleAccessorType>
+    inline void
+    MaterialPointSolver::shape_weights(const ParticleAccessorType &particle,
+                                       const unsigned int          cell_index,
+                                       NodeWeights                &w) const
+    {
+      const PatchCell *begin = patch_cells.data() + patch_start[cell_index];
+      if (prm.shape_function == ShapeFunction::q1)
+        {
+          const dealii::Point<2> ref = particle.get_reference_location();
+          q1_weights(*begin, ref[0], ref[1], w);
+        }
+      else
+        {
+          const PatchCell       *end = patch_cells.data() + patch_start[cell_index + 1];
+          const dealii::Point<2> x   = particle.get_location();
+          const auto             p   = particle.get_properties();
+          gimp_weights(begin, end, x[0], x[1], p[property::domain_half_x],
+                       p[property::domain_half_y], w);
+        }
+    }
+
+
+
     void
     MaterialPointSolver::particles_to_grid()
     {
@@ -400,42 +659,34 @@ namespace slidewave
           momentum[d] = 0.;
           force[d]    = 0.;
         }
-      const auto &partitioner = nodal_mass.get_partitioner();
-      std::vector<dealii::types::global_dof_index> dof_indices(4);
-      unsigned int                                 local[4];
-      double N[4], dNx[4], dNy[4];
-
-      for (const auto &cell : dofs.active_cell_iterators())
+      NodeWeights  w;
+      const double gx = prm.gravity[0], gy = prm.gravity[1];
+      for (const auto &cell : tria.active_cell_iterators())
         {
           if (!cell->is_locally_owned() || particle_handler.n_particles_in_cell(cell) == 0)
             continue;
-          cell->get_dof_indices(dof_indices);
-          for (unsigned int a = 0; a < 4; ++a)
-            local[a] = partitioner->global_to_local(dof_indices[a]);
-          const double inv_hx = 1. / (cell->vertex(1)[0] - cell->vertex(0)[0]);
-          const double inv_hy = 1. / (cell->vertex(2)[1] - cell->vertex(0)[1]);
-
+          const unsigned int cell_index = cell->active_cell_index();
           for (const auto &particle : particle_handler.particles_in_cell(cell))
             {
-              const dealii::Point<2> ref = particle.get_reference_location();
-              q1_shape(ref[0], ref[1], inv_hx, inv_hy, N, dNx, dNy);
+              shape_weights(particle, cell_index, w);
               const auto   p  = particle.get_properties();
               const double m  = p[property::mass];
               const double V  = p[property::volume];
               const double vx = p[property::velocity_x], vy = p[property::velocity_y];
               const double sxx = p[property::stress_xx], syy = p[property::stress_yy],
                            sxy = p[property::stress_xy];
-              for (unsigned int a = 0; a < 4; ++a)
+              for (unsigned int k = 0; k < w.n; ++k)
                 {
-                  const double w = N[a] * m;
-                  nodal_mass.local_element(local[a]) += w;
-                  momentum[0].local_element(local[a]) += w * vx;
-                  momentum[1].local_element(local[a]) += w * vy;
-                  // Internal force -V sigma grad N (Eq. 16) plus gravity (Eq. 15).
-                  force[0].local_element(local[a]) +=
-                    -V * (sxx * dNx[a] + sxy * dNy[a]) + w * prm.gravity[0];
-                  force[1].local_element(local[a]) +=
-                    -V * (sxy * dNx[a] + syy * dNy[a]) + w * prm.gravity[1];
+                  const unsigned int i  = w.node[k];
+                  const double       mk = w.value[k] * m;
+                  nodal_mass.local_element(i) += mk;
+                  momentum[0].local_element(i) += mk * vx;
+                  momentum[1].local_element(i) += mk * vy;
+                  // Internal force -V sigma grad S (Eq. 16) plus gravity (Eq. 15).
+                  force[0].local_element(i) +=
+                    -V * (sxx * w.grad_x[k] + sxy * w.grad_y[k]) + mk * gx;
+                  force[1].local_element(i) +=
+                    -V * (sxy * w.grad_x[k] + syy * w.grad_y[k]) + mk * gy;
                 }
             }
         }
@@ -453,9 +704,17 @@ namespace slidewave
     MaterialPointSolver::apply_boundary_conditions(Vector &vx, Vector &vy) const
     {
       for (const auto index : constrained_dofs[0])
-        vx[index] = 0.;
+        vx.local_element(index) = 0.;
       for (const auto index : constrained_dofs[1])
-        vy[index] = 0.;
+        vy.local_element(index) = 0.;
+      for (const auto &support : supports)
+        if (support.active)
+          {
+            for (const auto index : support.nodes[0])
+              vx.local_element(index) = 0.;
+            for (const auto index : support.nodes[1])
+              vy.local_element(index) = 0.;
+          }
     }
 
 
@@ -464,8 +723,8 @@ namespace slidewave
     MaterialPointSolver::update_grid(const double dt)
     {
       // Nodes with less than this mass are treated as empty: their velocity is zero.
-      const double   tiny  = 1e-12 * prm.cell_size * prm.cell_size *
-                          (prm.materials.empty() ? 1. : prm.materials[0].density);
+      const double   tiny  = empty_node_mass();
+      const double   alpha = damping;
       const unsigned n_own = nodal_mass.locally_owned_size();
       for (unsigned int i = 0; i < n_own; ++i)
         {
@@ -478,8 +737,8 @@ namespace slidewave
                   double       f = force[d].local_element(i);
                   // Cundall's local damping: a force opposing the motion, proportional
                   // to the unbalanced force.
-                  if (prm.damping > 0.)
-                    f -= prm.damping * std::abs(f) * (v > 0. ? 1. : v < 0. ? -1. : 0.);
+                  if (alpha > 0.)
+                    f -= alpha * std::abs(f) * (v > 0. ? 1. : v < 0. ? -1. : 0.);
                   velocity_old[d].local_element(i) = v;
                   velocity[d].local_element(i)     = v + dt * f / m; // Eqs. 18-19
                 }
@@ -501,41 +760,45 @@ namespace slidewave
 
 
 
+    double
+    MaterialPointSolver::empty_node_mass() const
+    {
+      double density = 0.;
+      for (const auto &material : prm.materials)
+        density = std::max(density, material.density);
+      return 1e-12 * prm.cell_size * prm.cell_size * (density > 0. ? density : 1.);
+    }
+
+
+
     void
     MaterialPointSolver::remap_velocities_to_grid()
     {
       // MUSL: nodal momentum from the updated particle velocities, on the old positions.
       for (unsigned int d = 0; d < 2; ++d)
         momentum[d] = 0.;
-      const auto &partitioner = nodal_mass.get_partitioner();
-      std::vector<dealii::types::global_dof_index> dof_indices(4);
-      unsigned int                                 local[4];
-      double                                       N[4], dNx[4], dNy[4];
-      for (const auto &cell : dofs.active_cell_iterators())
+      NodeWeights w;
+      for (const auto &cell : tria.active_cell_iterators())
         {
           if (!cell->is_locally_owned() || particle_handler.n_particles_in_cell(cell) == 0)
             continue;
-          cell->get_dof_indices(dof_indices);
-          for (unsigned int a = 0; a < 4; ++a)
-            local[a] = partitioner->global_to_local(dof_indices[a]);
+          const unsigned int cell_index = cell->active_cell_index();
           for (const auto &particle : particle_handler.particles_in_cell(cell))
             {
-              const dealii::Point<2> ref = particle.get_reference_location();
-              q1_shape(ref[0], ref[1], 1., 1., N, dNx, dNy);
-              const auto p = particle.get_properties();
-              for (unsigned int a = 0; a < 4; ++a)
+              shape_weights(particle, cell_index, w);
+              const auto   p  = particle.get_properties();
+              const double px = p[property::mass] * p[property::velocity_x];
+              const double py = p[property::mass] * p[property::velocity_y];
+              for (unsigned int k = 0; k < w.n; ++k)
                 {
-                  momentum[0].local_element(local[a]) +=
-                    N[a] * p[property::mass] * p[property::velocity_x];
-                  momentum[1].local_element(local[a]) +=
-                    N[a] * p[property::mass] * p[property::velocity_y];
+                  momentum[0].local_element(w.node[k]) += w.value[k] * px;
+                  momentum[1].local_element(w.node[k]) += w.value[k] * py;
                 }
             }
         }
       for (unsigned int d = 0; d < 2; ++d)
         momentum[d].compress(dealii::VectorOperation::add);
-      const double   tiny  = 1e-12 * prm.cell_size * prm.cell_size *
-                          (prm.materials.empty() ? 1. : prm.materials[0].density);
+      const double   tiny  = empty_node_mass();
       const unsigned n_own = nodal_mass.locally_owned_size();
       for (unsigned int i = 0; i < n_own; ++i)
         {
@@ -551,34 +814,43 @@ namespace slidewave
 
 
     void
-    MaterialPointSolver::grid_to_particles(const double dt)
+    MaterialPointSolver::grid_to_particles(const double dt, const bool with_stresses)
     {
       // Velocities (PIC/FLIP, Eq. 20) and new positions (Eq. 21); the positions are
-      // kept aside until the stresses have been updated on the old positions.
-      const auto &partitioner = nodal_mass.get_partitioner();
-      std::vector<dealii::types::global_dof_index> dof_indices(4);
-      unsigned int                                 local[4];
-      double                                       N[4], dNx[4], dNy[4];
+      // kept aside until the stresses have been updated on the old positions. With USL
+      // the velocity gradients come from the same nodal velocities, so the stresses are
+      // updated in the same pass.
+      NodeWeights  w;
       const double flip = prm.flip_fraction;
-      for (const auto &cell : dofs.active_cell_iterators())
+      for (const auto &cell : tria.active_cell_iterators())
         {
-          if (!cell->is_locally_owned() || particle_handler.n_particles_in_cell(cell) == 0)
+          const unsigned int n_in_cell =
+            cell->is_locally_owned() ? particle_handler.n_particles_in_cell(cell) : 0;
+          if (n_in_cell == 0)
             continue;
-          cell->get_dof_indices(dof_indices);
-          for (unsigned int a = 0; a < 4; ++a)
-            local[a] = partitioner->global_to_local(dof_indices[a]);
+          const unsigned int cell_index = cell->active_cell_index();
+          if (with_stresses)
+            cell_gradients.resize(n_in_cell);
+          unsigned int k = 0;
           for (auto &particle : particle_handler.particles_in_cell(cell))
             {
-              const dealii::Point<2> ref = particle.get_reference_location();
-              q1_shape(ref[0], ref[1], 1., 1., N, dNx, dNy);
+              shape_weights(particle, cell_index, w);
               double v_new[2] = {0., 0.}, dv[2] = {0., 0.};
-              for (unsigned int a = 0; a < 4; ++a)
-                for (unsigned int d = 0; d < 2; ++d)
-                  {
-                    const double vn = velocity[d].local_element(local[a]);
-                    v_new[d] += N[a] * vn;
-                    dv[d] += N[a] * (vn - velocity_old[d].local_element(local[a]));
-                  }
+              dealii::Tensor<2, 2> L;
+              for (unsigned int e = 0; e < w.n; ++e)
+                {
+                  const unsigned int i  = w.node[e];
+                  const double       vx = velocity[0].local_element(i);
+                  const double       vy = velocity[1].local_element(i);
+                  v_new[0] += w.value[e] * vx;
+                  v_new[1] += w.value[e] * vy;
+                  dv[0] += w.value[e] * (vx - velocity_old[0].local_element(i));
+                  dv[1] += w.value[e] * (vy - velocity_old[1].local_element(i));
+                  L[0][0] += vx * w.grad_x[e];
+                  L[0][1] += vx * w.grad_y[e];
+                  L[1][0] += vy * w.grad_x[e];
+                  L[1][1] += vy * w.grad_y[e];
+                }
               auto p = particle.get_properties();
               p[property::velocity_x] =
                 flip * (p[property::velocity_x] + dv[0]) + (1. - flip) * v_new[0];
@@ -586,7 +858,11 @@ namespace slidewave
                 flip * (p[property::velocity_y] + dv[1]) + (1. - flip) * v_new[1];
               new_positions[particle.get_local_index()] =
                 particle.get_location() + dt * dealii::Tensor<1, 2>({v_new[0], v_new[1]});
+              if (with_stresses)
+                cell_gradients[k++] = L;
             }
+          if (with_stresses)
+            update_cell_stresses(cell, dt);
         }
     }
 
@@ -595,79 +871,100 @@ namespace slidewave
     void
     MaterialPointSolver::update_stresses(const double dt)
     {
-      const auto &partitioner = nodal_mass.get_partitioner();
-      std::vector<dealii::types::global_dof_index> dof_indices(4);
-      unsigned int                                 local[4];
-      double                                       N[4], dNx[4], dNy[4];
-      for (const auto &cell : dofs.active_cell_iterators())
+      NodeWeights w;
+      for (const auto &cell : tria.active_cell_iterators())
         {
           const unsigned int n_in_cell =
             cell->is_locally_owned() ? particle_handler.n_particles_in_cell(cell) : 0;
           if (n_in_cell == 0)
             continue;
-          cell->get_dof_indices(dof_indices);
-          for (unsigned int a = 0; a < 4; ++a)
-            local[a] = partitioner->global_to_local(dof_indices[a]);
-          const double inv_hx = 1. / (cell->vertex(1)[0] - cell->vertex(0)[0]);
-          const double inv_hy = 1. / (cell->vertex(2)[1] - cell->vertex(0)[1]);
-
-          // Velocity gradients of the particles of this cell (Eq. 5); then, with B-bar,
-          // the volumetric part replaced by its volume-weighted cell average.
+          const unsigned int cell_index = cell->active_cell_index();
           cell_gradients.resize(n_in_cell);
-          double volume_sum = 0., volumetric_sum = 0.;
           unsigned int k = 0;
           for (const auto &particle : particle_handler.particles_in_cell(cell))
             {
-              const dealii::Point<2> ref = particle.get_reference_location();
-              q1_shape(ref[0], ref[1], inv_hx, inv_hy, N, dNx, dNy);
+              shape_weights(particle, cell_index, w);
               dealii::Tensor<2, 2> L;
-              for (unsigned int a = 0; a < 4; ++a)
+              for (unsigned int e = 0; e < w.n; ++e)
                 {
-                  const double vx = velocity[0].local_element(local[a]);
-                  const double vy = velocity[1].local_element(local[a]);
-                  L[0][0] += vx * dNx[a];
-                  L[0][1] += vx * dNy[a];
-                  L[1][0] += vy * dNx[a];
-                  L[1][1] += vy * dNy[a];
+                  const double vx = velocity[0].local_element(w.node[e]);
+                  const double vy = velocity[1].local_element(w.node[e]);
+                  L[0][0] += vx * w.grad_x[e];
+                  L[0][1] += vx * w.grad_y[e];
+                  L[1][0] += vy * w.grad_x[e];
+                  L[1][1] += vy * w.grad_y[e];
                 }
               cell_gradients[k++] = L;
+            }
+          update_cell_stresses(cell, dt);
+        }
+    }
+
+
+
+    void
+    MaterialPointSolver::update_cell_stresses(
+      const dealii::Triangulation<2>::active_cell_iterator &cell,
+      const double                                          dt)
+    {
+      // With B-bar, the volumetric part of each point's strain increment is replaced by
+      // its volume-weighted average over the cell (mean dilatation).
+      double mean_volumetric = 0.;
+      if (prm.b_bar)
+        {
+          double       volume_sum = 0., volumetric_sum = 0.;
+          unsigned int k = 0;
+          for (const auto &particle : particle_handler.particles_in_cell(cell))
+            {
+              const dealii::Tensor<2, 2> &L = cell_gradients[k++];
               const double V = particle.get_properties()[property::volume];
               volume_sum += V;
               volumetric_sum += V * (L[0][0] + L[1][1]);
             }
-          const double mean_volumetric = volumetric_sum / volume_sum;
+          mean_volumetric = volumetric_sum / volume_sum;
+        }
 
-          k = 0;
-          for (auto &particle : particle_handler.particles_in_cell(cell))
+      const bool   stretch_domain = prm.shape_function == ShapeFunction::cpgimp;
+      const double max_half       = 0.5 * prm.cell_size;
+      unsigned int k              = 0;
+      for (auto &particle : particle_handler.particles_in_cell(cell))
+        {
+          const dealii::Tensor<2, 2>   &L = cell_gradients[k++];
+          dealii::SymmetricTensor<2, 3> strain_increment;
+          strain_increment[0][0] = L[0][0] * dt;
+          strain_increment[1][1] = L[1][1] * dt;
+          strain_increment[0][1] = 0.5 * (L[0][1] + L[1][0]) * dt;
+          if (prm.b_bar)
             {
-              const dealii::Tensor<2, 2> &L = cell_gradients[k++];
-              dealii::SymmetricTensor<2, 3> strain_increment;
-              strain_increment[0][0] = L[0][0] * dt;
-              strain_increment[1][1] = L[1][1] * dt;
-              strain_increment[0][1] = 0.5 * (L[0][1] + L[1][0]) * dt;
-              if (prm.b_bar)
-                {
-                  const double correction = 0.5 * (mean_volumetric - (L[0][0] + L[1][1])) * dt;
-                  strain_increment[0][0] += correction;
-                  strain_increment[1][1] += correction;
-                }
-              const double spin_xy = 0.5 * (L[0][1] - L[1][0]) * dt;
+              const double correction = 0.5 * (mean_volumetric - (L[0][0] + L[1][1])) * dt;
+              strain_increment[0][0] += correction;
+              strain_increment[1][1] += correction;
+            }
+          const double spin_xy = 0.5 * (L[0][1] - L[1][0]) * dt;
 
-              auto p = particle.get_properties();
-              dealii::SymmetricTensor<2, 3> stress;
-              stress[0][0] = p[property::stress_xx];
-              stress[1][1] = p[property::stress_yy];
-              stress[0][1] = p[property::stress_xy];
-              stress[2][2] = p[property::stress_zz];
-              double plastic = p[property::equivalent_plastic_strain];
-              materials[static_cast<unsigned int>(p[property::material_id])].update_stress(
-                stress, strain_increment, spin_xy, plastic);
-              p[property::stress_xx]                 = stress[0][0];
-              p[property::stress_yy]                 = stress[1][1];
-              p[property::stress_xy]                 = stress[0][1];
-              p[property::stress_zz]                 = stress[2][2];
-              p[property::equivalent_plastic_strain] = plastic;
-              p[property::volume] *= 1. + strain_increment[0][0] + strain_increment[1][1];
+          auto                          p = particle.get_properties();
+          dealii::SymmetricTensor<2, 3> stress;
+          stress[0][0] = p[property::stress_xx];
+          stress[1][1] = p[property::stress_yy];
+          stress[0][1] = p[property::stress_xy];
+          stress[2][2] = p[property::stress_zz];
+          double plastic = p[property::equivalent_plastic_strain];
+          materials[static_cast<unsigned int>(p[property::material_id])].update_stress(
+            stress, strain_increment, spin_xy, plastic);
+          p[property::stress_xx]                 = stress[0][0];
+          p[property::stress_yy]                 = stress[1][1];
+          p[property::stress_xy]                 = stress[0][1];
+          p[property::stress_zz]                 = stress[2][2];
+          p[property::equivalent_plastic_strain] = plastic;
+          p[property::volume] *= 1. + strain_increment[0][0] + strain_increment[1][1];
+          if (stretch_domain)
+            {
+              // cpGIMP: the domain follows the stretch of the point along the axes
+              // (kept within half a cell so it stays inside the patch of cells).
+              p[property::domain_half_x] =
+                std::min(max_half, p[property::domain_half_x] * (1. + L[0][0] * dt));
+              p[property::domain_half_y] =
+                std::min(max_half, p[property::domain_half_y] * (1. + L[1][1] * dt));
             }
         }
     }
@@ -677,16 +974,23 @@ namespace slidewave
     void
     MaterialPointSolver::advance(const double dt)
     {
+      for (auto &support : supports)
+        support.active = loading_gravity || time < support.release_time;
       particles_to_grid();
       update_grid(dt);
       new_positions.resize(particle_handler.n_locally_owned_particles());
-      grid_to_particles(dt);
-      if (prm.update_scheme == UpdateScheme::musl)
-        remap_velocities_to_grid();
-      update_stresses(dt);
+      if (prm.update_scheme == UpdateScheme::usl)
+        grid_to_particles(dt, /*with_stresses=*/true);
+      else
+        {
+          grid_to_particles(dt, /*with_stresses=*/false);
+          remap_velocities_to_grid();
+          update_stresses(dt);
+        }
       for (auto &particle : particle_handler)
         particle.set_location(new_positions[particle.get_local_index()]);
       particle_handler.sort_particles_into_subdomains_and_cells();
+      time += dt;
     }
 
 

@@ -11,6 +11,8 @@
 
 #include <slidewave/materials/material.h>
 #include <slidewave/mpm/material_region.h>
+#include <slidewave/mpm/rigid_wall.h>
+#include <slidewave/mpm/shape_functions.h>
 
 #include <array>
 #include <string>
@@ -31,6 +33,14 @@ namespace slidewave
       free,   ///< nothing imposed
       roller, ///< normal velocity zero (free slip)
       fixed   ///< both velocity components zero (no slip)
+    };
+
+    /** How the material starts stressed (subsection "Initial stress"). */
+    enum class InitialStress
+    {
+      none,           ///< stress free
+      geostatic,      ///< sigma_v from the weight of the material above, sigma_h = K0 sigma_v
+      gravity_loading ///< gravity applied with heavy damping until at rest, then released
     };
 
     /**
@@ -55,6 +65,7 @@ namespace slidewave
       dealii::Point<2>     lower_left, upper_right;
       double               cell_size              = 0.01;
       unsigned int         particles_per_direction = 2;
+      ShapeFunction        shape_function         = ShapeFunction::q1;
       UpdateScheme         update_scheme          = UpdateScheme::usl;
       double               flip_fraction          = 0.99;
       double               time_step_multiplier   = 0.5;
@@ -65,6 +76,14 @@ namespace slidewave
       /** Boundary conditions on the left, right, bottom and top sides (ids 0-3). */
       std::array<GridBoundary, 4> boundaries{{GridBoundary::roller, GridBoundary::roller,
                                               GridBoundary::fixed, GridBoundary::free}};
+
+      std::vector<RigidWall> walls;
+
+      InitialStress initial_stress = InitialStress::none;
+      /** K0 = sigma_h / sigma_v; negative: from each material (1 - sin phi, or nu/(1-nu)). */
+      double lateral_stress_ratio    = -1.;
+      double gravity_loading_time    = 0.;
+      double gravity_loading_damping = 0.7;
 
       std::vector<materials::MaterialParameters> materials;
       std::vector<MaterialRegion>                regions;
@@ -94,9 +113,12 @@ namespace slidewave
     public:
       explicit MaterialPointSolver(const SolverParameters &parameters);
 
-      /** Creates the grid and fills the regions with material points. */
+      /**
+       * Creates the grid, fills the regions with material points and sets up their
+       * initial stress (at time @p start_time; gravity loading runs before it).
+       */
       void
-      setup();
+      setup(double start_time = 0.);
 
       /** The time step of Eq. 23 (or the fixed one). */
       double
@@ -150,11 +172,53 @@ namespace slidewave
         return velocity[component];
       }
 
+      /** Time of the particles' state. */
+      double
+      current_time() const
+      {
+        return time;
+      }
+
+      /**
+       * Scatters the particles' mass and momentum to the grid and returns the totals over
+       * all nodes {mass, momentum x, momentum y} (a check of the transfer; collective).
+       */
+      std::array<double, 3>
+      nodal_totals();
+
     private:
       using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
 
       void
       create_particles();
+
+      /** For each owned cell, the cells sharing a vertex with it (GIMP's reach). */
+      void
+      build_cell_patches();
+
+      /** The owned nodes of each rigid wall. */
+      void
+      find_wall_nodes();
+
+      /** sigma_v from the weight of the material above, sigma_h = K0 sigma_v. */
+      void
+      set_geostatic_stress();
+
+      /** Gravity with heavy local damping, walls held, until gravity_loading_time. */
+      void
+      load_gravity();
+
+      template <typename ParticleAccessorType>
+      void
+      shape_weights(const ParticleAccessorType &particle, unsigned int cell_index,
+                    NodeWeights &w) const;
+
+      double
+      empty_node_mass() const;
+
+      void
+      update_cell_stresses(const dealii::Triangulation<2>::active_cell_iterator &cell,
+                           double                                                dt);
 
       void
       particles_to_grid();
@@ -163,7 +227,7 @@ namespace slidewave
       update_grid(double dt);
 
       void
-      grid_to_particles(double dt);
+      grid_to_particles(double dt, bool with_stresses);
 
       void
       remap_velocities_to_grid();
@@ -184,10 +248,28 @@ namespace slidewave
       Vector nodal_mass;
       std::array<Vector, 2> momentum, force, velocity, velocity_old;
 
-      /** Locally owned dofs on each side (0-3) where a velocity component is held at 0. */
-      std::array<std::vector<dealii::types::global_dof_index>, 2> constrained_dofs;
+      /** Local indices of owned nodes where v_x (0) or v_y (1) is held at zero. */
+      std::array<std::vector<unsigned int>, 2> constrained_dofs;
+
+      /** A rigid wall's owned nodes (local indices) per held component. */
+      struct WallNodes
+      {
+        std::array<std::vector<unsigned int>, 2> nodes;
+        double                                   release_time;
+        bool                                     active = true;
+      };
+      std::vector<WallNodes> supports;
+
+      /** Cells of each owned cell's patch: patch_cells[patch_start[c] .. patch_start[c+1]),
+       * the cell itself first. */
+      std::vector<unsigned int> patch_start;
+      std::vector<PatchCell>    patch_cells;
 
       double lost_mass = 0.;
+      double time      = 0.;
+      /** Local damping in force now (heavier during gravity loading). */
+      double damping = 0.;
+      bool   loading_gravity = false;
 
       /** Side arrays reused every step (no allocation per particle). */
       std::vector<dealii::Point<2>>     new_positions;

@@ -30,6 +30,8 @@ namespace slidewave
         initial_x,                 ///< position at t = 0 [m]
         initial_y,
         material_id,               ///< index of the material (stored as a double)
+        domain_half_x,             ///< GIMP: half-lengths of the point's domain [m]
+        domain_half_y,
         n_properties
       };
     } // namespace property
@@ -50,7 +52,9 @@ namespace slidewave
          "equivalent_plastic_strain",
          "initial_x",
          "initial_y",
-         "material_id"}};
+         "material_id",
+         "domain_half_x",
+         "domain_half_y"}};
       return names;
     }
   } // namespace mpm

@@ -1,0 +1,59 @@
+#ifndef slidewave_mpm_rigid_wall_h
+#define slidewave_mpm_rigid_wall_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <limits>
+#include <string>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    /**
+     * A rigid wall inside (or on the edge of) the background grid: a horizontal or
+     * vertical segment on grid lines whose nodes are held, in the normal direction
+     * ('roller', free slip) or in both ('fixed', no slip). A wall with a release time is a
+     * removable support: it holds the material until then and is gone afterwards (the
+     * gate of a column collapse, the face support of a tunnel). Without one it is
+     * permanent (a tunnel lining, a step in the bed).
+     */
+    struct RigidWall
+    {
+      /** Subsections "Rigid wall 1" ... a scene may declare. */
+      static constexpr unsigned int max_walls = 4;
+
+      enum class Condition
+      {
+        roller,
+        fixed
+      };
+
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /** Reads one "Rigid wall N"; returns false when its Type is 'none'. */
+      bool
+      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+
+      /** Whether @p x lies on the segment (within @p tolerance). */
+      bool
+      contains(const dealii::Point<2> &x, double tolerance) const;
+
+      /** 0 for a vertical wall (it holds v_x), 1 for a horizontal one (v_y). */
+      unsigned int
+      normal_component() const
+      {
+        return start[0] == end[0] ? 0 : 1;
+      }
+
+      Condition        condition = Condition::roller;
+      dealii::Point<2> start, end;
+      /** The wall holds while t < release_time. */
+      double release_time = std::numeric_limits<double>::infinity();
+    };
+  } // namespace mpm
+} // namespace slidewave
+
+#endif

@@ -2,6 +2,8 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
 #include <deal.II/particles/data_out.h>
 
 #include <slidewave/core/input_error.h>
@@ -10,6 +12,7 @@
 #include <slidewave/mpm/particle_properties.h>
 
 #include <cmath>
+#include <exception>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -32,6 +35,9 @@ namespace slidewave
       using namespace dealii::Patterns;
       prm.enter_subsection(section);
       SolverParameters::declare_parameters(prm);
+      prm.declare_entry("Output grid", "false", Bool(),
+                        "Also write the background grid (grid/*.pvtu, grid.pvd) with the "
+                        "nodal mass and velocity of the last step at each output time.");
       prm.enter_subsection("Verification");
       {
         prm.declare_entry("Exact solution", "none",
@@ -63,6 +69,7 @@ namespace slidewave
     {
       prm.enter_subsection(section);
       parameters.parse_parameters(prm, section);
+      write_grid = prm.get_bool("Output grid");
       prm.enter_subsection("Verification");
       {
         const std::string type = prm.get("Exact solution");
@@ -144,6 +151,38 @@ namespace slidewave
 
 
     void
+    MaterialPointScene::write_grid_state(const unsigned int index, const double time)
+    {
+      using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
+      // Ghosted copies: the solver's mass vector holds owned entries only.
+      Vector mass(solver->lumped_nodal_mass());
+      mass.update_ghost_values();
+      std::array<Vector, 2> velocity{{solver->nodal_velocity(0), solver->nodal_velocity(1)}};
+      for (auto &v : velocity)
+        v.update_ghost_values();
+
+      dealii::DataOut<2> data_out;
+      data_out.attach_dof_handler(solver->dof_handler());
+      data_out.add_data_vector(mass, "nodal_mass");
+      data_out.add_data_vector(velocity[0], "nodal_velocity_x");
+      data_out.add_data_vector(velocity[1], "nodal_velocity_y");
+      dealii::Vector<float> subdomain(solver->triangulation().n_active_cells());
+      subdomain = static_cast<float>(solver->triangulation().locally_owned_subdomain());
+      data_out.add_data_vector(subdomain, "subdomain");
+      data_out.build_patches();
+      const std::string record = data_out.write_vtu_with_pvtu_record(
+        scene.output_directory + "/grid/", "grid", index, MPI_COMM_WORLD, 5);
+      grid_files.emplace_back(time, "grid/" + record);
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          std::ofstream pvd(scene.output_directory + "/grid.pvd");
+          dealii::DataOutBase::write_pvd_record(pvd, grid_files);
+        }
+    }
+
+
+
+    void
     MaterialPointScene::add_statistics(Statistics        &statistics,
                                        const unsigned int step,
                                        const double       time,
@@ -169,16 +208,47 @@ namespace slidewave
     bool
     MaterialPointScene::run()
     {
+      // The time loop runs inside a block that owns the timer, so that a run that fails
+      // still gets its timer summary and the error goes out after it.
+      const bool         writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      dealii::ConditionalOStream timer_out(std::cout, writer && !scene.test_mode);
+      std::exception_ptr failure;
+      bool               within = false;
+      {
+        dealii::TimerOutput timer(MPI_COMM_WORLD, timer_out,
+                                  scene.test_mode ? dealii::TimerOutput::never :
+                                                    dealii::TimerOutput::summary,
+                                  dealii::TimerOutput::wall_times);
+        try
+          {
+            within = run_time_loop(timer);
+          }
+        catch (...)
+          {
+            failure = std::current_exception();
+          }
+      }
+      if (failure)
+        std::rethrow_exception(failure);
+      return within;
+    }
+
+
+
+    bool
+    MaterialPointScene::run_time_loop(dealii::TimerOutput &timer)
+    {
       using dealii::TimerOutput;
       const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       const bool test_mode = scene.test_mode;
       dealii::ConditionalOStream pcout(std::cout, is_writer && !test_mode);
-      TimerOutput timer(MPI_COMM_WORLD, pcout,
-                        test_mode ? TimerOutput::never : TimerOutput::summary,
-                        TimerOutput::wall_times);
 
       if (is_writer)
-        std::filesystem::create_directories(scene.output_directory + "/particles");
+        {
+          std::filesystem::create_directories(scene.output_directory + "/particles");
+          if (write_grid)
+            std::filesystem::create_directories(scene.output_directory + "/grid");
+        }
       MPI_Barrier(MPI_COMM_WORLD);
 
       {
@@ -210,6 +280,8 @@ namespace slidewave
       if (!test_mode)
         {
           TimerOutput::Scope scope(timer, "mpm: output");
+          if (write_grid)
+            write_grid_state(output_index, time);
           write_particles(output_index++, time);
         }
       add_statistics(statistics, step, time, dt);
@@ -246,7 +318,9 @@ namespace slidewave
               if (!test_mode)
                 {
                   TimerOutput::Scope scope(timer, "mpm: output");
-                  write_particles(output_index++, time);
+                  if (write_grid)
+            write_grid_state(output_index, time);
+          write_particles(output_index++, time);
                 }
               if (is_output_time)
                 next_output = scene.output_interval > 0. ? next_output + scene.output_interval :

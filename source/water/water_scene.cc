@@ -11,6 +11,7 @@
 #include <slidewave/water/water_scene.h>
 
 #include <cmath>
+#include <exception>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -403,12 +404,39 @@ namespace slidewave
     bool
     WaterScene::run()
     {
+      // The time loop runs inside a block that owns the timer, so that a run that fails
+      // still gets its timer summary and the error goes out after it.
+      const bool         writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      dealii::ConditionalOStream timer_out(std::cout, writer && !scene.test_mode);
+      std::exception_ptr failure;
+      bool               within = false;
+      {
+        dealii::TimerOutput timer(MPI_COMM_WORLD, timer_out,
+                                  scene.test_mode ? dealii::TimerOutput::never :
+                                                    dealii::TimerOutput::summary,
+                                  dealii::TimerOutput::wall_times);
+        try
+          {
+            within = run_time_loop(timer);
+          }
+        catch (...)
+          {
+            failure = std::current_exception();
+          }
+      }
+      if (failure)
+        std::rethrow_exception(failure);
+      return within;
+    }
+
+
+
+    bool
+    WaterScene::run_time_loop(dealii::TimerOutput &timer)
+    {
       using dealii::TimerOutput;
       const bool         test_mode = scene.test_mode;
       dealii::ConditionalOStream pcout(std::cout, is_writer && !test_mode);
-      TimerOutput timer(MPI_COMM_WORLD, pcout,
-                        test_mode ? TimerOutput::never : TimerOutput::summary,
-                        TimerOutput::wall_times);
 
       water_directory = scene.output_directory + "/water";
       if (is_writer)

@@ -2,6 +2,7 @@
 #define slidewave_mpm_material_point_scene_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
@@ -34,8 +35,16 @@ namespace slidewave
       run();
 
     private:
+      /** The time loop; throws RunFailure when the state becomes invalid. */
+      bool
+      run_time_loop(dealii::TimerOutput &timer);
+
       void
       write_particles(unsigned int index, double time);
+
+      /** The background grid with the nodal mass and velocity of the last step. */
+      void
+      write_grid_state(unsigned int index, double time);
 
       void
       add_statistics(Statistics &statistics, unsigned int step, double time, double dt) const;
@@ -61,7 +70,8 @@ namespace slidewave
       double        tolerance = 0.;
       SolverParameters                       parameters;
       std::unique_ptr<MaterialPointSolver>   solver;
-      std::vector<std::pair<double, std::string>> particle_files;
+      std::vector<std::pair<double, std::string>> particle_files, grid_files;
+      bool                                        write_grid = false;
     };
   } // namespace mpm
 } // namespace slidewave

@@ -172,6 +172,13 @@ namespace slidewave
         return velocity[component];
       }
 
+      /** Lumped nodal masses of the last particle-to-grid transfer (owned entries). */
+      const dealii::LinearAlgebra::distributed::Vector<double> &
+      lumped_nodal_mass() const
+      {
+        return nodal_mass;
+      }
+
       /** Time of the particles' state. */
       double
       current_time() const

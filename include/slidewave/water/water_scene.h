@@ -2,6 +2,7 @@
 #define slidewave_water_water_scene_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
@@ -51,6 +52,10 @@ namespace slidewave
       }
 
     private:
+      /** The time loop; throws RunFailure when the state becomes invalid. */
+      bool
+      run_time_loop(dealii::TimerOutput &timer);
+
       enum class ExactSolution
       {
         none,

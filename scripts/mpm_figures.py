@@ -57,20 +57,18 @@ def tunnel(build, out, plt):
 
 
 def column(build, out, plt):
-    fig, axes = plt.subplots(2, 1, figsize=(8, 5), sharex=True, constrained_layout=True)
-    for ax, (label, settings) in zip(axes, [("Q1, USL", []),
-                                           ("GIMP, USL", ["Material points/Shape functions=gimp"])]):
-        directory = "/tmp/slidewave-figures/column-" + label.split(",")[0].lower()
-        run(build, "prm/granular-column-collapse.prm", directory, *settings)
-        points0, _ = snapshot(directory, 0)
+    directory = "/tmp/slidewave-figures/column"
+    run(build, "prm/granular-column-collapse.prm", directory, "Time/Output interval=0.05")
+    fig, axes = plt.subplots(4, 1, figsize=(8, 6.5), sharex=True, constrained_layout=True)
+    points0, _ = snapshot(directory, 0)
+    for ax, (index, t) in zip(axes, [(1, 0.05), (2, 0.1), (4, 0.2), (8, 0.4)]):
         ax.scatter(points0[:, 0], points0[:, 1], c="0.85", s=1, lw=0)
-        points, data = snapshot(directory, 10)
-        sc = ax.scatter(points[:, 0], points[:, 1], c=data["equivalent_plastic_strain"], s=1.5,
+        points, data = snapshot(directory, index)
+        sc = ax.scatter(points[:, 0], points[:, 1], c=data["equivalent_plastic_strain"], s=1,
                         lw=0, cmap="magma_r", vmin=0, vmax=1)
-        ax.axvline(0.282, color="tab:blue", ls="--", lw=1)
-        ax.set_title("%s, t = 0.1 s (grey: t = 0; dashed: 0.282 m)" % label, fontsize=10)
+        ax.set_title("t = %.2f s, front at x = %.3f m" % (t, points[:, 0].max()), fontsize=10)
         ax.set_aspect("equal")
-        ax.set_ylim(0, 0.12)
+        ax.set_ylim(0, 0.11)
         ax.set_xlim(0, 0.4)
         ax.set_ylabel("y [m]")
     axes[-1].set_xlabel("x [m]")

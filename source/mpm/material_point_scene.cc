@@ -35,6 +35,12 @@ namespace slidewave
       using namespace dealii::Patterns;
       prm.enter_subsection(section);
       SolverParameters::declare_parameters(prm);
+      prm.declare_entry("Check interval", "10", Integer(1),
+                        "Every this many steps (and before every output), the material "
+                        "points are checked for non-finite values and non-positive volumes, "
+                        "and the kinetic energy against the energy available (initial "
+                        "kinetic + elastic energy + work of gravity); a failed check stops "
+                        "the run (exit status 2) with the step, time and point.");
       prm.declare_entry("Output grid", "false", Bool(),
                         "Also write the background grid (grid/*.pvtu, grid.pvd) with the "
                         "nodal mass and velocity of the last step at each output time.");
@@ -70,6 +76,7 @@ namespace slidewave
       prm.enter_subsection(section);
       parameters.parse_parameters(prm, section);
       write_grid = prm.get_bool("Output grid");
+      check_interval = prm.get_integer("Check interval");
       prm.enter_subsection("Verification");
       {
         const std::string type = prm.get("Exact solution");
@@ -183,6 +190,34 @@ namespace slidewave
 
 
     void
+    MaterialPointScene::check_state(const unsigned int step, const double time) const
+    {
+      const std::string where = "at step " + std::to_string(step) + ", t = " + to_string(time) + " s: ";
+      const std::string problem = solver->find_invalid_particle();
+      if (!problem.empty())
+        throw RunFailure(where + problem);
+
+      // Energy must not grow without a source: the kinetic energy can never exceed what
+      // was there at the start (kinetic + elastic) plus the work gravity has done since;
+      // walls and boundaries do no work, materials and damping only dissipate. 10 % of
+      // slack and a floor far below any real motion keep round-off from tripping it.
+      const auto   budget    = solver->energy_budget();
+      const double available = initial_energy + std::max(0., budget.gravity_work);
+      const double floor     = 1e-9 * total_mass *
+                           (std::abs(parameters.gravity[1]) + std::abs(parameters.gravity[0])) *
+                           parameters.cell_size + 1e-300;
+      if (budget.kinetic > 1.1 * available + floor)
+        throw RunFailure(where + "the kinetic energy (" + to_string(budget.kinetic) +
+                         " J/m) exceeds the energy available to the material (initial "
+                         "kinetic and elastic energy plus the work of gravity: " +
+                         to_string(available) + " J/m): the run is unstable; fastest: " +
+                         solver->describe_fastest_particle() +
+                         " (reduce 'Time step multiplier' or use GIMP)");
+    }
+
+
+
+    void
     MaterialPointScene::add_statistics(Statistics        &statistics,
                                        const unsigned int step,
                                        const double       time,
@@ -286,6 +321,11 @@ namespace slidewave
         }
       add_statistics(statistics, step, time, dt);
       statistics.end_row();
+      {
+        const auto budget = solver->energy_budget();
+        initial_energy    = budget.kinetic + budget.elastic;
+        total_mass        = solver->integrals().mass;
+      }
 
       while (time < end_time - time_tolerance)
         {
@@ -306,27 +346,32 @@ namespace slidewave
           time = reaches_target ? target : time + dt;
           ++step;
 
-          const std::string problem = solver->find_invalid_particle();
-          if (!problem.empty())
-            throw RunFailure("at step " + std::to_string(step) + ", t = " + to_string(time) +
-                             " s: " + problem);
-
           const bool is_output_time = reaches_target && target == next_output;
           const bool at_end         = time >= end_time - time_tolerance;
+          const bool reports =
+            is_output_time || at_end || step % scene.statistics_interval == 0;
+          // The guards run every 'Check interval' steps and before anything is written,
+          // so that no output ever holds a bad state.
+          if (step % check_interval == 0 || reports)
+            {
+              TimerOutput::Scope scope(timer, "mpm: checks");
+              check_state(step, time);
+            }
+
           if (is_output_time || at_end)
             {
               if (!test_mode)
                 {
                   TimerOutput::Scope scope(timer, "mpm: output");
                   if (write_grid)
-            write_grid_state(output_index, time);
-          write_particles(output_index++, time);
+                    write_grid_state(output_index, time);
+                  write_particles(output_index++, time);
                 }
               if (is_output_time)
                 next_output = scene.output_interval > 0. ? next_output + scene.output_interval :
                                                            end_time;
             }
-          if (step % scene.statistics_interval == 0 || is_output_time || at_end)
+          if (reports)
             {
               TimerOutput::Scope scope(timer, "mpm: statistics");
               add_statistics(statistics, step, time, dt);

@@ -1032,6 +1032,63 @@ namespace slidewave
 
 
 
+    MaterialPointSolver::EnergyBudget
+    MaterialPointSolver::energy_budget() const
+    {
+      double sums[3] = {0., 0., 0.};
+      for (const auto &particle : particle_handler)
+        {
+          const auto   p  = particle.get_properties();
+          const double m  = p[property::mass];
+          const double vx = p[property::velocity_x], vy = p[property::velocity_y];
+          sums[0] += 0.5 * m * (vx * vx + vy * vy);
+          const auto  &elastic =
+            materials[static_cast<unsigned int>(p[property::material_id])].elasticity();
+          const double sxx = p[property::stress_xx], syy = p[property::stress_yy],
+                       szz = p[property::stress_zz], sxy = p[property::stress_xy];
+          const double mean = (sxx + syy + szz) / 3.;
+          const double dev2 = (sxx - mean) * (sxx - mean) + (syy - mean) * (syy - mean) +
+                              (szz - mean) * (szz - mean) + 2. * sxy * sxy;
+          sums[1] += p[property::volume] * (0.5 * mean * mean / elastic.bulk_modulus() +
+                                            0.25 * dev2 / elastic.shear_modulus());
+          sums[2] += m * (prm.gravity[0] * (particle.get_location()[0] - p[property::initial_x]) +
+                          prm.gravity[1] * (particle.get_location()[1] - p[property::initial_y]));
+        }
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 3), MPI_COMM_WORLD,
+                                  dealii::ArrayView<double>(sums, 3));
+      return {sums[0], sums[1], sums[2]};
+    }
+
+
+
+    std::string
+    MaterialPointSolver::describe_fastest_particle() const
+    {
+      double                          fastest = -1.;
+      std::ostringstream out;
+      for (const auto &particle : particle_handler)
+        {
+          const auto   p     = particle.get_properties();
+          const double speed = std::sqrt(p[property::velocity_x] * p[property::velocity_x] +
+                                         p[property::velocity_y] * p[property::velocity_y]);
+          if (speed > fastest)
+            {
+              fastest = speed;
+              out.str("");
+              out << "material point " << particle.get_id() << " at (" << particle.get_location()
+                  << ") with speed " << speed << " m/s";
+            }
+        }
+      // The rank with the fastest point tells everybody.
+      const auto   my_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+      const double global  = dealii::Utilities::MPI::max(fastest, MPI_COMM_WORLD);
+      const unsigned int owner = dealii::Utilities::MPI::min(
+        fastest == global ? my_rank : dealii::numbers::invalid_unsigned_int, MPI_COMM_WORLD);
+      return dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, out.str(), owner);
+    }
+
+
+
     MaterialPointSolver::Integrals
     MaterialPointSolver::integrals() const
     {

@@ -46,6 +46,10 @@ namespace slidewave
       void
       write_grid_state(unsigned int index, double time);
 
+      /** The run-time guards; throws RunFailure (collective). */
+      void
+      check_state(unsigned int step, double time) const;
+
       void
       add_statistics(Statistics &statistics, unsigned int step, double time, double dt) const;
 
@@ -72,6 +76,9 @@ namespace slidewave
       std::unique_ptr<MaterialPointSolver>   solver;
       std::vector<std::pair<double, std::string>> particle_files, grid_files;
       bool                                        write_grid = false;
+      unsigned int                                check_interval = 10;
+      /** Kinetic + elastic energy at the start, and the total mass (for the guards). */
+      double initial_energy = 0., total_mass = 0.;
     };
   } // namespace mpm
 } // namespace slidewave

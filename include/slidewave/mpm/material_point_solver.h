@@ -147,6 +147,23 @@ namespace slidewave
       Integrals
       integrals() const;
 
+      /**
+       * Energies per unit thickness [J/m], reduced over all ranks (collective): kinetic,
+       * elastic (p^2/(2K) + s:s/(4G) per unit volume) and the work done by gravity since
+       * the start, sum m g.(x - x_0).
+       */
+      struct EnergyBudget
+      {
+        double kinetic = 0., elastic = 0., gravity_work = 0.;
+      };
+
+      EnergyBudget
+      energy_budget() const;
+
+      /** "material point ID at (x y) with speed S m/s" for the fastest point (collective). */
+      std::string
+      describe_fastest_particle() const;
+
       const dealii::parallel::distributed::Triangulation<2> &
       triangulation() const
       {

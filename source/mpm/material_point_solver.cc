@@ -4,6 +4,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/affine_constraints.h>
 
 #include <slidewave/core/input_error.h>
 #include <slidewave/mpm/material_point_solver.h>
@@ -101,6 +102,28 @@ namespace slidewave
                           "be (close to) multiples of it.");
       }
       prm.leave_subsection();
+      prm.enter_subsection("Adaptive grid");
+      {
+        prm.declare_entry("Enable", "false", Bool(),
+                          "Refine the background grid where material is (to 'Cell size') and "
+                          "keep it coarse elsewhere; re-evaluated every 'Interval' steps.");
+        prm.declare_entry("Levels", "2", Integer(1, 8),
+                          "Refinement levels: the coarsest cells are 2^Levels times 'Cell "
+                          "size', which must divide the domain.");
+        prm.declare_entry("Buffer cells", "2", Integer(0, 10),
+                          "Layers of fine cells kept around the material (GIMP domains and "
+                          "the motion until the next adaptation reach there).");
+        prm.declare_entry("Interval", "10", Integer(1),
+                          "Steps between adaptations; material must not cross the buffer in "
+                          "that time.");
+        prm.declare_entry("Particle weight", "100", Integer(0),
+                          "Cost of a material point relative to a cell's 1000 when the grid "
+                          "is partitioned among MPI ranks.");
+        prm.declare_entry("Imbalance threshold", "1.2", Double(0.),
+                          "Repartition when the most loaded rank has more than this times "
+                          "the mean work (0: only when the grid changes).");
+      }
+      prm.leave_subsection();
       prm.enter_subsection("Boundary conditions");
       for (const std::string side : {"Left", "Right", "Bottom", "Top"})
         prm.declare_entry(side,
@@ -189,6 +212,33 @@ namespace slidewave
                                "a size that divides the domain sides (" +
                                  to_string(b[0] - a[0]) + " x " + to_string(b[1] - a[1]) +
                                  " m)");
+          }
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Adaptive grid");
+      {
+        adaptivity.enabled             = prm.get_bool("Enable");
+        adaptivity.levels              = prm.get_integer("Levels");
+        adaptivity.buffer_cells        = prm.get_integer("Buffer cells");
+        adaptivity.interval            = prm.get_integer("Interval");
+        adaptivity.particle_weight     = prm.get_integer("Particle weight");
+        adaptivity.imbalance_threshold = prm.get_double("Imbalance threshold");
+        if (adaptivity.enabled)
+          {
+            const double base = cell_size * (1u << adaptivity.levels);
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                const double n = (upper_right[d] - lower_left[d]) / base;
+                if (std::abs(n - std::round(n)) > 1e-6 * n || std::round(n) < 1)
+                  throw InputError(path + "/Adaptive grid/Levels",
+                                   std::to_string(adaptivity.levels),
+                                   "a number of levels such that the coarsest cells (Cell "
+                                   "size x 2^Levels = " + to_string(base) +
+                                     " m) divide the domain sides (" +
+                                     to_string(upper_right[0] - lower_left[0]) + " x " +
+                                     to_string(upper_right[1] - lower_left[1]) + " m)");
+              }
           }
       }
       prm.leave_subsection();
@@ -314,7 +364,7 @@ namespace slidewave
 
     MaterialPointSolver::MaterialPointSolver(const SolverParameters &parameters)
       : prm(parameters)
-      , tria(MPI_COMM_WORLD)
+      , tria(MPI_COMM_WORLD, dealii::Triangulation<2>::limit_level_difference_at_vertices)
       , fe(1)
       , damping(parameters.damping)
     {
@@ -328,14 +378,65 @@ namespace slidewave
     MaterialPointSolver::setup(const double start_time)
     {
       time = start_time;
+      // With adaptive refinement the base grid is 2^levels times coarser than 'Cell size';
+      // the cells holding material (and a buffer around them) are refined to 'Cell size'.
+      const unsigned int levels = prm.adaptivity.enabled ? prm.adaptivity.levels : 0;
+      const double       base   = prm.cell_size * (1u << levels);
       const std::vector<unsigned int> subdivisions{
-        static_cast<unsigned int>(
-          std::round((prm.upper_right[0] - prm.lower_left[0]) / prm.cell_size)),
-        static_cast<unsigned int>(
-          std::round((prm.upper_right[1] - prm.lower_left[1]) / prm.cell_size))};
+        static_cast<unsigned int>(std::round((prm.upper_right[0] - prm.lower_left[0]) / base)),
+        static_cast<unsigned int>(std::round((prm.upper_right[1] - prm.lower_left[1]) / base))};
       dealii::GridGenerator::subdivided_hyper_rectangle(tria, subdivisions, prm.lower_left,
                                                         prm.upper_right, /*colorize=*/true);
+      if (prm.adaptivity.enabled)
+        {
+          tria.signals.weight.connect(
+            [this](const dealii::Triangulation<2>::cell_iterator &cell,
+                   const dealii::Triangulation<2>::CellStatus     status) -> unsigned int {
+              return cell_weight(cell, status);
+            });
+          for (unsigned int l = 0; l < levels; ++l)
+            {
+              vertex_cells = dealii::GridTools::vertex_to_cell_map(tria);
+              const auto material = cells_near_material(/*from_regions=*/true);
+              for (const auto &cell : tria.active_cell_iterators())
+                if (cell->is_locally_owned() && material[cell->active_cell_index()])
+                  cell->set_refine_flag();
+              tria.execute_coarsening_and_refinement();
+            }
+        }
       dofs.reinit(tria);
+      setup_grid_data();
+
+      particle_handler.initialize(tria, dealii::StaticMappingQ1<2>::mapping,
+                                  property::n_properties);
+      particle_handler.signals.particle_lost.connect(
+        [this](const dealii::Particles::ParticleIterator<2> &particle,
+               const typename dealii::Triangulation<2>::active_cell_iterator &) {
+          lost_mass += particle->get_properties()[property::mass];
+        });
+      create_particles();
+      // The partition of the set-up knew cells only; balance cells and points now.
+      if (prm.adaptivity.enabled && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 &&
+          prm.adaptivity.imbalance_threshold > 0. &&
+          load_imbalance() > prm.adaptivity.imbalance_threshold)
+        {
+          particle_handler.prepare_for_coarsening_and_refinement();
+          tria.repartition();
+          particle_handler.unpack_after_coarsening_and_refinement();
+          setup_grid_data();
+        }
+      if (prm.initial_stress == InitialStress::geostatic)
+        set_geostatic_stress();
+      else if (prm.initial_stress == InitialStress::gravity_loading)
+        load_gravity();
+    }
+
+
+
+    void
+    MaterialPointSolver::setup_grid_data()
+    {
+      vertex_cells = dealii::GridTools::vertex_to_cell_map(tria);
       dofs.distribute_dofs(fe);
 
       const dealii::IndexSet owned = dofs.locally_owned_dofs();
@@ -349,9 +450,34 @@ namespace slidewave
           velocity[d].reinit(nodal_mass);
           velocity_old[d].reinit(nodal_mass);
         }
+      const auto &partitioner = nodal_mass.get_partitioner();
+
+      // Hanging nodes: each constrained node's parents and weights, as local indices.
+      hanging_start.assign(1, 0);
+      hanging_node.clear();
+      hanging_parent.clear();
+      hanging_weight.clear();
+      {
+        dealii::AffineConstraints<double> constraints(relevant);
+        dealii::DoFTools::make_hanging_node_constraints(dofs, constraints);
+        constraints.close();
+        for (const auto index : relevant)
+          if (constraints.is_constrained(index))
+            {
+              hanging_node.push_back(partitioner->global_to_local(index));
+              for (const auto &entry : *constraints.get_constraint_entries(index))
+                {
+                  hanging_parent.push_back(partitioner->global_to_local(entry.first));
+                  hanging_weight.push_back(entry.second);
+                }
+              hanging_start.push_back(hanging_parent.size());
+            }
+      }
 
       // Sides 0, 1 (left, right) hold the x velocity for rollers; 2, 3 the y velocity;
       // fixed sides hold both.
+      for (auto &list : constrained_dofs)
+        list.clear();
       for (unsigned int side = 0; side < 4; ++side)
         {
           if (prm.boundaries[side] == GridBoundary::free)
@@ -364,24 +490,154 @@ namespace slidewave
           for (unsigned int d = 0; d < 2; ++d)
             if (d == normal || prm.boundaries[side] == GridBoundary::fixed)
               for (const auto index : on_side)
-                constrained_dofs[d].push_back(
-                  nodal_mass.get_partitioner()->global_to_local(index));
+                constrained_dofs[d].push_back(partitioner->global_to_local(index));
         }
       build_cell_patches();
       find_wall_nodes();
+    }
 
-      particle_handler.initialize(tria, dealii::StaticMappingQ1<2>::mapping,
-                                  property::n_properties);
-      particle_handler.signals.particle_lost.connect(
-        [this](const dealii::Particles::ParticleIterator<2> &particle,
-               const typename dealii::Triangulation<2>::active_cell_iterator &) {
-          lost_mass += particle->get_properties()[property::mass];
-        });
-      create_particles();
-      if (prm.initial_stress == InitialStress::geostatic)
-        set_geostatic_stress();
-      else if (prm.initial_stress == InitialStress::gravity_loading)
-        load_gravity();
+
+
+    std::vector<bool>
+    MaterialPointSolver::cells_near_material(const bool from_regions) const
+    {
+      // Cells holding material: from the regions (at set-up: any point of the finest
+      // lattice of points in the cell lies in a region) or from the particles; then
+      // 'Buffer cells' layers of vertex neighbours around them, across ranks.
+      std::vector<bool> near(tria.n_active_cells(), false);
+      const unsigned int n = prm.particles_per_direction;
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          bool has_material = false;
+          if (from_regions)
+            {
+              const dealii::Point<2> origin = cell->vertex(0);
+              const double           h      = cell->vertex(1)[0] - origin[0];
+              const unsigned int     m =
+                n * static_cast<unsigned int>(std::round(h / prm.cell_size));
+              for (unsigned int j = 0; j < m && !has_material; ++j)
+                for (unsigned int i = 0; i < m && !has_material; ++i)
+                  {
+                    const dealii::Point<2> x(origin[0] + (i + 0.5) * h / m,
+                                             origin[1] + (j + 0.5) * h / m);
+                    for (const auto &region : prm.regions)
+                      has_material = has_material || region.contains(x);
+                  }
+            }
+          else
+            has_material = particle_handler.n_particles_in_cell(cell) > 0;
+          near[cell->active_cell_index()] = has_material;
+        }
+      const auto &vertex_to_cells = vertex_cells;
+      for (unsigned int layer = 0; layer <= prm.adaptivity.buffer_cells; ++layer)
+        {
+          // Ghost cells learn their owners' flags.
+          dealii::GridTools::exchange_cell_data_to_ghosts<unsigned char,
+                                                          dealii::Triangulation<2>>(
+            tria,
+            [&](const dealii::Triangulation<2>::active_cell_iterator &cell) {
+              return static_cast<unsigned char>(near[cell->active_cell_index()]);
+            },
+            [&](const dealii::Triangulation<2>::active_cell_iterator &cell,
+                const unsigned char                                   flag) {
+              near[cell->active_cell_index()] = flag != 0;
+            });
+          if (layer == prm.adaptivity.buffer_cells)
+            break;
+          std::vector<bool> grown = near;
+          for (const auto &cell : tria.active_cell_iterators())
+            if (cell->is_locally_owned() && !near[cell->active_cell_index()])
+              for (const unsigned int v : cell->vertex_indices())
+                for (const auto &other : vertex_to_cells[cell->vertex_index(v)])
+                  if (!other->is_artificial() && near[other->active_cell_index()])
+                    grown[cell->active_cell_index()] = true;
+          near.swap(grown);
+        }
+      return near;
+    }
+
+
+
+    unsigned int
+    MaterialPointSolver::cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
+                                     const dealii::Triangulation<2>::CellStatus status) const
+    {
+      // A cell costs about as much as a few points (the grid update); the base weight of
+      // 1000 per cell is added by the triangulation.
+      unsigned int n = 0;
+      switch (status)
+        {
+          case dealii::Triangulation<2>::CELL_PERSIST:
+          case dealii::Triangulation<2>::CELL_REFINE:
+            n = particle_handler.n_particles_in_cell(cell);
+            break;
+          case dealii::Triangulation<2>::CELL_COARSEN:
+            for (const auto &child : cell->child_iterators())
+              n += particle_handler.n_particles_in_cell(child);
+            break;
+          default:
+            break;
+        }
+      return prm.adaptivity.particle_weight * n;
+    }
+
+
+
+    double
+    MaterialPointSolver::load_imbalance() const
+    {
+      // Max over mean of the ranks' work: cells x 1000 + points x particle weight.
+      const double work =
+        1000. * tria.n_locally_owned_active_cells() +
+        static_cast<double>(prm.adaptivity.particle_weight) *
+          particle_handler.n_locally_owned_particles();
+      const double max  = dealii::Utilities::MPI::max(work, MPI_COMM_WORLD);
+      const double mean = dealii::Utilities::MPI::sum(work, MPI_COMM_WORLD) /
+                          dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      return mean > 0. ? max / mean : 1.;
+    }
+
+
+
+    void
+    MaterialPointSolver::adapt_grid()
+    {
+      const auto near = cells_near_material(/*from_regions=*/false);
+      const unsigned int levels = prm.adaptivity.levels;
+      bool changes = false;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const bool keep_fine = near[cell->active_cell_index()];
+            if (keep_fine && static_cast<unsigned int>(cell->level()) < levels)
+              {
+                cell->set_refine_flag();
+                changes = true;
+              }
+            else if (!keep_fine && cell->level() > 0)
+              {
+                cell->set_coarsen_flag();
+                changes = true;
+              }
+          }
+      changes = dealii::Utilities::MPI::logical_or(changes, MPI_COMM_WORLD);
+      const bool rebalance =
+        !changes && prm.adaptivity.imbalance_threshold > 0. &&
+        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 &&
+        load_imbalance() > prm.adaptivity.imbalance_threshold;
+      if (!changes && !rebalance)
+        return;
+      // Points travel with their cells through refinement, coarsening and repartitioning.
+      particle_handler.prepare_for_coarsening_and_refinement();
+      if (changes)
+        tria.execute_coarsening_and_refinement(); // also repartitions by the cell weights
+      else
+        tria.repartition();
+      particle_handler.unpack_after_coarsening_and_refinement();
+      setup_grid_data();
+      ++n_grid_changes;
     }
 
 
@@ -390,7 +646,7 @@ namespace slidewave
     MaterialPointSolver::build_cell_patches()
     {
       const auto &partitioner = nodal_mass.get_partitioner();
-      const auto  vertex_to_cells = dealii::GridTools::vertex_to_cell_map(tria);
+      const auto &vertex_to_cells = vertex_cells;
       patch_start.assign(tria.n_active_cells() + 1, 0);
       patch_cells.clear();
       std::vector<dealii::types::global_dof_index> dof_indices(4);
@@ -690,11 +946,49 @@ namespace slidewave
                 }
             }
         }
+      condense_hanging_nodes(nodal_mass);
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          condense_hanging_nodes(momentum[d]);
+          condense_hanging_nodes(force[d]);
+        }
       nodal_mass.compress(dealii::VectorOperation::add);
       for (unsigned int d = 0; d < 2; ++d)
         {
           momentum[d].compress(dealii::VectorOperation::add);
           force[d].compress(dealii::VectorOperation::add);
+        }
+    }
+
+
+
+    void
+    MaterialPointSolver::condense_hanging_nodes(Vector &v) const
+    {
+      // What was gathered on a hanging node belongs to the nodes it is interpolated from
+      // (the transpose of the interpolation): mass, momentum and force are conserved.
+      for (unsigned int k = 0; k < hanging_node.size(); ++k)
+        {
+          const double value = v.local_element(hanging_node[k]);
+          for (unsigned int e = hanging_start[k]; e < hanging_start[k + 1]; ++e)
+            v.local_element(hanging_parent[e]) += hanging_weight[e] * value;
+          v.local_element(hanging_node[k]) = 0.;
+        }
+    }
+
+
+
+    void
+    MaterialPointSolver::interpolate_hanging_nodes(Vector &v) const
+    {
+      // On ghosted vectors: a hanging node's value from its parents, so that the field is
+      // continuous across the coarse-fine faces.
+      for (unsigned int k = 0; k < hanging_node.size(); ++k)
+        {
+          double value = 0.;
+          for (unsigned int e = hanging_start[k]; e < hanging_start[k + 1]; ++e)
+            value += hanging_weight[e] * v.local_element(hanging_parent[e]);
+          v.local_element(hanging_node[k]) = value;
         }
     }
 
@@ -755,6 +1049,8 @@ namespace slidewave
         {
           velocity[d].update_ghost_values();
           velocity_old[d].update_ghost_values();
+          interpolate_hanging_nodes(velocity[d]);
+          interpolate_hanging_nodes(velocity_old[d]);
         }
     }
 
@@ -797,7 +1093,10 @@ namespace slidewave
             }
         }
       for (unsigned int d = 0; d < 2; ++d)
-        momentum[d].compress(dealii::VectorOperation::add);
+        {
+          condense_hanging_nodes(momentum[d]);
+          momentum[d].compress(dealii::VectorOperation::add);
+        }
       const double   tiny  = empty_node_mass();
       const unsigned n_own = nodal_mass.locally_owned_size();
       for (unsigned int i = 0; i < n_own; ++i)
@@ -808,7 +1107,10 @@ namespace slidewave
         }
       apply_boundary_conditions(velocity[0], velocity[1]);
       for (unsigned int d = 0; d < 2; ++d)
-        velocity[d].update_ghost_values();
+        {
+          velocity[d].update_ghost_values();
+          interpolate_hanging_nodes(velocity[d]);
+        }
     }
 
 
@@ -974,6 +1276,9 @@ namespace slidewave
     void
     MaterialPointSolver::advance(const double dt)
     {
+      if (prm.adaptivity.enabled && n_steps > 0 && n_steps % prm.adaptivity.interval == 0)
+        adapt_grid();
+      ++n_steps;
       for (auto &support : supports)
         support.active = loading_gravity || time < support.release_time;
       particles_to_grid();

@@ -15,6 +15,7 @@
 #include <slidewave/mpm/shape_functions.h>
 
 #include <array>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,17 @@ namespace slidewave
                                               GridBoundary::fixed, GridBoundary::free}};
 
       std::vector<RigidWall> walls;
+
+      /** Subsection "Adaptive grid". */
+      struct Adaptivity
+      {
+        bool         enabled             = false;
+        unsigned int levels              = 2;
+        unsigned int buffer_cells        = 2;
+        unsigned int interval            = 10;
+        unsigned int particle_weight     = 100;
+        double       imbalance_threshold = 1.2;
+      } adaptivity;
 
       InitialStress initial_stress = InitialStress::none;
       /** K0 = sigma_h / sigma_v; negative: from each material (1 - sin phi, or nu/(1-nu)). */
@@ -196,6 +208,17 @@ namespace slidewave
         return nodal_mass;
       }
 
+      /** Max over mean of the ranks' work (cells and points; collective). */
+      double
+      load_imbalance() const;
+
+      /** How often the grid was adapted or repartitioned. */
+      unsigned int
+      n_grid_adaptations() const
+      {
+        return n_grid_changes;
+      }
+
       /** Time of the particles' state. */
       double
       current_time() const
@@ -215,6 +238,31 @@ namespace slidewave
 
       void
       create_particles();
+
+      /** Dofs, vectors, hanging nodes, boundary nodes, patches, walls of the grid. */
+      void
+      setup_grid_data();
+
+      /** Active cells (owned and ghost) that hold material or lie within the buffer. */
+      std::vector<bool>
+      cells_near_material(bool from_regions) const;
+
+      /** Weight of a cell for partitioning: particle_weight per point (base 1000 added). */
+      unsigned int
+      cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
+                  dealii::Triangulation<2>::CellStatus           status) const;
+
+      /** Refine where material is, coarsen where it left, repartition if needed. */
+      void
+      adapt_grid();
+
+      /** Sums on hanging nodes go to their parents (before compress). */
+      void
+      condense_hanging_nodes(dealii::LinearAlgebra::distributed::Vector<double> &v) const;
+
+      /** Hanging nodes take their parents' interpolated values (ghosted vectors). */
+      void
+      interpolate_hanging_nodes(dealii::LinearAlgebra::distributed::Vector<double> &v) const;
 
       /** For each owned cell, the cells sharing a vertex with it (GIMP's reach). */
       void
@@ -287,7 +335,16 @@ namespace slidewave
       /** Cells of each owned cell's patch: patch_cells[patch_start[c] .. patch_start[c+1]),
        * the cell itself first. */
       std::vector<unsigned int> patch_start;
+      /** The active cells around each vertex (rebuilt when the grid changes). */
+      std::vector<std::set<dealii::Triangulation<2>::active_cell_iterator>> vertex_cells;
       std::vector<PatchCell>    patch_cells;
+
+      /** Hanging nodes (local indices) and their parents and weights:
+       * hanging_parent[hanging_start[k] .. hanging_start[k+1]) for hanging_node[k]. */
+      std::vector<unsigned int> hanging_node, hanging_start, hanging_parent;
+      std::vector<double>       hanging_weight;
+
+      unsigned int n_steps = 0, n_grid_changes = 0;
 
       double lost_mass = 0.;
       double time      = 0.;

@@ -28,6 +28,8 @@ namespace slidewave
       "  --validate                 parse and check SCENE.prm, run nothing\n"
       "  --set 'PATH=VALUE'         override one parameter after reading the file, e.g.\n"
       "                             --set 'Shallow water/Mesh/Number of cells=400'\n"
+      "  --resume                   resume from the newest checkpoint in the output\n"
+      "                             directory (same as --set 'Checkpoint/Resume=true')\n"
       "  --print-parameters [FMT]   print every parameter with its default, allowed\n"
       "                             values and documentation; FMT is prm (default),\n"
       "                             json or markdown\n"
@@ -223,6 +225,8 @@ namespace slidewave
           }
         if (arg == "--validate")
           validate_only = true;
+        else if (arg == "--resume")
+          overrides.push_back("Checkpoint/Resume=true");
         else if (arg == "--set")
           {
             if (a + 1 >= arguments.size())
@@ -284,6 +288,12 @@ namespace slidewave
           {
             case Physics::shallow_water:
               {
+                if (scene.resume || scene.checkpoint_steps > 0 || scene.checkpoint_minutes > 0. ||
+                    scene.checkpoint_at_end)
+                  throw InputError(scene.resume ? "Checkpoint/Resume" : "Checkpoint",
+                                   scene.resume ? "true" : "set",
+                                   "no checkpoint settings in a shallow-water scene "
+                                   "(checkpoints exist for material points only, for now)");
                 water::WaterScene water_scene(scene, prm);
                 if (validate_only)
                   {

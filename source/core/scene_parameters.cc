@@ -55,6 +55,24 @@ namespace slidewave
     }
     prm.leave_subsection();
 
+    prm.enter_subsection("Checkpoint");
+    {
+      prm.declare_entry("Step interval", "0", Integer(0),
+                        "Write a checkpoint every this many steps (0: never). Checkpoints "
+                        "go to OUTPUT/checkpoint (the previous one is kept as "
+                        "checkpoint.previous); writing is atomic.");
+      prm.declare_entry("Wall time interval", "0", Double(0.),
+                        "Write a checkpoint every this many minutes of wall time (0: never).");
+      prm.declare_entry("At end", "false", Bool(), "Write a checkpoint at the end of the run.");
+      prm.declare_entry("Resume", "false", Bool(),
+                        "Resume from the newest checkpoint in the output directory (same as "
+                        "the command-line option --resume). The scene may change its end "
+                        "time, output and checkpoint settings, and the number of MPI ranks; "
+                        "the physics, grid and materials must be those of the checkpoint. "
+                        "Material points only, for now.");
+    }
+    prm.leave_subsection();
+
     prm.enter_subsection("Test");
     {
       prm.declare_entry("Enable",
@@ -117,6 +135,15 @@ namespace slidewave
 
     prm.enter_subsection("Test");
     test_mode = prm.get_bool("Enable");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Checkpoint");
+    {
+      checkpoint_steps   = prm.get_integer("Step interval");
+      checkpoint_minutes = prm.get_double("Wall time interval");
+      checkpoint_at_end  = prm.get_bool("At end");
+      resume             = prm.get_bool("Resume");
+    }
     prm.leave_subsection();
   }
 } // namespace slidewave

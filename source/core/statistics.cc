@@ -9,16 +9,27 @@ namespace slidewave
   void
   Statistics::open(const std::string &filename,
                    const bool         write_file,
-                   std::ostream      *echo_stream)
+                   std::ostream      *echo_stream,
+                   const bool         append)
   {
+    appending = append;
     if (write_file)
       {
-        file.open(filename);
+        file.open(filename, append ? std::ios::app : std::ios::out);
         if (!file)
           throw std::runtime_error("cannot open " + filename + " for writing");
         file.precision(12);
       }
     echo = echo_stream;
+  }
+
+
+
+  void
+  Statistics::flush()
+  {
+    if (file.is_open())
+      file.flush();
   }
 
 
@@ -38,7 +49,7 @@ namespace slidewave
       {
         for (const auto &entry : current_row)
           columns.push_back(entry.first);
-        if (file.is_open())
+        if (file.is_open() && !appending)
           {
             for (unsigned int c = 0; c < columns.size(); ++c)
               file << (c == 0 ? "" : ",") << columns[c];

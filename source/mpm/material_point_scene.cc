@@ -11,12 +11,14 @@
 #include <slidewave/mpm/material_point_scene.h>
 #include <slidewave/mpm/particle_properties.h>
 
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace slidewave
 {
@@ -189,6 +191,132 @@ namespace slidewave
 
 
 
+    std::string
+    MaterialPointScene::checkpoint_signature() const
+    {
+      // What a checkpoint must agree with: the physics, the grid and the materials.
+      std::ostringstream out;
+      out.precision(12);
+      out << "material points; grid " << parameters.lower_left << " to " << parameters.upper_right
+          << ", cell size " << parameters.cell_size << ", adaptive levels "
+          << (parameters.adaptivity.enabled ? parameters.adaptivity.levels : 0) << "; materials";
+      for (const auto &material : parameters.materials)
+        out << " '" << material.name << "'";
+      return out.str();
+    }
+
+
+
+    void
+    MaterialPointScene::write_checkpoint(const LoopState &loop) const
+    {
+      // Written to checkpoint.tmp, then renamed: a run killed while writing leaves the
+      // previous checkpoints intact. The last two are kept.
+      namespace fs          = std::filesystem;
+      const bool  is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      const fs::path directory = scene.output_directory;
+      const fs::path tmp = directory / "checkpoint.tmp", latest = directory / "checkpoint",
+                     previous = directory / "checkpoint.previous";
+      if (is_writer)
+        {
+          fs::remove_all(tmp);
+          fs::create_directories(tmp);
+        }
+      MPI_Barrier(MPI_COMM_WORLD);
+      solver->save((tmp / "state").string());
+      const auto solver_state = solver->state();
+      if (is_writer)
+        {
+          std::ofstream out(tmp / "scene.txt");
+          out.precision(17);
+          out << checkpoint_signature() << '\n'
+              << solver_state.time << ' ' << solver_state.lost_mass << ' ' << solver_state.n_steps
+              << '\n'
+              << loop.time << ' ' << loop.step << ' ' << loop.output_index << ' '
+              << loop.next_output << ' ' << scene.output_interval << ' ' << loop.max_error << ' '
+              << initial_energy << ' ' << total_mass << '\n'
+              << particle_files.size() << '\n';
+          for (const auto &[t, name] : particle_files)
+            out << t << ' ' << name << '\n';
+          out << grid_files.size() << '\n';
+          for (const auto &[t, name] : grid_files)
+            out << t << ' ' << name << '\n';
+          out.close();
+          if (fs::exists(directory / "statistics.csv"))
+            fs::copy_file(directory / "statistics.csv", tmp / "statistics.csv",
+                          fs::copy_options::overwrite_existing);
+          if (fs::exists(latest))
+            {
+              fs::remove_all(previous);
+              fs::rename(latest, previous);
+            }
+          fs::rename(tmp, latest);
+        }
+      MPI_Barrier(MPI_COMM_WORLD);
+    }
+
+
+
+    void
+    MaterialPointScene::resume(LoopState &loop)
+    {
+      namespace fs = std::filesystem;
+      const fs::path directory = scene.output_directory;
+      fs::path       source    = directory / "checkpoint";
+      if (!fs::exists(source / "scene.txt"))
+        source = directory / "checkpoint.previous";
+      if (!fs::exists(source / "scene.txt"))
+        throw InputError("Checkpoint/Resume", "true",
+                         "a checkpoint in '" + (directory / "checkpoint").string() +
+                           "' (there is none: run the scene with checkpoints first)");
+      std::ifstream in(source / "scene.txt");
+      std::string   signature;
+      std::getline(in, signature);
+      if (signature != checkpoint_signature())
+        throw InputError("Checkpoint/Resume", "true",
+                         "a checkpoint written by this scene; the one in '" + source.string() +
+                           "' is of a different scene (" + signature + "; this scene: " +
+                           checkpoint_signature() + ")");
+      MaterialPointSolver::State solver_state;
+      double                     saved_interval = 0.;
+      in >> solver_state.time >> solver_state.lost_mass >> solver_state.n_steps;
+      in >> loop.time >> loop.step >> loop.output_index >> loop.next_output >> saved_interval >>
+        loop.max_error >> initial_energy >> total_mass;
+      std::size_t n = 0;
+      in >> n;
+      particle_files.resize(n);
+      for (auto &[t, name] : particle_files)
+        in >> t >> name;
+      in >> n;
+      grid_files.resize(n);
+      for (auto &[t, name] : grid_files)
+        in >> t >> name;
+      if (!in)
+        throw InputError("Checkpoint/Resume", "true",
+                         "a readable checkpoint ('" + (source / "scene.txt").string() +
+                           "' is damaged)");
+      // A changed output interval restarts the output times from the resumed time.
+      if (saved_interval != scene.output_interval)
+        loop.next_output =
+          scene.output_interval > 0. ?
+            scene.start_time + (std::floor((loop.time - scene.start_time) / scene.output_interval +
+                                           1e-9) + 1.) * scene.output_interval :
+            scene.end_time;
+      if (!(scene.end_time > loop.time))
+        throw InputError("Time/End time", to_string(scene.end_time),
+                         "a time after the checkpoint's t = " + to_string(loop.time) + " s");
+
+      solver->load((source / "state").string());
+      solver->set_state(solver_state);
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 &&
+          fs::exists(source / "statistics.csv"))
+        fs::copy_file(source / "statistics.csv", directory / "statistics.csv",
+                      fs::copy_options::overwrite_existing);
+      MPI_Barrier(MPI_COMM_WORLD);
+    }
+
+
+
     void
     MaterialPointScene::check_state(const unsigned int step, const double time) const
     {
@@ -292,46 +420,56 @@ namespace slidewave
         }
       MPI_Barrier(MPI_COMM_WORLD);
 
+      LoopState loop;
+      loop.time        = scene.start_time;
+      loop.next_output = scene.output_interval > 0. ? scene.start_time + scene.output_interval :
+                                                      scene.end_time;
       {
         TimerOutput::Scope scope(timer, "mpm: setup");
         solver = std::make_unique<MaterialPointSolver>(parameters);
-        solver->setup(scene.start_time);
+        if (scene.resume)
+          resume(loop);
+        else
+          solver->setup(scene.start_time);
       }
       pcout << "Material points: " << solver->particles().n_global_particles()
             << " particles on " << solver->triangulation().n_global_active_cells()
-            << " cells; output in " << scene.output_directory << std::endl;
+            << " cells; output in " << scene.output_directory
+            << (scene.resume ? "; resumed at t = " + to_string(loop.time) + " s" : "")
+            << std::endl;
 
       Statistics statistics;
       statistics.open(scene.output_directory + "/statistics.csv", is_writer,
-                      is_writer && test_mode ? &std::cout : nullptr);
+                      is_writer && test_mode ? &std::cout : nullptr, scene.resume);
       ProgressReporter progress(is_writer && !test_mode ? &std::cout : nullptr,
-                                scene.start_time, scene.end_time);
+                                loop.time, scene.end_time);
 
-      double       max_error      = 0.;
-      double       time           = scene.start_time;
-      unsigned int step           = 0;
-      unsigned int output_index   = 0;
       double       dt             = 0.;
       const double end_time       = scene.end_time;
       const double time_tolerance = 1e-12 * (end_time - scene.start_time);
-      double       next_output    = scene.output_interval > 0. ?
-                                      scene.start_time + scene.output_interval :
-                                      end_time;
+      double      &time           = loop.time;
+      unsigned int &step          = loop.step;
+      unsigned int &output_index  = loop.output_index;
+      double      &next_output    = loop.next_output;
+      double      &max_error      = loop.max_error;
 
-      if (!test_mode)
+      if (!scene.resume)
         {
-          TimerOutput::Scope scope(timer, "mpm: output");
-          if (write_grid)
-            write_grid_state(output_index, time);
-          write_particles(output_index++, time);
+          if (!test_mode)
+            {
+              TimerOutput::Scope scope(timer, "mpm: output");
+              if (write_grid)
+                write_grid_state(output_index, time);
+              write_particles(output_index++, time);
+            }
+          add_statistics(statistics, step, time, dt);
+          statistics.end_row();
+          const auto budget = solver->energy_budget();
+          initial_energy    = budget.kinetic + budget.elastic;
+          total_mass        = solver->integrals().mass;
         }
-      add_statistics(statistics, step, time, dt);
-      statistics.end_row();
-      {
-        const auto budget = solver->energy_budget();
-        initial_energy    = budget.kinetic + budget.elastic;
-        total_mass        = solver->integrals().mass;
-      }
+      const auto wall_start      = std::chrono::steady_clock::now();
+      auto       last_checkpoint = wall_start;
 
       while (time < end_time - time_tolerance)
         {
@@ -386,6 +524,26 @@ namespace slidewave
           if (exact_solution == ExactSolution::bar_vibration)
             max_error = std::max(max_error, bar_velocity_error(time));
           progress.report(step, time, dt, at_end);
+
+          // Checkpoints: every N steps, every T minutes of wall time (rank 0's clock
+          // decides), at the end.
+          bool checkpoint = (scene.checkpoint_steps > 0 && step % scene.checkpoint_steps == 0) ||
+                            (at_end && scene.checkpoint_at_end);
+          if (scene.checkpoint_minutes > 0.)
+            {
+              const double minutes =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint)
+                  .count() / 60.;
+              checkpoint = checkpoint || dealii::Utilities::MPI::broadcast(
+                                           MPI_COMM_WORLD, minutes >= scene.checkpoint_minutes, 0);
+            }
+          if (checkpoint)
+            {
+              TimerOutput::Scope scope(timer, "mpm: checkpoint");
+              statistics.flush();
+              write_checkpoint(loop);
+              last_checkpoint = std::chrono::steady_clock::now();
+            }
         }
 
       if (exact_solution == ExactSolution::self_weight_column)

@@ -375,9 +375,8 @@ namespace slidewave
 
 
     void
-    MaterialPointSolver::setup(const double start_time)
+    MaterialPointSolver::create_coarse_grid()
     {
-      time = start_time;
       // With adaptive refinement the base grid is 2^levels times coarser than 'Cell size';
       // the cells holding material (and a buffer around them) are refined to 'Cell size'.
       const unsigned int levels = prm.adaptivity.enabled ? prm.adaptivity.levels : 0;
@@ -388,25 +387,18 @@ namespace slidewave
       dealii::GridGenerator::subdivided_hyper_rectangle(tria, subdivisions, prm.lower_left,
                                                         prm.upper_right, /*colorize=*/true);
       if (prm.adaptivity.enabled)
-        {
-          tria.signals.weight.connect(
-            [this](const dealii::Triangulation<2>::cell_iterator &cell,
-                   const dealii::Triangulation<2>::CellStatus     status) -> unsigned int {
-              return cell_weight(cell, status);
-            });
-          for (unsigned int l = 0; l < levels; ++l)
-            {
-              vertex_cells = dealii::GridTools::vertex_to_cell_map(tria);
-              const auto material = cells_near_material(/*from_regions=*/true);
-              for (const auto &cell : tria.active_cell_iterators())
-                if (cell->is_locally_owned() && material[cell->active_cell_index()])
-                  cell->set_refine_flag();
-              tria.execute_coarsening_and_refinement();
-            }
-        }
-      dofs.reinit(tria);
-      setup_grid_data();
+        tria.signals.weight.connect(
+          [this](const dealii::Triangulation<2>::cell_iterator &cell,
+                 const dealii::Triangulation<2>::CellStatus     status) -> unsigned int {
+            return cell_weight(cell, status);
+          });
+    }
 
+
+
+    void
+    MaterialPointSolver::initialize_particle_handler()
+    {
       particle_handler.initialize(tria, dealii::StaticMappingQ1<2>::mapping,
                                   property::n_properties);
       particle_handler.signals.particle_lost.connect(
@@ -414,6 +406,28 @@ namespace slidewave
                const typename dealii::Triangulation<2>::active_cell_iterator &) {
           lost_mass += particle->get_properties()[property::mass];
         });
+    }
+
+
+
+    void
+    MaterialPointSolver::setup(const double start_time)
+    {
+      time = start_time;
+      create_coarse_grid();
+      if (prm.adaptivity.enabled)
+        for (unsigned int l = 0; l < prm.adaptivity.levels; ++l)
+          {
+            vertex_cells        = dealii::GridTools::vertex_to_cell_map(tria);
+            const auto material = cells_near_material(/*from_regions=*/true);
+            for (const auto &cell : tria.active_cell_iterators())
+              if (cell->is_locally_owned() && material[cell->active_cell_index()])
+                cell->set_refine_flag();
+            tria.execute_coarsening_and_refinement();
+          }
+      dofs.reinit(tria);
+      setup_grid_data();
+      initialize_particle_handler();
       create_particles();
       // The partition of the set-up knew cells only; balance cells and points now.
       if (prm.adaptivity.enabled && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 &&
@@ -429,6 +443,48 @@ namespace slidewave
         set_geostatic_stress();
       else if (prm.initial_stress == InitialStress::gravity_loading)
         load_gravity();
+    }
+
+
+
+    void
+    MaterialPointSolver::save(const std::string &prefix)
+    {
+      particle_handler.prepare_for_serialization();
+      tria.save(prefix);
+    }
+
+
+
+    void
+    MaterialPointSolver::load(const std::string &prefix)
+    {
+      create_coarse_grid();
+      initialize_particle_handler();
+      tria.load(prefix);
+      particle_handler.deserialize();
+      dofs.reinit(tria);
+      setup_grid_data();
+    }
+
+
+
+    MaterialPointSolver::State
+    MaterialPointSolver::state() const
+    {
+      return {time, dealii::Utilities::MPI::sum(lost_mass, MPI_COMM_WORLD), n_steps};
+    }
+
+
+
+    void
+    MaterialPointSolver::set_state(const State &state)
+    {
+      time    = state.time;
+      n_steps = state.n_steps;
+      // The lost mass is a sum over ranks: rank 0 carries what was lost before.
+      lost_mass =
+        dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? state.lost_mass : 0.;
     }
 
 

@@ -20,9 +20,9 @@
 // are round-off, 1e-16 to 1e-15. (Longer runs are not a transfer check: with Q1 and USL
 // this soft, fast body has a point with a non-positive volume at step 16, where the
 // bottom of the pentagon crosses into the empty row of cells below it: the cell-crossing
-// instability of small nodal masses, which GIMP and MUSL avoid.) Run on 1 and 2 MPI ranks; the totals
-// are printed with 10 significant digits and agree (the ranks only change the order of
-// the sums). Prints on rank 0 only; exits non-zero on failure.
+// instability of small nodal masses, which GIMP and MUSL avoid.) Run on 1 and 2 MPI
+// ranks; the totals are printed with 10 significant digits and agree (the ranks only
+// change the order of the sums). Prints on rank 0 only; exits non-zero on failure.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>

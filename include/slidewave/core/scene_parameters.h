@@ -52,6 +52,12 @@ namespace slidewave
     double       output_interval     = 0.;
     unsigned int statistics_interval = 1;
 
+    /** Subsection Checkpoint. */
+    unsigned int checkpoint_steps   = 0;
+    double       checkpoint_minutes = 0.;
+    bool         checkpoint_at_end  = false;
+    bool         resume             = false;
+
     /** Deterministic, fixed-precision reporting for the test suite (subsection Test). */
     bool test_mode = false;
   };

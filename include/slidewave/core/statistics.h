@@ -26,7 +26,11 @@ namespace slidewave
      * the values but write nothing. Rows are echoed to @p echo when it is not null.
      */
     void
-    open(const std::string &filename, bool write_file, std::ostream *echo);
+    open(const std::string &filename, bool write_file, std::ostream *echo, bool append = false);
+
+    /** Writes what is buffered to the file. */
+    void
+    flush();
 
     /** Sets the value of @p column in the current row. */
     void
@@ -46,6 +50,8 @@ namespace slidewave
     std::vector<double>                          last_row;
     std::ofstream                                file;
     std::ostream                                *echo = nullptr;
+    /** Appending to an existing file: its header is there already. */
+    bool appending = false;
   };
 } // namespace slidewave
 

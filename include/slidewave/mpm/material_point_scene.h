@@ -46,6 +46,25 @@ namespace slidewave
       void
       write_grid_state(unsigned int index, double time);
 
+      /** The state of the time loop (saved in checkpoints). */
+      struct LoopState
+      {
+        double       time = 0., next_output = 0., max_error = 0.;
+        unsigned int step = 0, output_index = 0;
+      };
+
+      /** Writes OUTPUT/checkpoint atomically, keeping the previous one (collective). */
+      void
+      write_checkpoint(const LoopState &loop) const;
+
+      /** Loads the newest checkpoint instead of setting up (collective). */
+      void
+      resume(LoopState &loop);
+
+      /** Physics, grid and materials, which a checkpoint must share with the scene. */
+      std::string
+      checkpoint_signature() const;
+
       /** The run-time guards; throws RunFailure (collective). */
       void
       check_state(unsigned int step, double time) const;

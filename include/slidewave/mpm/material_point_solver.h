@@ -132,6 +132,33 @@ namespace slidewave
       void
       setup(double start_time = 0.);
 
+      /**
+       * Writes the grid and the material points (all properties) under @p prefix
+       * (collective; deal.II's triangulation files plus attached particle data).
+       */
+      void
+      save(const std::string &prefix);
+
+      /**
+       * Instead of setup(): rebuilds the grid and the material points written by save(),
+       * on any number of ranks (collective).
+       */
+      void
+      load(const std::string &prefix);
+
+      /** What else determines the future of a run: time, lost mass, step counter. */
+      struct State
+      {
+        double       time = 0., lost_mass = 0.;
+        unsigned int n_steps = 0;
+      };
+
+      State
+      state() const;
+
+      void
+      set_state(const State &state);
+
       /** The time step of Eq. 23 (or the fixed one). */
       double
       stable_time_step() const;
@@ -235,6 +262,14 @@ namespace slidewave
 
     private:
       using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+      /** The coarse grid (before any adaptive refinement) and the weight signal. */
+      void
+      create_coarse_grid();
+
+      /** Particle handler set-up and the particle_lost signal. */
+      void
+      initialize_particle_handler();
 
       void
       create_particles();

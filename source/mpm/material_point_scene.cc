@@ -364,12 +364,9 @@ namespace slidewave
       statistics.add_value("max_particle_speed", integrals.max_speed);
       statistics.add_value("runout", integrals.runout);
       statistics.add_value("max_surface_height", integrals.max_height);
-      if (parameters.adaptivity.enabled)
-        {
-          statistics.add_value("cells", static_cast<unsigned int>(
-                                          solver->triangulation().n_global_active_cells()));
-          statistics.add_value("load_imbalance", solver->load_imbalance());
-        }
+      statistics.add_value("cells", static_cast<unsigned int>(
+                                      solver->triangulation().n_global_active_cells()));
+      statistics.add_value("load_imbalance", solver->load_imbalance());
     }
 
 

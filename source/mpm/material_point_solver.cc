@@ -116,12 +116,19 @@ namespace slidewave
         prm.declare_entry("Interval", "10", Integer(1),
                           "Steps between adaptations; material must not cross the buffer in "
                           "that time.");
+      }
+      prm.leave_subsection();
+      prm.enter_subsection("Load balancing");
+      {
         prm.declare_entry("Particle weight", "100", Integer(0),
                           "Cost of a material point relative to a cell's 1000 when the grid "
-                          "is partitioned among MPI ranks.");
-        prm.declare_entry("Imbalance threshold", "1.2", Double(0.),
+                          "is partitioned among MPI ranks (the work of a rank is 1000 per "
+                          "cell plus this per point).");
+        prm.declare_entry("Imbalance threshold", "1.1", Double(0.),
                           "Repartition when the most loaded rank has more than this times "
-                          "the mean work (0: only when the grid changes).");
+                          "the mean work (0: never, except when an adaptive grid changes).");
+        prm.declare_entry("Interval", "50", Integer(1),
+                          "Steps between checks of the imbalance.");
       }
       prm.leave_subsection();
       prm.enter_subsection("Boundary conditions");
@@ -222,8 +229,6 @@ namespace slidewave
         adaptivity.levels              = prm.get_integer("Levels");
         adaptivity.buffer_cells        = prm.get_integer("Buffer cells");
         adaptivity.interval            = prm.get_integer("Interval");
-        adaptivity.particle_weight     = prm.get_integer("Particle weight");
-        adaptivity.imbalance_threshold = prm.get_double("Imbalance threshold");
         if (adaptivity.enabled)
           {
             const double base = cell_size * (1u << adaptivity.levels);
@@ -240,6 +245,14 @@ namespace slidewave
                                      to_string(upper_right[1] - lower_left[1]) + " m)");
               }
           }
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Load balancing");
+      {
+        adaptivity.particle_weight     = prm.get_integer("Particle weight");
+        adaptivity.imbalance_threshold = prm.get_double("Imbalance threshold");
+        balance_interval               = prm.get_integer("Interval");
       }
       prm.leave_subsection();
 
@@ -386,8 +399,7 @@ namespace slidewave
         static_cast<unsigned int>(std::round((prm.upper_right[1] - prm.lower_left[1]) / base))};
       dealii::GridGenerator::subdivided_hyper_rectangle(tria, subdivisions, prm.lower_left,
                                                         prm.upper_right, /*colorize=*/true);
-      if (prm.adaptivity.enabled)
-        tria.signals.weight.connect(
+      tria.signals.weight.connect(
           [this](const dealii::Triangulation<2>::cell_iterator &cell,
                  const dealii::Triangulation<2>::CellStatus     status) -> unsigned int {
             return cell_weight(cell, status);
@@ -430,15 +442,7 @@ namespace slidewave
       initialize_particle_handler();
       create_particles();
       // The partition of the set-up knew cells only; balance cells and points now.
-      if (prm.adaptivity.enabled && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 &&
-          prm.adaptivity.imbalance_threshold > 0. &&
-          load_imbalance() > prm.adaptivity.imbalance_threshold)
-        {
-          particle_handler.prepare_for_coarsening_and_refinement();
-          tria.repartition();
-          particle_handler.unpack_after_coarsening_and_refinement();
-          setup_grid_data();
-        }
+      balance_load();
       if (prm.initial_stress == InitialStress::geostatic)
         set_geostatic_stress();
       else if (prm.initial_stress == InitialStress::gravity_loading)
@@ -653,6 +657,23 @@ namespace slidewave
       const double mean = dealii::Utilities::MPI::sum(work, MPI_COMM_WORLD) /
                           dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
       return mean > 0. ? max / mean : 1.;
+    }
+
+
+
+    void
+    MaterialPointSolver::balance_load()
+    {
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ||
+          !(prm.adaptivity.imbalance_threshold > 0.) ||
+          load_imbalance() <= prm.adaptivity.imbalance_threshold)
+        return;
+      // Points travel with their cells to their new ranks.
+      particle_handler.prepare_for_coarsening_and_refinement();
+      tria.repartition();
+      particle_handler.unpack_after_coarsening_and_refinement();
+      setup_grid_data();
+      ++n_grid_changes;
     }
 
 
@@ -1334,6 +1355,8 @@ namespace slidewave
     {
       if (prm.adaptivity.enabled && n_steps > 0 && n_steps % prm.adaptivity.interval == 0)
         adapt_grid();
+      else if (n_steps > 0 && n_steps % prm.balance_interval == 0)
+        balance_load();
       ++n_steps;
       for (auto &support : supports)
         support.active = loading_gravity || time < support.release_time;

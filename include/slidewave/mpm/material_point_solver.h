@@ -87,9 +87,11 @@ namespace slidewave
         unsigned int levels              = 2;
         unsigned int buffer_cells        = 2;
         unsigned int interval            = 10;
+        /** Subsection "Load balancing" (also without adaptivity). */
         unsigned int particle_weight     = 100;
-        double       imbalance_threshold = 1.2;
+        double       imbalance_threshold = 1.1;
       } adaptivity;
+      unsigned int balance_interval = 50;
 
       InitialStress initial_stress = InitialStress::none;
       /** K0 = sigma_h / sigma_v; negative: from each material (1 - sin phi, or nu/(1-nu)). */
@@ -286,6 +288,10 @@ namespace slidewave
       unsigned int
       cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
                   dealii::Triangulation<2>::CellStatus           status) const;
+
+      /** Repartition by cells and points when the imbalance exceeds the threshold. */
+      void
+      balance_load();
 
       /** Refine where material is, coarsen where it left, repartition if needed. */
       void

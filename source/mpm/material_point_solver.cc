@@ -113,7 +113,7 @@ namespace slidewave
         prm.declare_entry("Buffer cells", "2", Integer(0, 10),
                           "Layers of fine cells kept around the material (GIMP domains and "
                           "the motion until the next adaptation reach there).");
-        prm.declare_entry("Interval", "10", Integer(1),
+        prm.declare_entry("Interval", "50", Integer(1),
                           "Steps between adaptations; material must not cross the buffer in "
                           "that time.");
       }

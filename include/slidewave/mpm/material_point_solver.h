@@ -86,7 +86,7 @@ namespace slidewave
         bool         enabled             = false;
         unsigned int levels              = 2;
         unsigned int buffer_cells        = 2;
-        unsigned int interval            = 10;
+        unsigned int interval            = 50;
         /** Subsection "Load balancing" (also without adaptivity). */
         unsigned int particle_weight     = 100;
         double       imbalance_threshold = 1.1;

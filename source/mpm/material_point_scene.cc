@@ -389,6 +389,12 @@ namespace slidewave
           {
             within = run_time_loop(timer);
           }
+        catch (const InputError &)
+          {
+            // Bad input found while setting up: nothing ran, no timings to show.
+            timer.disable_output();
+            failure = std::current_exception();
+          }
         catch (...)
           {
             failure = std::current_exception();
@@ -429,6 +435,16 @@ namespace slidewave
         else
           solver->setup(scene.start_time);
       }
+      if (parameters.fixed_time_step > 0.)
+        {
+          const double limit = solver->stability_limit();
+          if (parameters.fixed_time_step > limit)
+            throw InputError("Material points/Fixed time step",
+                             to_string(parameters.fixed_time_step),
+                             "a time step at most the stability limit of this scene, h / "
+                             "max(c_p + |v_p|) = " + to_string(limit) +
+                               " s (paper 000, Eq. 23 with alpha = 1)");
+        }
       pcout << "Material points: " << solver->particles().n_global_particles()
             << " particles on " << solver->triangulation().n_global_active_cells()
             << " cells; output in " << scene.output_directory

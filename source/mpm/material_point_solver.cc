@@ -940,7 +940,7 @@ namespace slidewave
 
 
     double
-    MaterialPointSolver::stable_time_step() const
+    MaterialPointSolver::stability_limit() const
     {
       double max_speed = 0.;
       for (const auto &particle : particle_handler)
@@ -956,9 +956,18 @@ namespace slidewave
           max_speed = std::max(max_speed, c + v);
         }
       max_speed = dealii::Utilities::MPI::max(max_speed, MPI_COMM_WORLD);
-      const double limit = max_speed > 0. ? prm.time_step_multiplier * prm.cell_size / max_speed :
-                                            std::numeric_limits<double>::infinity();
-      return prm.fixed_time_step > 0. ? prm.fixed_time_step : limit;
+      return max_speed > 0. ? prm.cell_size / max_speed : std::numeric_limits<double>::infinity();
+    }
+
+
+
+    double
+    MaterialPointSolver::stable_time_step() const
+    {
+      // A fixed time step is checked against the limit once, at the start (the scene);
+      // the run-time guards watch what happens after.
+      return prm.fixed_time_step > 0. ? prm.fixed_time_step :
+                                        prm.time_step_multiplier * stability_limit();
     }
 
 

@@ -419,6 +419,12 @@ namespace slidewave
           {
             within = run_time_loop(timer);
           }
+        catch (const InputError &)
+          {
+            // Bad input found while setting up: nothing ran, no timings to show.
+            timer.disable_output();
+            failure = std::current_exception();
+          }
         catch (...)
           {
             failure = std::current_exception();

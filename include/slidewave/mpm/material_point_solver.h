@@ -161,6 +161,10 @@ namespace slidewave
       void
       set_state(const State &state);
 
+      /** h / max_p (c_p + |v_p|): Eq. 23 with alpha = 1 (collective). */
+      double
+      stability_limit() const;
+
       /** The time step of Eq. 23 (or the fixed one). */
       double
       stable_time_step() const;

@@ -437,13 +437,14 @@ namespace slidewave
       }
       if (parameters.fixed_time_step > 0.)
         {
-          const double limit = solver->stability_limit();
+          const double limit = max_time_step_multiplier * solver->stability_limit();
           if (parameters.fixed_time_step > limit)
             throw InputError("Material points/Fixed time step",
                              to_string(parameters.fixed_time_step),
                              "a time step at most the stability limit of this scene, h / "
-                             "max(c_p + |v_p|) = " + to_string(limit) +
-                               " s (paper 000, Eq. 23 with alpha = 1)");
+                             "(sqrt(2) max(c_p + |v_p|)) = " + to_string(limit) +
+                               " s (paper 000, Eq. 23 with the largest stable alpha, "
+                               "1/sqrt(2): doc/stability.md)");
         }
       pcout << "Material points: " << solver->particles().n_global_particles()
             << " particles on " << solver->triangulation().n_global_active_cells()

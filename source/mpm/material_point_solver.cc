@@ -79,7 +79,9 @@ namespace slidewave
                         "velocities, dissipative).");
       prm.declare_entry("Time step multiplier", "0.5", Double(),
                         "alpha in dt = alpha h / max_p (c_p + |v_p|) (paper 000, Eq. 23); "
-                        "in (0, 1].");
+                        "in (0, 0.7071]: with lumped mass the highest mode of a 2D grid is "
+                        "sqrt(2) times faster than along a line, so alpha above 1/sqrt(2) is "
+                        "unstable (doc/stability.md).");
       prm.declare_entry("Fixed time step", "0", Double(0.),
                         "If > 0, this time step [s] instead of Eq. 23 (it is checked against "
                         "the stability limit at the start).");
@@ -191,7 +193,11 @@ namespace slidewave
       update_scheme = prm.get("Update scheme") == "musl" ? UpdateScheme::musl : UpdateScheme::usl;
       flip_fraction = prm.get_double("FLIP fraction");
       time_step_multiplier = prm.get_double("Time step multiplier");
-      require_in_range(path + "/Time step multiplier", time_step_multiplier, 0., false, 1., true);
+      if (!(time_step_multiplier > 0. && time_step_multiplier <= max_time_step_multiplier))
+        throw InputError(path + "/Time step multiplier", prm.get("Time step multiplier"),
+                         "a number in (0, 0.7071]: the explicit step on a 2D grid with lumped "
+                         "mass is stable only up to alpha = 1/sqrt(2) in Eq. 23 "
+                         "(doc/stability.md)");
       fixed_time_step = prm.get_double("Fixed time step");
       b_bar           = prm.get_bool("B-bar");
       const auto g    = parse_numbers(path + "/Gravity", prm.get("Gravity"), 2);
@@ -421,6 +427,24 @@ namespace slidewave
         [this](const dealii::Particles::ParticleIterator<2> &particle,
                const typename dealii::Triangulation<2>::active_cell_iterator &) {
           lost_mass += particle->get_properties()[property::mass];
+          const dealii::Point<2> x = particle->get_location();
+          const unsigned int     side =
+            x[0] < prm.lower_left[0]  ? 0 :
+            x[0] > prm.upper_right[0] ? 1 :
+            x[1] < prm.lower_left[1]  ? 2 :
+                                        3;
+          if (prm.boundaries[side] != GridBoundary::free && wall_crossing.empty())
+            {
+              static const char *const names[4] = {"left", "right", "bottom", "top"};
+              std::ostringstream       out;
+              out << "material point " << particle->get_id() << " left the domain at (" << x
+                  << ") through the " << names[side] << " side, which is "
+                  << (prm.boundaries[side] == GridBoundary::fixed ? "fixed" : "a roller")
+                  << " (points may leave only through a free side: the deformation in one "
+                     "step is larger than the point's distance to the boundary; lower 'Time "
+                     "step multiplier' or stiffen the material)";
+              wall_crossing = out.str();
+            }
         });
     }
 
@@ -1418,6 +1442,8 @@ namespace slidewave
               break;
             }
         }
+      if (problem.empty())
+        problem = wall_crossing;
       // Every rank learns the problem of the lowest rank that has one.
       const unsigned int my_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
       const unsigned int first   = dealii::Utilities::MPI::min(

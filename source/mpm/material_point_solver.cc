@@ -226,6 +226,13 @@ namespace slidewave
                                  to_string(b[0] - a[0]) + " x " + to_string(b[1] - a[1]) +
                                  " m)");
           }
+        // Every rank holds the whole coarse grid: beyond some 10^7 cells it does not fit.
+        const double n_cells = std::round((b[0] - a[0]) / cell_size) *
+                               std::round((b[1] - a[1]) / cell_size);
+        if (n_cells > 1e7)
+          throw InputError(path + "/Grid/Cell size", to_string(cell_size),
+                           "a size giving at most 10^7 grid cells (this one gives " +
+                             to_string(n_cells) + "; every rank stores the whole grid)");
       }
       prm.leave_subsection();
 

@@ -47,7 +47,9 @@ namespace slidewave
                         "none",
                         Selection("none|rectangle|polygon"),
                         "'none': this region is not used. 'rectangle': 'Rectangle'. "
-                        "'polygon': 'Polygon'.");
+                        "'polygon': 'Polygon'. Regions may overlap: a point (placed at the "
+                        "sub-cell centres) belongs to the lowest-numbered region containing "
+                        "it, so a later region fills only what earlier ones left.");
       prm.declare_entry("Rectangle", "0, 0, 1, 1", Anything(),
                         "x_min, y_min, x_max, y_max [m].");
       prm.declare_entry("Polygon", "", Anything(),

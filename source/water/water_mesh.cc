@@ -51,7 +51,9 @@ namespace slidewave
                         "'Refined bands' in finer cells.");
       prm.declare_entry("Left end", "0", Double(), "Left end of the water domain [m].");
       prm.declare_entry("Right end", "1", Double(), "Right end of the water domain [m].");
-      prm.declare_entry("Number of cells", "100", Integer(1), "Cells of a uniform mesh.");
+      prm.declare_entry("Number of cells", "100", Integer(1, 10000000),
+                        "Cells of a uniform mesh (at most 10^7: the 1D solver lives on one "
+                        "rank).");
       prm.declare_entry("Cell widths",
                         "",
                         Anything(),

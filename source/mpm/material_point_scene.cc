@@ -40,7 +40,8 @@ namespace slidewave
       prm.declare_entry("Check interval", "10", Integer(1),
                         "Every this many steps (and before every output), the material "
                         "points are checked for non-finite values and non-positive volumes, "
-                        "and the kinetic energy against the energy available (initial "
+                        "for points that left through a side that is not free, and the "
+                        "kinetic energy against the energy available (initial "
                         "kinetic + elastic energy + work of gravity); a failed check stops "
                         "the run (exit status 2) with the step, time and point.");
       prm.declare_entry("Output grid", "false", Bool(),

@@ -56,7 +56,14 @@ namespace slidewave
                             "'function': B(x) from 'Function expression'. 'table': from the "
                             "CSV file 'Table file' (x,B), interpolated linearly.");
           prm.declare_entry("Function expression", "0", Anything(),
-                            "Bed elevation B(x) [m], an expression of x.");
+                            "Bed elevation B(x) [m], an expression of x (and of t with "
+                            "'Time dependent').");
+          prm.declare_entry("Time dependent", "false", Bool(),
+                            "For 'function': the bed moves, B(x, t), re-sampled at the cell "
+                            "centres before every step at the step's end time. The water "
+                            "depth is kept, so the volume is unchanged and the free surface "
+                            "moves with the bed (as under a sliding mass in the coupled "
+                            "scenes).");
           prm.declare_entry("Function constants", "", Anything(),
                             "Constants used in the expression, e.g. 'a=0.2, b=0.05'.");
           prm.declare_entry("Table file", "", Anything(),
@@ -99,11 +106,14 @@ namespace slidewave
         {
           prm.declare_entry("Exact solution",
                             "none",
-                            Selection("none|dam break|initial state|thacker"),
+                            Selection("none|dam break|initial state|thacker|still level"),
                             "Exact solution to measure the error against at the end. 'dam "
                             "break': Stoker (wet bed) or Ritter (Right depth = 0). 'initial "
                             "state': a steady state (lake at rest, uniform flow). 'thacker': "
-                            "planar surface in a parabolic bowl.");
+                            "planar surface in a parabolic bowl. 'still level': water at rest "
+                            "under a flat free surface at the level that the water volume "
+                            "gives over the current bed, (V + sum B dx) / L, everywhere wet "
+                            "(the quasi-static limit under a slowly moving bed).");
           prm.declare_entry("Left depth", "1", Double(0.), "Dam break: depth left of the dam [m].");
           prm.declare_entry("Right depth", "0.5", Double(0.),
                             "Dam break: depth right of the dam [m]; 0 for a dry bed.");
@@ -160,6 +170,9 @@ namespace slidewave
       std::vector<double> bed(n);
       prm.enter_subsection("Bed");
       {
+        if (prm.get("Type") == "table" && prm.get_bool("Time dependent"))
+          throw InputError(section + "/Bed/Time dependent", "true",
+                           "false with 'Type = table' (a moving bed is a function B(x, t))");
         if (prm.get("Type") == "table")
           {
             const Table1D table(section + "/Bed/Table file",
@@ -173,7 +186,14 @@ namespace slidewave
                                               prm.get("Function expression"),
                                               prm.get("Function constants"));
             for (unsigned int i = 0; i < n; ++i)
-              bed[i] = expression.value(mesh.center(i));
+              bed[i] = expression.value(mesh.center(i), scene.start_time);
+            if (prm.get_bool("Time dependent"))
+              {
+                moving_bed = std::make_unique<ParsedExpression>(
+                  section + "/Bed/Function expression", prm.get("Function expression"),
+                  prm.get("Function constants"));
+                bed_work.resize(n);
+              }
           }
         for (unsigned int i = 0; i < n; ++i)
           if (!std::isfinite(bed[i]))
@@ -266,6 +286,8 @@ namespace slidewave
           }
         else if (type == "initial state")
           exact_solution = ExactSolution::initial_state;
+        else if (type == "still level")
+          exact_solution = ExactSolution::still_level;
         else if (type == "thacker")
           {
             exact_solution = ExactSolution::thacker;
@@ -296,6 +318,9 @@ namespace slidewave
           case ExactSolution::thacker:
             thacker->evaluate(x, time, depth, velocity);
             break;
+          case ExactSolution::still_level:
+            depth = std::max(still_level - water->bed()[water->mesh().cell_containing(x)], 0.);
+            break;
           default:
             {
               const unsigned int i = water->mesh().cell_containing(x);
@@ -315,6 +340,14 @@ namespace slidewave
         return true;
       const WaterMesh &mesh = water->mesh();
       const auto      &bed  = water->bed();
+      if (exact_solution == ExactSolution::still_level)
+        {
+          double bed_volume = 0.;
+          for (unsigned int i = 0; i < mesh.n_cells(); ++i)
+            bed_volume += bed[i] * mesh.width(i);
+          still_level = (water->water_volume() + bed_volume) /
+                        (mesh.interfaces().back() - mesh.interfaces().front());
+        }
       double l1_depth = 0., l1_velocity = 0., linf_eta = 0., linf_discharge = 0.;
       for (unsigned int i = 0; i < mesh.n_cells(); ++i)
         {
@@ -503,6 +536,21 @@ namespace slidewave
           if (reaches_target)
             dt = target - time;
 
+          if (moving_bed)
+            {
+              TimerOutput::Scope scope(timer, "water: bed update");
+              const double t_new = reaches_target ? target : time + dt;
+              for (unsigned int i = 0; i < bed_work.size(); ++i)
+                {
+                  bed_work[i] = moving_bed->value(water->mesh().center(i), t_new);
+                  if (!std::isfinite(bed_work[i]))
+                    throw RunFailure("at step " + std::to_string(step + 1) + ", t = " +
+                                     to_string(t_new) + " s: the moving bed B(x, t) is not "
+                                     "finite at x = " + to_string(water->mesh().center(i)) +
+                                     " m");
+                }
+              water->set_bed(bed_work);
+            }
           {
             TimerOutput::Scope scope(timer, "water: advance");
             water->advance(time, dt);

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <slidewave/core/parsed_expression.h>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/water/dam_break_solutions.h>
@@ -61,7 +62,8 @@ namespace slidewave
         none,
         dam_break,
         initial_state,
-        thacker
+        thacker,
+        still_level
       };
 
       void
@@ -83,12 +85,19 @@ namespace slidewave
       const SceneParameters          &scene;
       std::unique_ptr<ShallowWater1D> water;
 
+      /** B(x, t) of a bed that moves in time ('Bed/Time dependent'); null for a fixed bed.
+       *  Re-sampled before every step, as the coupled scenes replace the bed. */
+      std::unique_ptr<ParsedExpression> moving_bed;
+      std::vector<double>               bed_work;
+
       std::vector<double> gauge_positions;
 
       ExactSolution                   exact_solution = ExactSolution::none;
       std::optional<DamBreakSolution> dam_break;
       std::optional<ThackerSolution>  thacker;
       std::vector<double>             initial_depth, initial_discharge;
+      /** 'still level': the flat free surface the water volume gives over the current bed. */
+      mutable double still_level = 0.;
       double                          tolerance_l1_depth = 0.;
       double                          tolerance_linf     = 0.;
       double                          tolerance_volume   = 0.;

@@ -13,8 +13,8 @@ cell size   particles  grid cells   steps (full / --quick)
 ==========  =========  ===========  ========================
 2.5 mm         12,800       11,520  2000 / 2000
 1.25 mm        51,200       46,080  2000 /  500
-0.625 mm      204,800      184,320   500 /    -
-0.3125 mm     819,200      737,280   200 /    -
+0.625 mm      204,800      184,320   400 /    -
+0.3125 mm     819,200      737,280   100 /    -
 ==========  =========  ===========  ========================
 
 (``--sizes`` picks rows by particle count, ``--steps`` overrides the step counts.) The
@@ -67,6 +67,8 @@ import csv
 import glob
 import os
 import re
+import resource
+import shlex
 import shutil
 import subprocess
 import sys
@@ -81,8 +83,8 @@ REFERENCE_DT = 2.5e-5    # s, its fixed time step
 # (cell size [m], steps of the full run, steps of the quick run or None if not in it)
 SIZES = [(0.0025, 2000, 2000),
          (0.00125, 2000, 500),
-         (0.000625, 500, None),
-         (0.0003125, 200, None)]
+         (0.000625, 400, None),
+         (0.0003125, 100, None)]
 
 SHAPES = ["q1", "gimp"]
 MATERIALS = ["linear elastic", "drucker prager"]
@@ -97,11 +99,13 @@ _HEADER_RE = re.compile(r"Material points: (\d+) particles on (\d+) cells")
 _RSS_RE = re.compile(r"Maximum resident set size \(kbytes\):\s*(\d+)")
 _POINTS_RE = re.compile(rb'NumberOfPoints="(\d+)"')
 
-CSV_COLUMNS = ["case", "shape", "material", "ranks", "cell_size", "dt", "particles",
+PARTICLE_WEIGHT = "Material points/Load balancing/Particle weight"
+
+CSV_COLUMNS = ["case", "shape", "material", "ranks", "particle_weight", "cell_size", "dt", "particles",
                "cells", "steps", "advance_wall_s", "time_step_wall_s", "setup_wall_s",
                "total_wall_s", "particle_steps_per_s", "peak_rss_sum_mb",
                "peak_rss_max_rank_mb", "bytes_per_particle", "busiest_rank_share_start",
-               "busiest_rank_share_end", "status"]
+               "busiest_rank_share_end", "background_load", "status"]
 
 
 # --------------------------------------------------------------------------------------
@@ -119,6 +123,40 @@ def particles_per_rank(particle_dir, index):
     return counts
 
 
+def cpu_busy_seconds():
+    """CPU seconds spent by all processes of the machine so far (from /proc/stat)."""
+    with open("/proc/stat") as f:
+        fields = f.readline().split()[1:]
+    user, nice, system, _idle, _iowait, irq, softirq, steal = (int(v) for v in fields[:8])
+    return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
+
+
+def children_cpu_seconds():
+    """User + system CPU seconds of this script's finished child processes."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def background_load(seconds):
+    """Average number of busy cores over ``seconds`` (this script is idle meanwhile)."""
+    b0, t0 = cpu_busy_seconds(), time.perf_counter()
+    time.sleep(seconds)
+    return (cpu_busy_seconds() - b0) / (time.perf_counter() - t0)
+
+
+def wait_until_idle(max_wait_s, threshold=0.25):
+    """Wait until the machine runs less than ``threshold`` cores of other work.
+
+    Returns the background load measured last (cores). Gives up after ``max_wait_s``.
+    """
+    deadline = time.monotonic() + max_wait_s
+    load = background_load(1.0)
+    while load > threshold and time.monotonic() < deadline:
+        time.sleep(4.0)
+        load = background_load(1.0)
+    return load
+
+
 def run_slidewave(exe, prm, settings, ranks, mpirun):
     """Run ``exe`` on ``prm`` with ``--set`` overrides on ``ranks`` MPI ranks.
 
@@ -133,7 +171,7 @@ def run_slidewave(exe, prm, settings, ranks, mpirun):
     outdir = os.path.join(workdir, "out")
     cmd = []
     if ranks > 1:
-        cmd += [mpirun, "-np", str(ranks)]
+        cmd += shlex.split(mpirun) + ["-np", str(ranks)]
     cmd += ["/usr/bin/time", "-v", exe]
     for key, value in list(settings.items()) + [("Output directory", outdir)]:
         cmd += ["--set", f"{key}={value}"]
@@ -144,12 +182,17 @@ def run_slidewave(exe, prm, settings, ranks, mpirun):
               "advance_wall_s": None, "time_step_wall_s": None, "setup_wall_s": None,
               "total_wall_s": None, "peak_rss_sum_mb": None, "peak_rss_max_rank_mb": None,
               "busiest_rank_share_start": None, "busiest_rank_share_end": None,
-              "stdout": ""}
+              "background_load": None, "stdout": ""}
     try:
-        t0 = time.perf_counter()
+        t0, busy0, own0 = time.perf_counter(), cpu_busy_seconds(), children_cpu_seconds()
         proc = subprocess.run(cmd, cwd=workdir, stdout=subprocess.PIPE,
                               stderr=subprocess.STDOUT, text=True, env=env)
         result["total_wall_s"] = time.perf_counter() - t0
+        # Cores busy with other work during the run: all busy CPU time of the machine
+        # less that of the run's processes, per second of wall time.
+        result["background_load"] = max(
+            0., (cpu_busy_seconds() - busy0 - (children_cpu_seconds() - own0))
+            / result["total_wall_s"])
         out = proc.stdout
         result["stdout"] = out
         # /usr/bin/time reports "Command exited with non-zero status N" but exits 0 itself
@@ -189,10 +232,15 @@ def run_slidewave(exe, prm, settings, ranks, mpirun):
     return result
 
 
-def best_of(exe, prm, settings, ranks, mpirun, repeat):
-    """Run ``repeat`` times; keep the run with the smallest 'mpm: advance' time."""
+def best_of(exe, prm, settings, ranks, mpirun, repeat, idle_wait_s):
+    """Run ``repeat`` times; keep the run with the smallest 'mpm: advance' time.
+
+    Before each run, wait up to ``idle_wait_s`` seconds for the machine to be idle.
+    """
     best = None
     for _ in range(max(repeat, 1)):
+        if idle_wait_s > 0:
+            wait_until_idle(idle_wait_s)
         r = run_slidewave(exe, prm, settings, ranks, mpirun)
         if r["status"] != "ok":
             return r
@@ -217,8 +265,8 @@ def find_executable(path, wait_s):
 
 def column_collapse_settings(cell_size, steps, shape, material):
     """Overrides of prm/granular-column-collapse.prm for one throughput run."""
-    dt = REFERENCE_DT * cell_size / REFERENCE_CELL
-    end_time = steps * dt
+    dt = float(f"{REFERENCE_DT * cell_size / REFERENCE_CELL:.10g}")
+    end_time = float(f"{steps * dt:.12g}")
     return dt, {
         "Time/End time": repr(end_time),
         "Time/Output interval": repr(end_time),
@@ -268,23 +316,26 @@ def fmt(value, spec):
     return "-" if value is None else format(value, spec)
 
 
-TABLE_HEADER = (f"{'case':<11} {'shape':<5} {'material':<14} {'ranks':>5} {'particles':>9} "
+TABLE_HEADER = (f"{'case':<11} {'shape':<5} {'material':<14} {'ranks':>8} {'particles':>9} "
                 f"{'cells':>7} {'steps':>5} {'advance[s]':>10} {'dt[s]':>6} "
                 f"{'total[s]':>8} {'p-steps/s':>9} {'RSS[MB]':>8} {'B/particle':>10} "
-                f"{'busiest':>11}")
+                f"{'busiest':>11} {'bg':>4}")
 
 
 def table_row(row):
     """One fixed-width line of the printed table."""
     busiest = (f"{fmt(row['busiest_rank_share_start'], '.2f')}/"
                f"{fmt(row['busiest_rank_share_end'], '.2f')}")
-    line = (f"{row['case']:<11} {row['shape']:<5} {row['material']:<14} {row['ranks']:>5} "
+    ranks = str(row["ranks"]) + ("" if row.get("particle_weight") is None
+                                 else f"w{row['particle_weight']}")
+    line = (f"{row['case']:<11} {row['shape']:<5} {row['material']:<14} {ranks:>8} "
             f"{fmt(row['particles'], 'd'):>9} {fmt(row['cells'], 'd'):>7} "
             f"{fmt(row['steps'], 'd'):>5} {fmt(row['advance_wall_s'], '.4g'):>10} "
             f"{fmt(row['time_step_wall_s'], '.2g'):>6} {fmt(row['total_wall_s'], '.1f'):>8} "
             f"{fmt(row['particle_steps_per_s'], '.3e'):>9} "
             f"{fmt(row['peak_rss_sum_mb'], '.0f'):>8} "
-            f"{fmt(row['bytes_per_particle'], '.0f'):>10} {busiest:>11}")
+            f"{fmt(row['bytes_per_particle'], '.0f'):>10} {busiest:>11} "
+            f"{fmt(row['background_load'], '.1f'):>4}")
     if row["status"] != "ok":
         line += f"  FAILED: {row['status']}"
     return line
@@ -300,10 +351,11 @@ def write_csv(path, rows):
             w.writerow({k: ("" if row.get(k) is None else row[k]) for k in CSV_COLUMNS})
 
 
-def make_row(case, shape, material, ranks, cell_size, dt, r):
-    """Table row from the result ``r`` of one run."""
+def make_row(case, shape, material, ranks, cell_size, dt, r, weight=None):
+    """Table row from the result ``r`` of one run (``weight``: the 'Particle weight' set,
+    None for the scene's)."""
     row = {"case": case, "shape": shape, "material": material, "ranks": ranks,
-           "cell_size": cell_size, "dt": dt}
+           "particle_weight": weight, "cell_size": cell_size, "dt": dt}
     row.update({k: r[k] for k in CSV_COLUMNS if k in r})
     row["particle_steps_per_s"] = (
         row["particles"] * row["steps"] / row["advance_wall_s"]
@@ -319,12 +371,15 @@ def summary(rows):
     ok = [r for r in rows if r["status"] == "ok" and r["case"] == "collapse"]
     lines = []
 
-    def find(shape, material, ranks, particles):
+    def find(shape, material, ranks, particles, weight=None):
         for r in ok:
-            if (r["shape"], r["material"], r["ranks"], r["particles"]) == (
-                    shape, material, ranks, particles):
+            if (r["shape"], r["material"], r["ranks"], r["particles"],
+                    r.get("particle_weight")) == (shape, material, ranks, particles, weight):
                 return r
         return None
+
+    weights = sorted({r.get("particle_weight") for r in ok if r["ranks"] > 1},
+                     key=lambda w: -1 if w is None else w)
 
     sizes = sorted({r["particles"] for r in ok})
     if len(sizes) >= 2:
@@ -344,16 +399,18 @@ def summary(rows):
 
     lines.append("Speed-up of 2 ranks over 1 rank ('mpm: advance'):")
     for particles in sizes:
-        parts = []
-        for shape in SHAPES:
-            for material in MATERIALS:
-                r1, r2 = (find(shape, material, 1, particles),
-                          find(shape, material, 2, particles))
-                if r1 and r2:
-                    parts.append(f"{shape}/{material}: "
-                                 f"{r1['advance_wall_s'] / r2['advance_wall_s']:.2f}x")
-        if parts:
-            lines.append(f"  {particles:>7} particles: " + ", ".join(parts))
+        for weight in weights:
+            parts = []
+            for shape in SHAPES:
+                for material in MATERIALS:
+                    r1, r2 = (find(shape, material, 1, particles),
+                              find(shape, material, 2, particles, weight))
+                    if r1 and r2:
+                        parts.append(f"{shape}/{material}: "
+                                     f"{r1['advance_wall_s'] / r2['advance_wall_s']:.2f}x")
+            if parts:
+                label = "scene weight" if weight is None else f"weight {weight}"
+                lines.append(f"  {particles:>7} particles ({label}): " + ", ".join(parts))
 
     lines.append("Targets (one core, no output):")
     for shape, material, target in (("q1", "linear elastic", 4e6),
@@ -367,16 +424,19 @@ def summary(rows):
                          f"-> {text} ({'met' if best >= target else 'NOT met'})")
     if sizes and sizes[-1] >= 500000:
         n = sizes[-1]
-        parts = []
-        for shape in SHAPES:
-            for material in MATERIALS:
-                r1, r2 = find(shape, material, 1, n), find(shape, material, 2, n)
-                if r1 and r2:
-                    s = r1["advance_wall_s"] / r2["advance_wall_s"]
-                    parts.append(f"{shape}/{material} {s:.2f}x "
-                                 f"({'met' if s >= 1.8 else 'NOT met'})")
-        if parts:
-            lines.append(f"  2 ranks >= 1.8x one rank at {n} particles: " + ", ".join(parts))
+        for weight in weights:
+            parts = []
+            for shape in SHAPES:
+                for material in MATERIALS:
+                    r1, r2 = find(shape, material, 1, n), find(shape, material, 2, n, weight)
+                    if r1 and r2:
+                        s = r1["advance_wall_s"] / r2["advance_wall_s"]
+                        parts.append(f"{shape}/{material} {s:.2f}x "
+                                     f"({'met' if s >= 1.8 else 'NOT met'})")
+            if parts:
+                label = "scene weight" if weight is None else f"weight {weight}"
+                lines.append(f"  2 ranks ({label}) >= 1.8x one rank at {n} particles: "
+                             + ", ".join(parts))
     return "\n".join(lines)
 
 
@@ -396,7 +456,9 @@ def main(argv=None):
     p.add_argument("--prm", default=os.path.join(REPO, "prm", "granular-column-collapse.prm"),
                    help="column-collapse scene file (also the base of the hydrostatic "
                         "column)")
-    p.add_argument("--mpirun", default="mpirun", help="MPI launcher for the 2-rank runs")
+    p.add_argument("--mpirun", default="mpirun",
+                   help="MPI launcher (with options, e.g. 'mpirun --bind-to none') for the "
+                        "runs on more than one rank")
     p.add_argument("--wait", type=float, default=0.0,
                    help="seconds to wait for the executable to appear")
     p.add_argument("--quick", action="store_true",
@@ -410,6 +472,10 @@ def main(argv=None):
     p.add_argument("--shapes", default=",".join(SHAPES), help="shape functions")
     p.add_argument("--materials", default=",".join(MATERIALS), help="material models")
     p.add_argument("--ranks", default=",".join(map(str, RANKS)), help="MPI rank counts")
+    p.add_argument("--particle-weights", default="scene,10000",
+                   help="values of 'Material points/Load balancing/Particle weight' for the "
+                        "runs on more than one rank ('scene': the scene's, i.e. the default "
+                        "100)")
     p.add_argument("--hydrostatic", action="store_true",
                    help="run only the elastic hydrostatic column")
     p.add_argument("--no-hydrostatic", action="store_true",
@@ -418,6 +484,9 @@ def main(argv=None):
                    help="steps of the hydrostatic column")
     p.add_argument("--repeat", type=int, default=1,
                    help="repetitions of each run; the fastest time loop is reported")
+    p.add_argument("--idle-wait", type=float, default=120.0,
+                   help="before each run, wait up to this many seconds for the machine to "
+                        "be idle (less than 0.25 cores busy); 0: do not wait")
     p.add_argument("--csv", default=os.path.join(REPO, "benchmarks", "results",
                                                  "mpm_throughput.csv"),
                    help="CSV file of the table")
@@ -429,6 +498,10 @@ def main(argv=None):
     shapes = [s.strip() for s in args.shapes.split(",") if s.strip()]
     materials = [m.strip() for m in args.materials.split(",") if m.strip()]
     ranks_list = [int(r) for r in args.ranks.split(",") if r.strip()]
+    weights = [None if w.strip() == "scene" else int(w)
+               for w in args.particle_weights.split(",") if w.strip()]
+    rank_variants = [(ranks, weight) for ranks in ranks_list
+                     for weight in ([None] if ranks == 1 else weights)]
 
     sizes = []
     for cell, steps_full, steps_quick in SIZES:
@@ -461,20 +534,25 @@ def main(argv=None):
     for cell, steps in sizes:
         for shape in shapes:
             for material in materials:
-                for ranks in ranks_list:
+                for ranks, weight in rank_variants:
                     dt, settings = column_collapse_settings(cell, steps, shape, material)
+                    if weight is not None:
+                        settings[PARTICLE_WEIGHT] = weight
                     r = best_of(args.exe, args.prm, settings, ranks, args.mpirun,
-                                args.repeat)
-                    row = make_row("collapse", shape, material, ranks, cell, dt, r)
+                                args.repeat, args.idle_wait)
+                    row = make_row("collapse", shape, material, ranks, cell, dt, r, weight)
                     rows.append(row)
                     print(table_row(row), flush=True)
     if run_hydrostatic:
         for shape in shapes:
-            for ranks in ranks_list:
+            for ranks, weight in rank_variants:
                 settings = hydrostatic_settings(shape, args.hydrostatic_steps)
-                r = best_of(args.exe, args.prm, settings, ranks, args.mpirun, args.repeat)
+                if weight is not None:
+                    settings[PARTICLE_WEIGHT] = weight
+                r = best_of(args.exe, args.prm, settings, ranks, args.mpirun, args.repeat,
+                            args.idle_wait)
                 row = make_row("hydrostatic", shape, "linear elastic", ranks, 0.01,
-                               HYDROSTATIC_DT, r)
+                               HYDROSTATIC_DT, r, weight)
                 rows.append(row)
                 print(table_row(row), flush=True)
     elapsed = time.perf_counter() - t_start
@@ -486,7 +564,7 @@ def main(argv=None):
           "start-up, set-up and output; p-steps/s = particles x steps / advance; RSS = peak "
           "resident set size summed over ranks; B/particle = RSS / particles (includes "
           "the fixed overhead); busiest = share of the particles on the busiest rank at "
-          "start/end.")
+          "start/end; ranks 2w10000 = 2 ranks with 'Load balancing/Particle weight' = 10000; bg = cores busy with other processes during the run (should be ~0).")
     print(summary(rows))
     if run_hydrostatic:
         print("Reference (BENCHMARKS.md, another open-source C++ MPM): column collapse "

@@ -20,8 +20,8 @@ cell size   particles  grid cells   steps (full / --quick)
 (``--sizes`` picks rows by particle count, ``--steps`` overrides the step counts.) The
 time step is fixed and proportional to the cell size, dt = 2.5e-5 s x (h / 2.5 mm), so
 that every size runs at the Courant number of the reference set-up (c_p dt / h = 0.21;
-2.5e-5 s on the finer grids would be unstable, and 'Fixed time step' is not checked against
-the stability limit). The reference row, 2.5 mm and 2000 steps, is exactly the set-up of
+2.5e-5 s on the finer grids would be unstable, and the program refuses a 'Fixed time step'
+above the stability limit). The reference row, 2.5 mm and 2000 steps, is exactly the set-up of
 BENCHMARKS.md (dt = 2.5e-5 s, t = 0.05 s).
 
 Every size runs for each combination of

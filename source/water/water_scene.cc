@@ -6,6 +6,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/core/progress_reporter.h>
+#include <slidewave/core/timed_run.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/core/table_1d.h>
 #include <slidewave/water/water_scene.h>
@@ -437,35 +438,9 @@ namespace slidewave
     bool
     WaterScene::run()
     {
-      // The time loop runs inside a block that owns the timer, so that a run that fails
-      // still gets its timer summary and the error goes out after it.
-      const bool         writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-      dealii::ConditionalOStream timer_out(std::cout, writer && !scene.test_mode);
-      std::exception_ptr failure;
-      bool               within = false;
-      {
-        dealii::TimerOutput timer(MPI_COMM_WORLD, timer_out,
-                                  scene.test_mode ? dealii::TimerOutput::never :
-                                                    dealii::TimerOutput::summary,
-                                  dealii::TimerOutput::wall_times);
-        try
-          {
-            within = run_time_loop(timer);
-          }
-        catch (const InputError &)
-          {
-            // Bad input found while setting up: nothing ran, no timings to show.
-            timer.disable_output();
-            failure = std::current_exception();
-          }
-        catch (...)
-          {
-            failure = std::current_exception();
-          }
-      }
-      if (failure)
-        std::rethrow_exception(failure);
-      return within;
+      return run_with_timer(scene.test_mode, [this](dealii::TimerOutput &timer) {
+        return run_time_loop(timer);
+      });
     }
 
 

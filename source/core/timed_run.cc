@@ -1,0 +1,44 @@
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/timed_run.h>
+
+#include <exception>
+#include <iostream>
+
+namespace slidewave
+{
+  bool
+  run_with_timer(const bool test_mode,
+                 const std::function<bool(dealii::TimerOutput &)> &time_loop)
+  {
+    const bool writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    dealii::ConditionalOStream timer_out(std::cout, writer && !test_mode);
+    std::exception_ptr         failure;
+    bool                       within = false;
+    {
+      dealii::TimerOutput timer(MPI_COMM_WORLD, timer_out,
+                                test_mode ? dealii::TimerOutput::never :
+                                            dealii::TimerOutput::summary,
+                                dealii::TimerOutput::wall_times);
+      try
+        {
+          within = time_loop(timer);
+        }
+      catch (const InputError &)
+        {
+          // Bad input found while setting up: nothing ran, no timings to show.
+          timer.disable_output();
+          failure = std::current_exception();
+        }
+      catch (...)
+        {
+          failure = std::current_exception();
+        }
+    }
+    if (failure)
+      std::rethrow_exception(failure);
+    return within;
+  }
+} // namespace slidewave

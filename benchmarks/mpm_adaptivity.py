@@ -41,7 +41,6 @@ def run(build, name, end_time, settings):
 
 
 def plot(directory, out):
-    import numpy as np
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt

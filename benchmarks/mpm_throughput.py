@@ -63,7 +63,6 @@ Only the Python standard library is used.
 """
 
 import argparse
-import csv
 import glob
 import os
 import re
@@ -74,6 +73,9 @@ import subprocess
 import sys
 import tempfile
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from benchmark_common import fmt, find_executable, write_csv, cpu_busy_seconds, wait_until_idle  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -123,38 +125,10 @@ def particles_per_rank(particle_dir, index):
     return counts
 
 
-def cpu_busy_seconds():
-    """CPU seconds spent by all processes of the machine so far (from /proc/stat)."""
-    with open("/proc/stat") as f:
-        fields = f.readline().split()[1:]
-    user, nice, system, _idle, _iowait, irq, softirq, steal = (int(v) for v in fields[:8])
-    return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
-
-
 def children_cpu_seconds():
     """User + system CPU seconds of this script's finished child processes."""
     r = resource.getrusage(resource.RUSAGE_CHILDREN)
     return r.ru_utime + r.ru_stime
-
-
-def background_load(seconds):
-    """Average number of busy cores over ``seconds`` (this script is idle meanwhile)."""
-    b0, t0 = cpu_busy_seconds(), time.perf_counter()
-    time.sleep(seconds)
-    return (cpu_busy_seconds() - b0) / (time.perf_counter() - t0)
-
-
-def wait_until_idle(max_wait_s, threshold=0.25):
-    """Wait until the machine runs less than ``threshold`` cores of other work.
-
-    Returns the background load measured last (cores). Gives up after ``max_wait_s``.
-    """
-    deadline = time.monotonic() + max_wait_s
-    load = background_load(1.0)
-    while load > threshold and time.monotonic() < deadline:
-        time.sleep(4.0)
-        load = background_load(1.0)
-    return load
 
 
 def run_slidewave(exe, prm, settings, ranks, mpirun):
@@ -249,16 +223,6 @@ def best_of(exe, prm, settings, ranks, mpirun, repeat, idle_wait_s):
     return best
 
 
-def find_executable(path, wait_s):
-    """Return ``path`` once it is an executable file, waiting up to ``wait_s`` seconds."""
-    deadline = time.monotonic() + wait_s
-    while not (os.path.isfile(path) and os.access(path, os.X_OK)):
-        if time.monotonic() >= deadline:
-            sys.exit(f"SlideWave executable not found: {path} (option --exe)")
-        time.sleep(5)
-    return path
-
-
 # --------------------------------------------------------------------------------------
 # Scenes
 # --------------------------------------------------------------------------------------
@@ -311,11 +275,6 @@ def hydrostatic_settings(shape, steps):
 # Output
 # --------------------------------------------------------------------------------------
 
-def fmt(value, spec):
-    """Format ``value`` with ``spec``, or '-' if it is None."""
-    return "-" if value is None else format(value, spec)
-
-
 TABLE_HEADER = (f"{'case':<11} {'shape':<5} {'material':<14} {'ranks':>8} {'particles':>9} "
                 f"{'cells':>7} {'steps':>5} {'advance[s]':>10} {'dt[s]':>6} "
                 f"{'total[s]':>8} {'p-steps/s':>9} {'RSS[MB]':>8} {'B/particle':>10} "
@@ -339,16 +298,6 @@ def table_row(row):
     if row["status"] != "ok":
         line += f"  FAILED: {row['status']}"
     return line
-
-
-def write_csv(path, rows):
-    """Write the result rows to ``path`` (directories created as needed)."""
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=CSV_COLUMNS, extrasaction="ignore")
-        w.writeheader()
-        for row in rows:
-            w.writerow({k: ("" if row.get(k) is None else row[k]) for k in CSV_COLUMNS})
 
 
 def make_row(case, shape, material, ranks, cell_size, dt, r, weight=None):
@@ -570,7 +519,7 @@ def main(argv=None):
         print("Reference (BENCHMARKS.md, another open-source C++ MPM): column collapse "
               "0.69 M particle-steps/s on one core, 1.15 M on two ranks, 124 MB; "
               "hydrostatic column 1.56 M on one core, 1.94 M on two threads.")
-    write_csv(args.csv, rows)
+    write_csv(args.csv, rows, CSV_COLUMNS)
     print(f"wrote {args.csv}")
     return 1 if failed else 0
 

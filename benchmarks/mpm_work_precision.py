@@ -48,6 +48,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from benchmark_common import fmt, find_executable, write_csv, wait_until_idle  # noqa: E402
+
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 SHAPES = ["q1", "gimp"]
@@ -74,26 +77,6 @@ CSV_COLUMNS = ["amplitude", "shape", "scheme", "cell_size", "particles", "cells"
 # --------------------------------------------------------------------------------------
 # Running SlideWave
 # --------------------------------------------------------------------------------------
-
-def cpu_busy_seconds():
-    """CPU seconds spent by all processes of the machine so far (from /proc/stat)."""
-    with open("/proc/stat") as f:
-        fields = f.readline().split()[1:]
-    user, nice, system, _idle, _iowait, irq, softirq, steal = (int(v) for v in fields[:8])
-    return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
-
-
-def wait_until_idle(max_wait_s, threshold=0.25):
-    """Wait up to ``max_wait_s`` until other processes use less than ``threshold`` cores."""
-    deadline = time.monotonic() + max_wait_s
-    while True:
-        b0, t0 = cpu_busy_seconds(), time.perf_counter()
-        time.sleep(1.0)
-        load = (cpu_busy_seconds() - b0) / (time.perf_counter() - t0)
-        if load <= threshold or time.monotonic() >= deadline:
-            return load
-        time.sleep(4.0)
-
 
 def run_slidewave(exe, prm, settings):
     """Run ``exe`` on ``prm`` with ``--set`` overrides in a fresh temporary directory.
@@ -157,16 +140,6 @@ def best_of(exe, prm, settings, repeat, idle_wait_s):
     return best
 
 
-def find_executable(path, wait_s):
-    """Return ``path`` once it is an executable file, waiting up to ``wait_s`` seconds."""
-    deadline = time.monotonic() + wait_s
-    while not (os.path.isfile(path) and os.access(path, os.X_OK)):
-        if time.monotonic() >= deadline:
-            sys.exit(f"SlideWave executable not found: {path} (option --exe)")
-        time.sleep(5)
-    return path
-
-
 def bar_settings(shape, scheme, cell_size, amplitude):
     """Overrides of tests/mpm/bar_vibration.prm for one run."""
     return {
@@ -187,11 +160,6 @@ def bar_settings(shape, scheme, cell_size, amplitude):
 # Output
 # --------------------------------------------------------------------------------------
 
-def fmt(value, spec):
-    """Format ``value`` with ``spec``, or '-' if it is None."""
-    return "-" if value is None else format(value, spec)
-
-
 TABLE_HEADER = (f"{'A[m/s]':>6} {'shape':<5} {'scheme':<6} {'h[m]':>6} {'particles':>9} "
                 f"{'steps':>6} {'advance[s]':>10} {'total[s]':>8} {'error[m/s]':>10} "
                 f"{'rel.err':>9} {'order':>6}")
@@ -207,16 +175,6 @@ def table_row(row):
     if row["status"] != "ok":
         line += f"  {row['status']}"
     return line
-
-
-def write_csv(path, rows):
-    """Write the result rows to ``path`` (directories created as needed)."""
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=CSV_COLUMNS, extrasaction="ignore")
-        w.writeheader()
-        for row in rows:
-            w.writerow({k: ("" if row.get(k) is None else row[k]) for k in CSV_COLUMNS})
 
 
 def read_csv(path):
@@ -365,7 +323,7 @@ def main(argv=None):
           "advance = wall time of 'mpm: advance'; error = largest |v_cm - exact| over one "
           "period; rel.err = error / (A / (beta L)) = error / (0.63662 A); order = observed "
           "order against the previous cell size.")
-    write_csv(args.csv, rows)
+    write_csv(args.csv, rows, CSV_COLUMNS)
     print(f"wrote {args.csv}")
     if args.plot:
         plot(rows, args.png)

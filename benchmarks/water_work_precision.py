@@ -66,6 +66,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after selecting the backend)
 import matplotlib.ticker  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from benchmark_common import fmt, find_executable, write_csv  # noqa: E402
+
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -201,24 +204,9 @@ def best_of(exe, prm, settings, repeat):
     return best
 
 
-def find_executable(path, wait_s):
-    """Return ``path`` once it is an executable file, waiting up to ``wait_s`` seconds."""
-    deadline = time.monotonic() + wait_s
-    while not (os.path.isfile(path) and os.access(path, os.X_OK)):
-        if time.monotonic() >= deadline:
-            sys.exit(f"SlideWave executable not found: {path} (option --exe)")
-        time.sleep(5)
-    return path
-
-
 # --------------------------------------------------------------------------------------
 # Output
 # --------------------------------------------------------------------------------------
-
-def fmt(value, spec):
-    """Format ``value`` with ``spec``, or '-' if it is None."""
-    return "-" if value is None else format(value, spec)
-
 
 TABLE_HEADER = (f"{'flux':<4} {'order/limiter':<14} {'integrator':<13} {'cells':>6} "
                 f"{'steps':>6} {'advance[s]':>10} {'total[s]':>9} {'cell-steps/s':>12} "
@@ -240,16 +228,6 @@ def table_row(row):
     if row["status"] != "ok":
         line += f"  FAILED: {row['status']}"
     return line
-
-
-def write_csv(path, rows):
-    """Write the result rows to ``path`` (directories created as needed)."""
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=CSV_COLUMNS, extrasaction="ignore")
-        w.writeheader()
-        for row in rows:
-            w.writerow({k: ("" if row.get(k) is None else row[k]) for k in CSV_COLUMNS})
 
 
 _COLOURS = {("first order", ""): "black", ("second order", "minmod"): "tab:blue",
@@ -390,7 +368,7 @@ def work_precision(args):
           "the previous mesh; min h = smallest depth at the end; vol.bal. = largest "
           "|volume balance| / initial volume.")
 
-    write_csv(args.csv, rows)
+    write_csv(args.csv, rows, CSV_COLUMNS)
     print(f"wrote {args.csv}")
     title = (f"Stoker dam break (h_l = 1 m, h_r = 0.5 m), t = {args.end_time} s\n"
              f"cells {', '.join(map(str, cells_list))}; "

@@ -1,0 +1,58 @@
+"""Helpers shared by SlideWave's benchmark scripts (Python standard library only)."""
+import csv
+import os
+import sys
+import time
+
+
+def fmt(value, spec):
+    """Format ``value`` with ``spec``, or '-' if it is None."""
+    return "-" if value is None else format(value, spec)
+
+
+def find_executable(path, wait_s):
+    """Return ``path`` once it is an executable file, waiting up to ``wait_s`` seconds."""
+    deadline = time.monotonic() + wait_s
+    while not (os.path.isfile(path) and os.access(path, os.X_OK)):
+        if time.monotonic() >= deadline:
+            sys.exit(f"SlideWave executable not found: {path} (option --exe)")
+        time.sleep(5)
+    return path
+
+
+def write_csv(path, rows, columns):
+    """Write the result rows to ``path`` with ``columns`` (directories created as needed)."""
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore")
+        w.writeheader()
+        for row in rows:
+            w.writerow({k: ("" if row.get(k) is None else row[k]) for k in columns})
+
+
+def cpu_busy_seconds():
+    """CPU seconds spent by all processes of the machine so far (from /proc/stat)."""
+    with open("/proc/stat") as f:
+        fields = f.readline().split()[1:]
+    user, nice, system, _idle, _iowait, irq, softirq, steal = (int(v) for v in fields[:8])
+    return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
+
+
+def background_load(seconds):
+    """Average number of busy cores over ``seconds`` (the caller is idle meanwhile)."""
+    b0, t0 = cpu_busy_seconds(), time.perf_counter()
+    time.sleep(seconds)
+    return (cpu_busy_seconds() - b0) / (time.perf_counter() - t0)
+
+
+def wait_until_idle(max_wait_s, threshold=0.25):
+    """Wait until the machine runs less than ``threshold`` cores of other work.
+
+    Returns the background load measured last (cores). Gives up after ``max_wait_s``.
+    """
+    deadline = time.monotonic() + max_wait_s
+    load = background_load(1.0)
+    while load > threshold and time.monotonic() < deadline:
+        time.sleep(4.0)
+        load = background_load(1.0)
+    return load

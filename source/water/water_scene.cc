@@ -319,9 +319,6 @@ namespace slidewave
           case ExactSolution::thacker:
             thacker->evaluate(x, time, depth, velocity);
             break;
-          case ExactSolution::still_level:
-            depth = std::max(still_level - water->bed()[water->mesh().cell_containing(x)], 0.);
-            break;
           default:
             {
               const unsigned int i = water->mesh().cell_containing(x);
@@ -341,6 +338,8 @@ namespace slidewave
         return true;
       const WaterMesh &mesh = water->mesh();
       const auto      &bed  = water->bed();
+      // 'still level': the flat surface that the water volume gives over the current bed.
+      double still_level = 0.;
       if (exact_solution == ExactSolution::still_level)
         {
           double bed_volume = 0.;
@@ -353,7 +352,13 @@ namespace slidewave
       for (unsigned int i = 0; i < mesh.n_cells(); ++i)
         {
           double h_exact, q_exact;
-          exact_state(mesh.center(i), time, h_exact, q_exact);
+          if (exact_solution == ExactSolution::still_level)
+            {
+              h_exact = std::max(still_level - bed[i], 0.);
+              q_exact = 0.;
+            }
+          else
+            exact_state(mesh.center(i), time, h_exact, q_exact);
           const double u_exact = h_exact > 0. ? q_exact / h_exact : 0.;
           const double h       = water->depth()[i];
           l1_depth += std::abs(h - h_exact) * mesh.width(i);

@@ -96,8 +96,6 @@ namespace slidewave
       std::optional<DamBreakSolution> dam_break;
       std::optional<ThackerSolution>  thacker;
       std::vector<double>             initial_depth, initial_discharge;
-      /** 'still level': the flat free surface the water volume gives over the current bed. */
-      mutable double still_level = 0.;
       double                          tolerance_l1_depth = 0.;
       double                          tolerance_linf     = 0.;
       double                          tolerance_volume   = 0.;

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <utility>
 
 namespace slidewave
 {
@@ -183,16 +184,15 @@ namespace slidewave
           }
         else
           {
-            const ParsedExpression expression(section + "/Bed/Function expression",
-                                              prm.get("Function expression"),
-                                              prm.get("Function constants"));
+            auto expression =
+              std::make_unique<ParsedExpression>(section + "/Bed/Function expression",
+                                                 prm.get("Function expression"),
+                                                 prm.get("Function constants"));
             for (unsigned int i = 0; i < n; ++i)
-              bed[i] = expression.value(mesh.center(i), scene.start_time);
+              bed[i] = expression->value(mesh.center(i), scene.start_time);
             if (prm.get_bool("Time dependent"))
               {
-                moving_bed = std::make_unique<ParsedExpression>(
-                  section + "/Bed/Function expression", prm.get("Function expression"),
-                  prm.get("Function constants"));
+                moving_bed = std::move(expression);
                 bed_work.resize(n);
               }
           }

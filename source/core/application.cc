@@ -6,6 +6,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parameter_documentation.h>
 #include <slidewave/core/scene_parameters.h>
+#include <slidewave/coupling/coupled_scene.h>
 #include <slidewave/mpm/material_point_scene.h>
 #include <slidewave/water/water_scene.h>
 
@@ -171,6 +172,7 @@ namespace slidewave
     SceneParameters::declare_parameters(prm);
     water::WaterScene::declare_parameters(prm);
     mpm::MaterialPointScene::declare_parameters(prm);
+    coupling::CoupledScene::declare_parameters(prm);
   }
 
 
@@ -313,6 +315,17 @@ namespace slidewave
                   }
                 prepare_output_directory(scene.output_directory, input_file);
                 return scene_of_material_points.run() ? success : verification_error;
+              }
+            case Physics::coupled:
+              {
+                coupling::CoupledScene coupled_scene(scene, prm);
+                if (validate_only)
+                  {
+                    out << input_file << ": valid\n";
+                    return success;
+                  }
+                prepare_output_directory(scene.output_directory, input_file);
+                return coupled_scene.run() ? success : verification_error;
               }
             case Physics::none:
               break;

@@ -16,12 +16,14 @@ namespace slidewave
 
     prm.declare_entry("Physics",
                       "none",
-                      Selection("none|shallow water|material points"),
+                      Selection("none|shallow water|material points|coupled"),
                       "The physics this scene switches on. 'shallow water': the 1D "
                       "well-balanced finite-volume water column of paper 000 (subsection "
                       "'Shallow water'). 'material points': the 2D plane-strain material "
-                      "point method for soil of paper 000 (subsection 'Material points'). A "
-                      "scene must choose one.");
+                      "point method for soil of paper 000 (subsection 'Material points'). "
+                      "'coupled': both, the soil moving the water's bed and the water "
+                      "loading the soil (paper 000, Algorithm 1; subsections 'Material "
+                      "points', 'Shallow water' and 'Coupling'). A scene must choose one.");
     prm.declare_entry("Output directory",
                       "",
                       dealii::Patterns::Anything(),
@@ -107,11 +109,13 @@ namespace slidewave
       physics = Physics::shallow_water;
     else if (physics_name == "material points")
       physics = Physics::material_points;
+    else if (physics_name == "coupled")
+      physics = Physics::coupled;
     else
       throw InputError("Physics",
                        physics_name,
-                       "one of 'shallow water', 'material points' (a scene must choose its "
-                       "physics)");
+                       "one of 'shallow water', 'material points', 'coupled' (a scene must "
+                       "choose its physics)");
 
     scene_directory = std::filesystem::path(input_file).parent_path().string();
     output_directory = prm.get("Output directory");

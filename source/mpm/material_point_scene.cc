@@ -4,7 +4,6 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
-#include <deal.II/particles/data_out.h>
 
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/progress_reporter.h>
@@ -76,6 +75,7 @@ namespace slidewave
     MaterialPointScene::MaterialPointScene(const SceneParameters    &scene_parameters,
                                            dealii::ParameterHandler &prm)
       : scene(scene_parameters)
+      , particle_output(scene_parameters.output_directory)
     {
       prm.enter_subsection(section);
       parameters.parse_parameters(prm, section);
@@ -127,36 +127,6 @@ namespace slidewave
         }
       return dealii::Utilities::MPI::sum(error, MPI_COMM_WORLD) /
              dealii::Utilities::MPI::sum(norm, MPI_COMM_WORLD);
-    }
-
-
-
-    void
-    MaterialPointScene::write_particles(const unsigned int index, const double time)
-    {
-      const auto &names = property_names();
-      std::vector<std::string> data_names(names.begin(), names.end());
-      std::vector<dealii::DataComponentInterpretation::DataComponentInterpretation>
-        interpretation(property::n_properties,
-                       dealii::DataComponentInterpretation::component_is_scalar);
-      interpretation[property::velocity_x] =
-        dealii::DataComponentInterpretation::component_is_part_of_vector;
-      interpretation[property::velocity_y] =
-        dealii::DataComponentInterpretation::component_is_part_of_vector;
-      data_names[property::velocity_x] = "velocity";
-      data_names[property::velocity_y] = "velocity";
-
-      dealii::Particles::DataOut<2> data_out;
-      data_out.build_patches(solver->particles(), data_names, interpretation);
-      const std::string directory = scene.output_directory + "/particles/";
-      const std::string record    = data_out.write_vtu_with_pvtu_record(
-        directory, "particles", index, MPI_COMM_WORLD, 5);
-      particle_files.emplace_back(time, "particles/" + record);
-      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        {
-          std::ofstream pvd(scene.output_directory + "/particles.pvd");
-          dealii::DataOutBase::write_pvd_record(pvd, particle_files);
-        }
     }
 
 
@@ -237,8 +207,8 @@ namespace slidewave
               << loop.time << ' ' << loop.step << ' ' << loop.output_index << ' '
               << loop.next_output << ' ' << scene.output_interval << ' ' << loop.max_error << ' '
               << initial_energy << ' ' << total_mass << '\n'
-              << particle_files.size() << '\n';
-          for (const auto &[t, name] : particle_files)
+              << particle_output.files.size() << '\n';
+          for (const auto &[t, name] : particle_output.files)
             out << t << ' ' << name << '\n';
           out << grid_files.size() << '\n';
           for (const auto &[t, name] : grid_files)
@@ -286,8 +256,8 @@ namespace slidewave
         loop.max_error >> initial_energy >> total_mass;
       std::size_t n = 0;
       in >> n;
-      particle_files.resize(n);
-      for (auto &[t, name] : particle_files)
+      particle_output.files.resize(n);
+      for (auto &[t, name] : particle_output.files)
         in >> t >> name;
       in >> n;
       grid_files.resize(n);
@@ -450,7 +420,7 @@ namespace slidewave
               TimerOutput::Scope scope(timer, "mpm: output");
               if (write_grid)
                 write_grid_state(output_index, time);
-              write_particles(output_index++, time);
+              particle_output.write(*solver, output_index++, time);
             }
           add_statistics(statistics, step, time, dt);
           statistics.end_row();
@@ -499,7 +469,7 @@ namespace slidewave
                   TimerOutput::Scope scope(timer, "mpm: output");
                   if (write_grid)
                     write_grid_state(output_index, time);
-                  write_particles(output_index++, time);
+                  particle_output.write(*solver, output_index++, time);
                 }
               if (is_output_time)
                 next_output = scene.output_interval > 0. ? next_output + scene.output_interval :

@@ -432,7 +432,8 @@ namespace slidewave
       // cell at every sort, a fifth of the step).
       static const dealii::MappingCartesian<2> mapping;
       particle_handler.initialize(tria, mapping,
-                                  property::n_properties);
+                                  prm.point_forces ? property::n_properties_with_point_forces :
+                                                     property::n_properties);
       particle_handler.signals.particle_lost.connect(
         [this](const dealii::Particles::ParticleIterator<2> &particle,
                const typename dealii::Triangulation<2>::active_cell_iterator &) {
@@ -461,7 +462,7 @@ namespace slidewave
 
 
     void
-    MaterialPointSolver::setup(const double start_time)
+    MaterialPointSolver::setup(const double start_time, const std::function<void()> &apply_loads)
     {
       time = start_time;
       create_coarse_grid();
@@ -481,6 +482,8 @@ namespace slidewave
       create_particles();
       // The partition of the set-up knew cells only; balance cells and points now.
       balance_load();
+      if (apply_loads)
+        apply_loads();
       if (prm.initial_stress == InitialStress::geostatic)
         set_geostatic_stress();
       else if (prm.initial_stress == InitialStress::gravity_loading)
@@ -847,22 +850,28 @@ namespace slidewave
         return static_cast<unsigned int>(std::clamp(i, 0, static_cast<int>(n) - 1));
       };
       std::vector<double> mass(static_cast<std::size_t>(n_x) * n_y, 0.);
+      // A downward point force (the water on the surface) weighs like mass F / g.
+      const double g = std::abs(prm.gravity[1]);
       for (const auto &particle : particle_handler)
-        mass[static_cast<std::size_t>(bin(particle.get_location(), 0, n_x)) * n_y +
-             bin(particle.get_location(), 1, n_y)] += particle.get_properties()[property::mass];
+        {
+          const auto p = particle.get_properties();
+          mass[static_cast<std::size_t>(bin(particle.get_location(), 0, n_x)) * n_y +
+               bin(particle.get_location(), 1, n_y)] +=
+            p[property::mass] - (prm.point_forces && g > 0. ? p[property::point_force_y] / g : 0.);
+        }
       dealii::Utilities::MPI::sum(mass, MPI_COMM_WORLD, mass);
       // Weight above the bottom of each bin.
       for (unsigned int i = 0; i < n_x; ++i)
         for (int j = static_cast<int>(n_y) - 2; j >= 0; --j)
           mass[static_cast<std::size_t>(i) * n_y + j] += mass[static_cast<std::size_t>(i) * n_y + j + 1];
 
-      const double g = std::abs(prm.gravity[1]);
       for (auto &particle : particle_handler)
         {
           auto               p    = particle.get_properties();
           const unsigned int i    = bin(particle.get_location(), 0, n_x);
           const unsigned int j    = bin(particle.get_location(), 1, n_y);
-          const double       own  = p[property::mass];
+          const double       own  = p[property::mass] -
+                               (prm.point_forces && g > 0. ? p[property::point_force_y] / g : 0.);
           const double       above = (j + 1 < n_y ? mass[static_cast<std::size_t>(i) * n_y + j + 1] : 0.);
           const double       sigma_v = -g * (above + 0.5 * own) / spacing;
           const auto &material = prm.materials[static_cast<unsigned int>(p[property::material_id])];
@@ -909,6 +918,39 @@ namespace slidewave
 
 
 
+    void
+    MaterialPointSolver::set_point_forces(
+      const std::function<dealii::Tensor<1, 2>(const dealii::Particles::ParticleAccessor<2> &)>
+        &force)
+    {
+      Assert(prm.point_forces, dealii::ExcMessage("point forces were not switched on"));
+      for (auto &particle : particle_handler)
+        {
+          const dealii::Tensor<1, 2> f = force(particle);
+          auto                       p = particle.get_properties();
+          p[property::point_force_x]   = f[0];
+          p[property::point_force_y]   = f[1];
+        }
+    }
+
+
+
+    dealii::Tensor<1, 2>
+    MaterialPointSolver::total_point_force() const
+    {
+      dealii::Tensor<1, 2> total;
+      if (prm.point_forces)
+        for (const auto &particle : particle_handler)
+          {
+            const auto p = particle.get_properties();
+            total[0] += p[property::point_force_x];
+            total[1] += p[property::point_force_y];
+          }
+      return dealii::Utilities::MPI::sum(total, MPI_COMM_WORLD);
+    }
+
+
+
     std::array<double, 3>
     MaterialPointSolver::nodal_totals()
     {
@@ -925,7 +967,7 @@ namespace slidewave
     MaterialPointSolver::create_particles()
     {
       const unsigned int n      = prm.particles_per_direction;
-      std::vector<double> properties(property::n_properties, 0.);
+      std::vector<double> properties(particle_handler.n_properties_per_particle(), 0.);
       for (const auto &cell : tria.active_cell_iterators())
         {
           if (!cell->is_locally_owned())
@@ -1041,6 +1083,7 @@ namespace slidewave
         }
       NodeWeights  w;
       const double gx = prm.gravity[0], gy = prm.gravity[1];
+      const bool   point_forces = prm.point_forces;
       for (const auto &cell : tria.active_cell_iterators())
         {
           if (!cell->is_locally_owned() || particle_handler.n_particles_in_cell(cell) == 0)
@@ -1055,6 +1098,8 @@ namespace slidewave
               const double vx = p[property::velocity_x], vy = p[property::velocity_y];
               const double sxx = p[property::stress_xx], syy = p[property::stress_yy],
                            sxy = p[property::stress_xy];
+              const double fx = point_forces ? p[property::point_force_x] : 0.;
+              const double fy = point_forces ? p[property::point_force_y] : 0.;
               for (unsigned int k = 0; k < w.n; ++k)
                 {
                   const unsigned int i  = w.node[k];
@@ -1062,11 +1107,12 @@ namespace slidewave
                   nodal_mass.local_element(i) += mk;
                   momentum[0].local_element(i) += mk * vx;
                   momentum[1].local_element(i) += mk * vy;
-                  // Internal force -V sigma grad S (Eq. 16) plus gravity (Eq. 15).
+                  // Internal force -V sigma grad S (Eq. 16) plus gravity and the point
+                  // force (Eq. 15).
                   force[0].local_element(i) +=
-                    -V * (sxx * w.grad_x[k] + sxy * w.grad_y[k]) + mk * gx;
+                    -V * (sxx * w.grad_x[k] + sxy * w.grad_y[k]) + mk * gx + w.value[k] * fx;
                   force[1].local_element(i) +=
-                    -V * (sxy * w.grad_x[k] + syy * w.grad_y[k]) + mk * gy;
+                    -V * (sxy * w.grad_x[k] + syy * w.grad_y[k]) + mk * gy + w.value[k] * fy;
                 }
             }
         }

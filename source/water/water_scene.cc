@@ -8,7 +8,7 @@
 #include <slidewave/core/progress_reporter.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/core/statistics.h>
-#include <slidewave/core/table_1d.h>
+#include <slidewave/water/water_output.h>
 #include <slidewave/water/water_scene.h>
 
 #include <cmath>
@@ -51,42 +51,11 @@ namespace slidewave
         prm.leave_subsection();
 
         prm.enter_subsection("Bed");
-        {
-          prm.declare_entry("Type",
-                            "function",
-                            Selection("function|table"),
-                            "'function': B(x) from 'Function expression'. 'table': from the "
-                            "CSV file 'Table file' (x,B), interpolated linearly.");
-          prm.declare_entry("Function expression", "0", Anything(),
-                            "Bed elevation B(x) [m], an expression of x (and of t with "
-                            "'Time dependent').");
-          prm.declare_entry("Time dependent", "false", Bool(),
-                            "For 'function': the bed moves, B(x, t), re-sampled at the cell "
-                            "centres before every step at the step's end time. The water "
-                            "depth is kept, so the volume is unchanged and the free surface "
-                            "moves with the bed (as under a sliding mass in the coupled "
-                            "scenes).");
-          prm.declare_entry("Function constants", "", Anything(),
-                            "Constants used in the expression, e.g. 'a=0.2, b=0.05'.");
-          prm.declare_entry("Table file", "", Anything(),
-                            "CSV file x,B for 'table' (relative to the scene file).");
-        }
+        BedElevation::declare_parameters(prm);
         prm.leave_subsection();
 
         prm.enter_subsection("Initial condition");
-        {
-          prm.declare_entry("Variable",
-                            "water depth",
-                            Selection("water depth|free surface"),
-                            "Whether 'Function expression' gives the water depth h or the "
-                            "free-surface elevation eta = h + B (then h = max(eta - B, 0)).");
-          prm.declare_entry("Function expression", "1", Anything(),
-                            "Initial h(x) or eta(x) [m], an expression of x.");
-          prm.declare_entry("Velocity expression", "0", Anything(),
-                            "Initial velocity u(x) [m/s], an expression of x.");
-          prm.declare_entry("Function constants", "", Anything(),
-                            "Constants used in both expressions, e.g. 'x0=0.5'.");
-        }
+        InitialCondition::declare_parameters(prm);
         prm.leave_subsection();
 
         for (const std::string end : {"Left boundary", "Right boundary"})
@@ -169,70 +138,25 @@ namespace slidewave
       const unsigned int n = mesh.n_cells();
 
       // The bed, sampled at cell centres.
-      std::vector<double> bed(n);
       prm.enter_subsection("Bed");
-      {
-        if (prm.get("Type") == "table" && prm.get_bool("Time dependent"))
-          throw InputError(section + "/Bed/Time dependent", "true",
-                           "false with 'Type = table' (a moving bed is a function B(x, t))");
-        if (prm.get("Type") == "table")
-          {
-            const Table1D table(section + "/Bed/Table file",
-                                scene.resolve_path(prm.get("Table file")));
-            for (unsigned int i = 0; i < n; ++i)
-              bed[i] = table.value(mesh.center(i));
-          }
-        else
-          {
-            auto expression =
-              std::make_unique<ParsedExpression>(section + "/Bed/Function expression",
-                                                 prm.get("Function expression"),
-                                                 prm.get("Function constants"));
-            for (unsigned int i = 0; i < n; ++i)
-              bed[i] = expression->value(mesh.center(i), scene.start_time);
-            if (prm.get_bool("Time dependent"))
-              {
-                moving_bed = std::move(expression);
-                bed_work.resize(n);
-              }
-          }
-        for (unsigned int i = 0; i < n; ++i)
-          if (!std::isfinite(bed[i]))
-            throw InputError(section + "/Bed", "B(" + to_string(mesh.center(i)) + ")",
-                             "a bed elevation that is finite everywhere");
-      }
+      BedElevation bed_elevation;
+      bed_elevation.parse_parameters(prm, section + "/Bed", scene);
       prm.leave_subsection();
+      const std::vector<double> bed = bed_elevation.sample(mesh, scene.start_time);
+      if (bed_elevation.time_dependent())
+        {
+          moving_bed = std::make_unique<BedElevation>(std::move(bed_elevation));
+          bed_work.resize(n);
+        }
       water->set_bed(bed);
 
       // The initial state.
-      std::vector<double> depth(n), discharge(n);
+      std::vector<double> depth, discharge;
       prm.enter_subsection("Initial condition");
       {
-        const std::string path = section + "/Initial condition";
-        const std::string constants = prm.get("Function constants");
-        const ParsedExpression level(path + "/Function expression",
-                                     prm.get("Function expression"), constants);
-        const ParsedExpression velocity(path + "/Velocity expression",
-                                        prm.get("Velocity expression"), constants);
-        const bool is_free_surface = prm.get("Variable") == "free surface";
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const double x = mesh.center(i);
-            const double v = level.value(x, scene.start_time);
-            const double u = velocity.value(x, scene.start_time);
-            if (!std::isfinite(v) || !std::isfinite(u))
-              throw InputError(path + "/Function expression",
-                               prm.get("Function expression"),
-                               "expressions giving finite values everywhere (not at x = " +
-                                 to_string(x) + ")");
-            depth[i] = is_free_surface ? std::max(v - bed[i], 0.) : v;
-            if (depth[i] < 0.)
-              throw InputError(path + "/Function expression",
-                               prm.get("Function expression"),
-                               "a water depth >= 0 everywhere (it is " + to_string(v) +
-                                 " at x = " + to_string(x) + ")");
-            discharge[i] = depth[i] * u;
-          }
+        InitialCondition initial_condition;
+        initial_condition.parse_parameters(prm, section + "/Initial condition");
+        initial_condition.evaluate(mesh, bed, scene.start_time, depth, discharge);
       }
       prm.leave_subsection();
       water->set_state(depth, discharge);
@@ -240,32 +164,8 @@ namespace slidewave
       initial_discharge = water->discharge();
 
       prm.enter_subsection("Gauges");
-      {
-        const std::string text = prm.get("Positions");
-        for (const std::string &item : dealii::Utilities::split_string_list(text, ','))
-          {
-            double x = 0.;
-            try
-              {
-                std::size_t used = 0;
-                x = std::stod(item, &used);
-                if (used != item.size())
-                  throw std::invalid_argument("");
-              }
-            catch (const std::exception &)
-              {
-                throw InputError(section + "/Gauges/Positions", text,
-                                 "a comma-separated list of positions");
-              }
-            if (x < mesh.left_end() || x > mesh.right_end())
-              throw InputError(section + "/Gauges/Positions",
-                               item,
-                               "positions inside the water domain [" +
-                                 to_string(mesh.left_end()) + ", " +
-                                 to_string(mesh.right_end()) + "]");
-            gauge_positions.push_back(x);
-          }
-      }
+      gauges.parse_positions(section + "/Gauges/Positions", prm.get("Positions"),
+                             mesh.left_end(), mesh.right_end());
       prm.leave_subsection();
 
       prm.enter_subsection("Verification");
@@ -412,30 +312,7 @@ namespace slidewave
         return;
       char name[64];
       std::snprintf(name, sizeof(name), "/profile-%05u.csv", index);
-      std::ofstream out(water_directory + name);
-      out.precision(12);
-      out << "# time = " << time << "\nx,h,u,hu,bed,eta\n";
-      const WaterMesh &mesh = water->mesh();
-      for (unsigned int i = 0; i < mesh.n_cells(); ++i)
-        {
-          const double h = water->depth()[i];
-          const double b = water->bed()[i];
-          out << mesh.center(i) << ',' << h << ',' << water->velocity(i) << ','
-              << water->discharge()[i] << ',' << b << ',' << h + b << '\n';
-        }
-    }
-
-
-
-    void
-    WaterScene::write_gauges(const double time)
-    {
-      if (gauge_file == nullptr)
-        return;
-      *gauge_file << time;
-      for (const double x : gauge_positions)
-        *gauge_file << ',' << water->free_surface_at(x);
-      *gauge_file << '\n';
+      water::write_profile(*water, water_directory + name, time);
     }
 
 
@@ -471,16 +348,7 @@ namespace slidewave
       statistics.open(scene.output_directory + "/statistics.csv", is_writer,
                       is_writer && test_mode ? &std::cout : nullptr);
 
-      if (is_writer && !gauge_positions.empty())
-        {
-          gauge_stream = std::make_unique<std::ofstream>(water_directory + "/gauges.csv");
-          gauge_file   = gauge_stream.get();
-          gauge_file->precision(12);
-          *gauge_file << "time";
-          for (const double x : gauge_positions)
-            *gauge_file << ",eta(x=" << x << ")";
-          *gauge_file << '\n';
-        }
+      gauges.open(water_directory + "/gauges.csv", is_writer);
 
       ProgressReporter progress(is_writer && !test_mode ? &std::cout : nullptr,
                                 scene.start_time, scene.end_time);
@@ -497,7 +365,7 @@ namespace slidewave
                                    end_time;
 
       write_profile(output_index++, time);
-      write_gauges(time);
+      gauges.record(time, *water);
       add_statistics(statistics, step, time, dt);
       statistics.end_row();
 
@@ -560,7 +428,7 @@ namespace slidewave
 
           {
             TimerOutput::Scope scope(timer, "water: output");
-            write_gauges(time);
+            gauges.record(time, *water);
             const bool is_output_time = reaches_target && target == next_output;
             if (is_output_time)
               {
@@ -581,8 +449,7 @@ namespace slidewave
           progress.report(step, time, dt, time >= end_time - time_tolerance);
         }
 
-      if (gauge_file != nullptr)
-        gauge_file->flush();
+      gauges.flush();
 
       if (is_writer && !test_mode)
         std::cout << "Finished " << step << " steps; water volume changed by "

@@ -15,7 +15,8 @@ namespace slidewave
   {
     none,
     shallow_water,
-    material_points
+    material_points,
+    coupled ///< material points under shallow water (paper 000, Algorithm 1)
   };
 
   /**

@@ -7,6 +7,7 @@
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/mpm/material_point_solver.h>
+#include <slidewave/mpm/particle_output.h>
 
 #include <memory>
 #include <string>
@@ -38,9 +39,6 @@ namespace slidewave
       /** The time loop; throws RunFailure when the state becomes invalid. */
       bool
       run_time_loop(dealii::TimerOutput &timer);
-
-      void
-      write_particles(unsigned int index, double time);
 
       /** The background grid with the nodal mass and velocity of the last step. */
       void
@@ -93,7 +91,8 @@ namespace slidewave
       double        tolerance = 0.;
       SolverParameters                       parameters;
       std::unique_ptr<MaterialPointSolver>   solver;
-      std::vector<std::pair<double, std::string>> particle_files, grid_files;
+      ParticleOutput                              particle_output;
+      std::vector<std::pair<double, std::string>> grid_files;
       bool                                        write_grid = false;
       unsigned int                                check_interval = 10;
       /** Kinetic + elastic energy at the start, and the total mass (for the guards). */

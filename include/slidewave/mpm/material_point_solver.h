@@ -15,6 +15,7 @@
 #include <slidewave/mpm/shape_functions.h>
 
 #include <array>
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -109,6 +110,12 @@ namespace slidewave
 
       std::vector<materials::MaterialParameters> materials;
       std::vector<MaterialRegion>                regions;
+
+      /**
+       * Whether the material points carry point forces (property::point_force_x/y): set
+       * by scenes that load the soil surface (the coupled scenes), not a user parameter.
+       */
+      bool point_forces = false;
     };
 
 
@@ -138,9 +145,32 @@ namespace slidewave
       /**
        * Creates the grid, fills the regions with material points and sets up their
        * initial stress (at time @p start_time; gravity loading runs before it).
+       * @p apply_loads, if given, is called once the points exist and before the initial
+       * stress is set up: it sets the point forces (surface loads), which the geostatic
+       * stress then carries and gravity loading holds.
        */
       void
-      setup(double start_time = 0.);
+      setup(double start_time = 0., const std::function<void()> &apply_loads = {});
+
+      bool
+      has_point_forces() const
+      {
+        return prm.point_forces;
+      }
+
+      /**
+       * Sets the point force of every local material point to @p force(particle) [N/m];
+       * they act in every following step until set again (needs
+       * SolverParameters::point_forces).
+       */
+      void
+      set_point_forces(
+        const std::function<dealii::Tensor<1, 2>(const dealii::Particles::ParticleAccessor<2> &)>
+          &force);
+
+      /** The sum of the point forces over all points (collective). */
+      dealii::Tensor<1, 2>
+      total_point_force() const;
 
       /**
        * Writes the grid and the material points (all properties) under @p prefix

@@ -34,6 +34,17 @@ namespace slidewave
         domain_half_y,
         n_properties
       };
+
+      /**
+       * Optional: the point force on a material point [N per m of thickness], added to
+       * the nodal forces of every particle-to-grid transfer (paper 000, Eq. 15: the
+       * tractions of the water on the surface points). Stored only when a scene applies
+       * surface loads (SolverParameters::point_forces); other scenes neither allocate nor
+       * scatter it.
+       */
+      constexpr unsigned int point_force_x              = n_properties;
+      constexpr unsigned int point_force_y              = n_properties + 1;
+      constexpr unsigned int n_properties_with_point_forces = n_properties + 2;
     } // namespace property
 
     inline const std::array<std::string, property::n_properties> &

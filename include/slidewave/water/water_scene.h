@@ -4,11 +4,12 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
-#include <slidewave/core/parsed_expression.h>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/water/dam_break_solutions.h>
 #include <slidewave/water/shallow_water_1d.h>
+#include <slidewave/water/water_output.h>
+#include <slidewave/water/water_state_parameters.h>
 
 #include <memory>
 #include <optional>
@@ -70,9 +71,6 @@ namespace slidewave
       write_profile(unsigned int index, double time) const;
 
       void
-      write_gauges(double time);
-
-      void
       add_statistics(Statistics &statistics, unsigned int step, double time, double dt) const;
 
       /** Compares with the exact solution at @p time; returns false if out of tolerance. */
@@ -87,10 +85,10 @@ namespace slidewave
 
       /** B(x, t) of a bed that moves in time ('Bed/Time dependent'); null for a fixed bed.
        *  Re-sampled before every step, as the coupled scenes replace the bed. */
-      std::unique_ptr<ParsedExpression> moving_bed;
+      std::unique_ptr<BedElevation> moving_bed;
       std::vector<double>               bed_work;
 
-      std::vector<double> gauge_positions;
+      GaugeRecorder gauges;
 
       ExactSolution                   exact_solution = ExactSolution::none;
       std::optional<DamBreakSolution> dam_break;
@@ -102,8 +100,6 @@ namespace slidewave
 
       bool         is_writer = false;
       std::string  water_directory;
-      std::ostream *gauge_file = nullptr;
-      std::unique_ptr<std::ostream> gauge_stream;
       double       initial_volume = 0.;
     };
   } // namespace water

@@ -1,0 +1,118 @@
+#ifndef slidewave_coupling_soil_water_interface_h
+#define slidewave_coupling_soil_water_interface_h
+
+#include <deal.II/base/tensor.h>
+
+#include <slidewave/coupling/monotone_cubic.h>
+#include <slidewave/mpm/material_point_solver.h>
+#include <slidewave/water/shallow_water_1d.h>
+
+#include <vector>
+
+namespace slidewave
+{
+  namespace coupling
+  {
+    /**
+     * What passes between the soil (material points) and the water (1D finite volumes)
+     * across the seabed (paper 000, Eq. 10 and Algorithm 1):
+     *
+     * - soil to water: the soil surface in each column of the background grid, the top of
+     *   the highest point domain (y_p + l_p) in it; the bed of the water cells is the
+     *   higher of it and the fixed terrain. When the water cells are the grid columns the
+     *   column values are the bed; otherwise the bed is reconstructed at the water cell
+     *   centres by monotone cubic interpolation through the column centres (no overshoot
+     *   at a steep face or a corner).
+     * - water to soil: per water cell, the weight of the water column on the bed and the
+     *   Manning bed shear along it, and the hydrostatic thrust on the rising side of every
+     *   step of the bed (exact for a stepped bed); moved to the soil columns in proportion
+     *   to the overlap (conservative). In each column the weight and shear are shared by
+     *   the material points within half a point spacing of the surface, the thrust by the
+     *   points in the wet band of the face in proportion to the water pressure at their
+     *   height, as point forces. Dry cells load nothing; what falls on a column without
+     *   soil rests on the rigid floor.
+     *
+     * The water mesh and the columns are fixed at construction; per step the class
+     * allocates nothing.
+     */
+    class SoilWaterInterface
+    {
+    public:
+      /**
+       * @p columns: the interfaces of the soil columns (increasing; the water mesh's own
+       * interfaces when the water cells are the grid columns). @p terrain_at_columns and
+       * @p terrain_at_cells: the fixed bed at the column and at the water cell centres.
+       */
+      SoilWaterInterface(std::vector<double>     columns,
+                         const water::WaterMesh &water_mesh,
+                         std::vector<double>     terrain_at_columns,
+                         std::vector<double>     terrain_at_cells,
+                         double                  water_density);
+
+      /** The soil surface per column from the material points (collective). */
+      void
+      update_surface(const mpm::MaterialPointSolver &soil);
+
+      /** The bed per water cell from the last surface. */
+      const std::vector<double> &
+      bed();
+
+      /**
+       * Sets the point forces of the surface points from the water's state; @p dt is the
+       * step the water just took (the bed shear never takes more momentum than the water
+       * column has in one step). Collective.
+       */
+      void
+      apply_water_loads(mpm::MaterialPointSolver     &soil,
+                        const water::ShallowWater1D &water,
+                        double                       dt);
+
+      /** Surface height per column (-infinity where there is no soil). */
+      const std::vector<double> &
+      surface() const
+      {
+        return surface_height;
+      }
+
+      const std::vector<double> &
+      column_interfaces() const
+      {
+        return columns;
+      }
+
+      /** The total load the water puts on the soil (the last apply_water_loads). */
+      dealii::Tensor<1, 2>
+      load_on_soil() const
+      {
+        return total_load;
+      }
+
+    private:
+      unsigned int
+      column_of(double x) const;
+
+      std::vector<double> columns, column_centers, cell_centers;
+      std::vector<double> terrain_at_columns, terrain_at_cells;
+      double              water_density;
+      /** The columns are the water cells: no reconstruction, no transfer. */
+      bool same_cells;
+
+      /** Overlap of water cell i with columns: (column, fraction of the cell) in
+       *  overlap[overlap_start[i] .. overlap_start[i+1]). */
+      std::vector<unsigned int> overlap_start, overlap_column;
+      std::vector<double>       overlap_fraction;
+
+      std::vector<double>               surface_height, samples, bed_elevation;
+      std::vector<double>               column_load_x, column_load_y, cell_load_x, cell_load_y;
+      /** Thrust on the faces of the bed and the wet band [bottom, water level] of the
+       *  face, per water cell and per column. */
+      std::vector<double> cell_thrust, cell_band_bottom, cell_band_level;
+      std::vector<double> column_thrust, band_bottom, band_level, face_weights;
+      std::vector<unsigned int>         surface_points;
+      MonotoneCubic                     reconstruction;
+      dealii::Tensor<1, 2>              total_load;
+    };
+  } // namespace coupling
+} // namespace slidewave
+
+#endif

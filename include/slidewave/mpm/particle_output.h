@@ -1,0 +1,36 @@
+#ifndef slidewave_mpm_particle_output_h
+#define slidewave_mpm_particle_output_h
+
+#include <slidewave/mpm/material_point_solver.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    /**
+     * The material points as a ParaView time series: OUTPUT/particles/particles_NNNNN.pvtu
+     * (every property by name, velocity and point forces as vectors) and the
+     * OUTPUT/particles.pvd record that lists them (collective).
+     */
+    class ParticleOutput
+    {
+    public:
+      explicit ParticleOutput(std::string output_directory);
+
+      void
+      write(const MaterialPointSolver &solver, unsigned int index, double time);
+
+      /** (time, file) of every record so far (saved and restored by checkpoints). */
+      std::vector<std::pair<double, std::string>> files;
+
+    private:
+      std::string directory;
+    };
+  } // namespace mpm
+} // namespace slidewave
+
+#endif

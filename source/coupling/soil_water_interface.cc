@@ -1,0 +1,252 @@
+#include <deal.II/base/mpi.h>
+
+#include <slidewave/coupling/soil_water_interface.h>
+#include <slidewave/mpm/particle_properties.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace slidewave
+{
+  namespace coupling
+  {
+    SoilWaterInterface::SoilWaterInterface(std::vector<double>     column_interfaces,
+                                           const water::WaterMesh &water_mesh,
+                                           std::vector<double>     terrain_columns,
+                                           std::vector<double>     terrain_cells,
+                                           const double            density)
+      : columns(std::move(column_interfaces))
+      , terrain_at_columns(std::move(terrain_columns))
+      , terrain_at_cells(std::move(terrain_cells))
+      , water_density(density)
+      , same_cells(columns == water_mesh.interfaces())
+    {
+      const unsigned int n_columns = columns.size() - 1;
+      const unsigned int n_cells   = water_mesh.n_cells();
+      for (unsigned int c = 0; c < n_columns; ++c)
+        column_centers.push_back(0.5 * (columns[c] + columns[c + 1]));
+      for (unsigned int i = 0; i < n_cells; ++i)
+        cell_centers.push_back(water_mesh.center(i));
+
+      // Which part of each water cell lies over which column.
+      overlap_start.push_back(0);
+      for (unsigned int i = 0; i < n_cells; ++i)
+        {
+          const double a = water_mesh.interfaces()[i], b = water_mesh.interfaces()[i + 1];
+          for (unsigned int c = 0; c < n_columns; ++c)
+            {
+              const double overlap = std::min(b, columns[c + 1]) - std::max(a, columns[c]);
+              if (overlap > 1e-12 * (b - a))
+                {
+                  overlap_column.push_back(c);
+                  overlap_fraction.push_back(overlap / (b - a));
+                }
+            }
+          overlap_start.push_back(overlap_column.size());
+        }
+
+      surface_height.assign(n_columns, -std::numeric_limits<double>::infinity());
+      samples.resize(n_columns);
+      bed_elevation.resize(n_cells);
+      column_load_x.resize(n_columns);
+      column_load_y.resize(n_columns);
+      cell_load_x.resize(n_cells);
+      cell_load_y.resize(n_cells);
+      cell_thrust.resize(n_cells);
+      cell_band_bottom.resize(n_cells);
+      cell_band_level.resize(n_cells);
+      column_thrust.resize(n_columns);
+      band_bottom.resize(n_columns);
+      band_level.resize(n_columns);
+      face_weights.resize(n_columns);
+      surface_points.resize(n_columns);
+    }
+
+
+
+    unsigned int
+    SoilWaterInterface::column_of(const double x) const
+    {
+      const auto k = std::upper_bound(columns.begin(), columns.end(), x) - columns.begin();
+      return static_cast<unsigned int>(
+        std::clamp<long>(k - 1, 0, static_cast<long>(columns.size()) - 2));
+    }
+
+
+
+    void
+    SoilWaterInterface::update_surface(const mpm::MaterialPointSolver &soil)
+    {
+      using namespace mpm;
+      std::fill(surface_height.begin(), surface_height.end(),
+                -std::numeric_limits<double>::infinity());
+      for (const auto &particle : soil.particles())
+        {
+          const double top = particle.get_location()[1] +
+                             particle.get_properties()[property::domain_half_y];
+          double &height = surface_height[column_of(particle.get_location()[0])];
+          height         = std::max(height, top);
+        }
+      dealii::Utilities::MPI::max(surface_height, MPI_COMM_WORLD, surface_height);
+    }
+
+
+
+    const std::vector<double> &
+    SoilWaterInterface::bed()
+    {
+      if (same_cells)
+        for (unsigned int i = 0; i < bed_elevation.size(); ++i)
+          bed_elevation[i] = std::max(surface_height[i], terrain_at_cells[i]);
+      else
+        {
+          for (unsigned int c = 0; c < samples.size(); ++c)
+            samples[c] = std::max(surface_height[c], terrain_at_columns[c]);
+          reconstruction.reinit(column_centers, samples);
+          for (unsigned int i = 0; i < bed_elevation.size(); ++i)
+            {
+              const double x = cell_centers[i];
+              bed_elevation[i] =
+                x < columns.front() || x > columns.back() ?
+                  terrain_at_cells[i] :
+                  std::max(reconstruction.value(x), terrain_at_cells[i]);
+            }
+        }
+      return bed_elevation;
+    }
+
+
+
+    void
+    SoilWaterInterface::apply_water_loads(mpm::MaterialPointSolver     &soil,
+                                          const water::ShallowWater1D &water,
+                                          const double                 dt)
+    {
+      using namespace mpm;
+      const auto        &mesh = water.mesh();
+      const auto        &h    = water.depth();
+      const auto        &B    = water.bed();
+      const double       g    = water.parameters().gravity;
+      const double       n_m  = water.parameters().manning_coefficient;
+      const double       dry  = water.parameters().dry_depth;
+      const double       rho  = water_density;
+      const unsigned int n    = mesh.n_cells();
+
+      // Per water cell: the weight of the water on the bed and the bed shear.
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          cell_load_x[i] = 0.;
+          cell_load_y[i] = 0.;
+          if (h[i] <= dry)
+            continue;
+          const double dx = mesh.width(i);
+          const double u  = water.velocity(i);
+          // Manning (Eq. 10), at most the momentum of the column over one step.
+          double tau = rho * g * n_m * n_m * u * std::abs(u) / std::cbrt(h[i]);
+          if (dt > 0.)
+            tau = std::clamp(tau, -rho * h[i] * std::abs(u) / dt, rho * h[i] * std::abs(u) / dt);
+          const unsigned int l = i > 0 ? i - 1 : i, r = i + 1 < n ? i + 1 : i;
+          const double       slope =
+            r > l ? (B[r] - B[l]) / (mesh.center(r) - mesh.center(l)) : 0.;
+          cell_load_x[i] = tau * dx;
+          cell_load_y[i] = -rho * g * h[i] * dx + tau * slope * dx;
+        }
+      // The thrust of the water against each step of the bed, on the higher side: the
+      // hydrostatic pressure of the lower cell's water integrated over the step's height,
+      // borne by the soil in the wet band of the face, [B_low, eta_low].
+      std::fill(cell_thrust.begin(), cell_thrust.end(), 0.);
+      std::fill(cell_band_bottom.begin(), cell_band_bottom.end(),
+                std::numeric_limits<double>::infinity());
+      std::fill(cell_band_level.begin(), cell_band_level.end(),
+                -std::numeric_limits<double>::infinity());
+      for (unsigned int i = 0; i + 1 < n; ++i)
+        {
+          const bool         rises = B[i + 1] > B[i];
+          const unsigned int low = rises ? i : i + 1, high = rises ? i + 1 : i;
+          if (h[low] <= dry)
+            continue;
+          const double eta   = h[low] + B[low];
+          const double above = std::max(eta - B[high], 0.);
+          const double thrust = 0.5 * rho * g * (h[low] * h[low] - above * above);
+          cell_thrust[high] += rises ? thrust : -thrust;
+          cell_band_bottom[high] = std::min(cell_band_bottom[high], B[low]);
+          cell_band_level[high]  = std::max(cell_band_level[high], eta);
+        }
+
+      // To the columns (in proportion to the overlap).
+      std::fill(column_load_x.begin(), column_load_x.end(), 0.);
+      std::fill(column_load_y.begin(), column_load_y.end(), 0.);
+      std::fill(column_thrust.begin(), column_thrust.end(), 0.);
+      std::fill(band_bottom.begin(), band_bottom.end(), std::numeric_limits<double>::infinity());
+      std::fill(band_level.begin(), band_level.end(), -std::numeric_limits<double>::infinity());
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int e = overlap_start[i]; e < overlap_start[i + 1]; ++e)
+          {
+            const unsigned int c = overlap_column[e];
+            column_load_x[c] += overlap_fraction[e] * cell_load_x[i];
+            column_load_y[c] += overlap_fraction[e] * cell_load_y[i];
+            if (cell_thrust[i] != 0.)
+              {
+                column_thrust[c] += overlap_fraction[e] * cell_thrust[i];
+                band_bottom[c] = std::min(band_bottom[c], cell_band_bottom[i]);
+                band_level[c]  = std::max(band_level[c], cell_band_level[i]);
+              }
+          }
+
+      // The surface points of each column (within half a point spacing of the top) share
+      // its weight and shear; the points in the wet band of a face share its thrust in
+      // proportion to the water pressure at their height.
+      const auto column_of_point = [&](const auto &particle) {
+        return column_of(particle.get_location()[0]);
+      };
+      const auto is_surface_point = [&](const auto &particle, const unsigned int column) {
+        const double l_y = particle.get_properties()[property::domain_half_y];
+        return particle.get_location()[1] + l_y >= surface_height[column] - l_y;
+      };
+      const auto face_weight = [&](const auto &particle, const unsigned int column) {
+        const double y = particle.get_location()[1];
+        return column_thrust[column] != 0. && y >= band_bottom[column] ?
+                 std::max(band_level[column] - y, 0.) :
+                 0.;
+      };
+      std::fill(surface_points.begin(), surface_points.end(), 0u);
+      std::fill(face_weights.begin(), face_weights.end(), 0.);
+      for (const auto &particle : soil.particles())
+        {
+          const unsigned int column = column_of_point(particle);
+          if (is_surface_point(particle, column))
+            ++surface_points[column];
+          face_weights[column] += face_weight(particle, column);
+        }
+      dealii::Utilities::MPI::sum(surface_points, MPI_COMM_WORLD, surface_points);
+      dealii::Utilities::MPI::sum(face_weights, MPI_COMM_WORLD, face_weights);
+      // A face too low to hold a point: its thrust goes to the surface points.
+      for (unsigned int c = 0; c < surface_points.size(); ++c)
+        if (column_thrust[c] != 0. && !(face_weights[c] > 0.))
+          {
+            column_load_x[c] += column_thrust[c];
+            column_thrust[c] = 0.;
+          }
+
+      soil.set_point_forces([&](const dealii::Particles::ParticleAccessor<2> &particle) {
+        const unsigned int   column = column_of_point(particle);
+        dealii::Tensor<1, 2> force;
+        if (is_surface_point(particle, column))
+          {
+            force[0] = column_load_x[column] / surface_points[column];
+            force[1] = column_load_y[column] / surface_points[column];
+          }
+        if (column_thrust[column] != 0.)
+          force[0] += column_thrust[column] * face_weight(particle, column) / face_weights[column];
+        return force;
+      });
+
+      total_load = dealii::Tensor<1, 2>();
+      for (unsigned int c = 0; c < surface_points.size(); ++c)
+        if (surface_points[c] > 0)
+          total_load +=
+            dealii::Tensor<1, 2>({column_load_x[c] + column_thrust[c], column_load_y[c]});
+    }
+  } // namespace coupling
+} // namespace slidewave

@@ -302,14 +302,17 @@ namespace slidewave
                                  const unsigned int step,
                                  const double       time,
                                  const double       dt,
-                                 const unsigned int substeps) const
+                                 const unsigned int soil_steps,
+                                 const unsigned int water_steps) const
     {
       const auto   integrals = soil->integrals();
       const double volume    = water->water_volume();
       statistics.add_value("time", time);
       statistics.add_value("step", step);
       statistics.add_value("dt", dt);
-      statistics.add_value("substeps", substeps);
+      // Steps of each solver in this coupled step (more than one when it sub-cycles).
+      statistics.add_value("soil_steps", soil_steps);
+      statistics.add_value("water_steps", water_steps);
       statistics.add_value("runout", integrals.runout - initial_toe);
       statistics.add_value("max_free_surface", water->max_free_surface());
       statistics.add_value("max_soil_speed", integrals.max_speed);
@@ -417,7 +420,7 @@ namespace slidewave
         }
       ++output_index;
       gauges.record(time, *water);
-      add_statistics(statistics, step, time, 0., 0);
+      add_statistics(statistics, step, time, 0., 0, 0);
       statistics.end_row();
 
       while (time < end_time - time_tolerance)
@@ -511,7 +514,7 @@ namespace slidewave
               }
             if (reports)
               {
-                add_statistics(statistics, step, time, dt, std::max(n_soil, n_water));
+                add_statistics(statistics, step, time, dt, n_soil, n_water);
                 statistics.end_row();
               }
           }

@@ -98,7 +98,7 @@ namespace slidewave
 
       void
       add_statistics(Statistics &statistics, unsigned int step, double time, double dt,
-                     unsigned int substeps) const;
+                     unsigned int soil_steps, unsigned int water_steps) const;
 
       void
       write_output(unsigned int index, double time);

@@ -45,7 +45,9 @@ def run(build, scene, directory, keep, *settings):
 
 
 def snapshots(plt, name, directory, times, label, out):
-    fig, axes = plt.subplots(len(times), 1, figsize=(9, 1.75 * len(times) + 0.6),
+    top = 1.7  # the highest surface of the first run of each scene is 1.5 m
+    fig, axes = plt.subplots(len(times), 1, figsize=(9, (0.8 * 9 * top / 8 + 0.45) * len(times)
+                                                     + 0.6),
                              sharex=True, constrained_layout=True)
     for ax, t in zip(axes, times):
         index = int(round(t / 0.25))
@@ -63,7 +65,7 @@ def snapshots(plt, name, directory, times, label, out):
         ax.set_title("t = %.2f s" % t, fontsize=9, loc="left")
         ax.set_aspect("equal")
         ax.set_xlim(0, 8)
-        ax.set_ylim(0, 3.1 if name == "dam-break" else 2.2)
+        ax.set_ylim(0, top)
         ax.set_ylabel("y [m]")
     axes[-1].set_xlabel("x [m]")
     fig.colorbar(sc, ax=axes, label="vertical stress $\\sigma_{yy}$ [kPa]", shrink=0.7)

@@ -46,6 +46,14 @@ namespace slidewave
                         "'water mesh': the cells of 'Shallow water/Mesh'; the bed is "
                         "reconstructed on them by monotone cubic interpolation through the "
                         "column surfaces.");
+      prm.declare_entry("Soil surface", "envelope", Selection("envelope|top"),
+                        "How the soil makes the water's bed in each grid column. 'top': the "
+                        "top of the highest point domain in the column, max (y_p + l_p); it "
+                        "jumps by the height of a face when the first point enters a column. "
+                        "'envelope': the mean across the column of the upper envelope of the "
+                        "point domains (8 samples per column; the grid's floor where there "
+                        "is no soil): the top where the soil fills the column, and growing "
+                        "continuously as a face moves into a column.");
       prm.declare_entry("Water loads on soil", "true", Bool(),
                         "Whether the water's pressure and bed shear act on the soil (false: "
                         "one-way coupling, the soil moves the water only).");
@@ -79,6 +87,8 @@ namespace slidewave
       water_density    = prm.get_double("Water density");
       water_cells      = prm.get("Water cells") == "grid columns" ? WaterCells::grid_columns :
                                                                     WaterCells::water_mesh;
+      soil_surface     = prm.get("Soil surface") == "top" ? SoilSurface::top :
+                                                            SoilSurface::envelope;
       loads_on_soil    = prm.get_bool("Water loads on soil");
       maximum_substeps = prm.get_integer("Maximum substeps");
       if (!(water_density > 0.))
@@ -224,7 +234,9 @@ namespace slidewave
                                                       boundaries[1]);
       interface = std::make_unique<SoilWaterInterface>(columns, mesh, terrain_at_columns,
                                                        terrain.sample(mesh, scene.start_time),
-                                                       coupling.water_density);
+                                                       coupling.water_density,
+                                                       coupling.soil_surface,
+                                                       soil_parameters.lower_left[1]);
       set_initial_water();
       if (coupling.loads_on_soil)
         interface->apply_water_loads(*soil, *water, 0.);

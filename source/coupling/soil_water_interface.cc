@@ -15,11 +15,15 @@ namespace slidewave
                                            const water::WaterMesh &water_mesh,
                                            std::vector<double>     terrain_columns,
                                            std::vector<double>     terrain_cells,
-                                           const double            density)
+                                           const double            density,
+                                           const SoilSurface       surface_kind,
+                                           const double            grid_floor)
       : columns(std::move(column_interfaces))
       , terrain_at_columns(std::move(terrain_columns))
       , terrain_at_cells(std::move(terrain_cells))
       , water_density(density)
+      , surface_definition(surface_kind)
+      , floor(grid_floor)
       , same_cells(columns == water_mesh.interfaces())
     {
       const unsigned int n_columns = columns.size() - 1;
@@ -48,6 +52,12 @@ namespace slidewave
 
       surface_height.assign(n_columns, -std::numeric_limits<double>::infinity());
       samples.resize(n_columns);
+      coverage.resize(n_columns);
+      if (surface_definition == SoilSurface::envelope)
+        {
+          soil_height.resize(n_columns);
+          envelope.resize(n_columns * samples_per_column);
+        }
       bed_elevation.resize(n_cells);
       column_load_x.resize(n_columns);
       column_load_y.resize(n_columns);
@@ -60,7 +70,7 @@ namespace slidewave
       band_bottom.resize(n_columns);
       band_level.resize(n_columns);
       face_weights.resize(n_columns);
-      surface_points.resize(n_columns);
+      surface_weights.resize(n_columns);
     }
 
 
@@ -75,20 +85,81 @@ namespace slidewave
 
 
 
+    template <typename Function>
+    inline void
+    SoilWaterInterface::for_each_column_of(const double x, const double l, const Function &f) const
+    {
+      // A point acts on every column its domain [x - l, x + l] overlaps, in proportion to
+      // the overlap (a domain without width: the column it is in).
+      if (!(l > 0.))
+        {
+          f(column_of(x), 1.);
+          return;
+        }
+      for (unsigned int c = column_of(x - l); c + 1 < columns.size() && columns[c] < x + l; ++c)
+        {
+          const double overlap = std::min(x + l, columns[c + 1]) - std::max(x - l, columns[c]);
+          if (overlap > 0.)
+            f(c, overlap / (2. * l));
+        }
+    }
+
+
+
     void
     SoilWaterInterface::update_surface(const mpm::MaterialPointSolver &soil)
     {
       using namespace mpm;
       std::fill(surface_height.begin(), surface_height.end(),
                 -std::numeric_limits<double>::infinity());
+      if (surface_definition == SoilSurface::envelope)
+        std::fill(envelope.begin(), envelope.end(), -std::numeric_limits<double>::infinity());
       for (const auto &particle : soil.particles())
         {
-          const double top = particle.get_location()[1] +
-                             particle.get_properties()[property::domain_half_y];
-          double &height = surface_height[column_of(particle.get_location()[0])];
-          height         = std::max(height, top);
+          const auto   x   = particle.get_location();
+          const auto   p   = particle.get_properties();
+          const double top = x[1] + p[property::domain_half_y];
+          const double l   = p[property::domain_half_x];
+          for_each_column_of(x[0], l, [&](const unsigned int c, const double) {
+            surface_height[c] = std::max(surface_height[c], top);
+            if (surface_definition == SoilSurface::envelope)
+              {
+                // The samples of the column under the point's domain.
+                const double w = (columns[c + 1] - columns[c]) / samples_per_column;
+                const int    first =
+                  std::max(0, static_cast<int>(std::ceil((x[0] - l - columns[c]) / w - 0.5)));
+                const int last = std::min(static_cast<int>(samples_per_column) - 1,
+                                          static_cast<int>(std::floor((x[0] + l - columns[c]) / w - 0.5)));
+                for (int k = first; k <= last; ++k)
+                  {
+                    double &e = envelope[c * samples_per_column + k];
+                    e         = std::max(e, top);
+                  }
+              }
+          });
         }
       dealii::Utilities::MPI::max(surface_height, MPI_COMM_WORLD, surface_height);
+      if (surface_definition == SoilSurface::envelope)
+        {
+          dealii::Utilities::MPI::max(envelope, MPI_COMM_WORLD, envelope);
+          // The mean of the envelope over the column, the floor where there is no soil.
+          for (unsigned int c = 0; c < soil_height.size(); ++c)
+            {
+              double       sum     = 0.;
+              unsigned int covered = 0;
+              for (unsigned int k = 0; k < samples_per_column; ++k)
+                {
+                  const double e = envelope[c * samples_per_column + k];
+                  sum += std::max(e, floor);
+                  covered += e > -std::numeric_limits<double>::infinity();
+                }
+              soil_height[c] = sum / samples_per_column;
+              coverage[c]    = static_cast<double>(covered) / samples_per_column;
+            }
+        }
+      else
+        for (unsigned int c = 0; c < coverage.size(); ++c)
+          coverage[c] = surface_height[c] > -std::numeric_limits<double>::infinity() ? 1. : 0.;
     }
 
 
@@ -98,11 +169,11 @@ namespace slidewave
     {
       if (same_cells)
         for (unsigned int i = 0; i < bed_elevation.size(); ++i)
-          bed_elevation[i] = std::max(surface_height[i], terrain_at_cells[i]);
+          bed_elevation[i] = std::max(soil_bed()[i], terrain_at_cells[i]);
       else
         {
           for (unsigned int c = 0; c < samples.size(); ++c)
-            samples[c] = std::max(surface_height[c], terrain_at_columns[c]);
+            samples[c] = std::max(soil_bed()[c], terrain_at_columns[c]);
           reconstruction.reinit(column_centers, samples);
           for (unsigned int i = 0; i < bed_elevation.size(); ++i)
             {
@@ -183,9 +254,10 @@ namespace slidewave
       for (unsigned int i = 0; i < n; ++i)
         for (unsigned int e = overlap_start[i]; e < overlap_start[i + 1]; ++e)
           {
+            // Weight and shear on the part of the column that is soil.
             const unsigned int c = overlap_column[e];
-            column_load_x[c] += overlap_fraction[e] * cell_load_x[i];
-            column_load_y[c] += overlap_fraction[e] * cell_load_y[i];
+            column_load_x[c] += coverage[c] * overlap_fraction[e] * cell_load_x[i];
+            column_load_y[c] += coverage[c] * overlap_fraction[e] * cell_load_y[i];
             if (cell_thrust[i] != 0.)
               {
                 column_thrust[c] += overlap_fraction[e] * cell_thrust[i];
@@ -196,13 +268,11 @@ namespace slidewave
 
       // The surface points of each column (within half a point spacing of the top) share
       // its weight and shear; the points in the wet band of a face share its thrust in
-      // proportion to the water pressure at their height.
-      const auto column_of_point = [&](const auto &particle) {
-        return column_of(particle.get_location()[0]);
-      };
-      const auto is_surface_point = [&](const auto &particle, const unsigned int column) {
+      // proportion to the water pressure at their height; both in proportion to the part
+      // of the point's domain over the column.
+      const auto surface_weight = [&](const auto &particle, const unsigned int column) {
         const double l_y = particle.get_properties()[property::domain_half_y];
-        return particle.get_location()[1] + l_y >= surface_height[column] - l_y;
+        return particle.get_location()[1] + l_y >= surface_height[column] - l_y ? 1. : 0.;
       };
       const auto face_weight = [&](const auto &particle, const unsigned int column) {
         const double y = particle.get_location()[1];
@@ -210,19 +280,19 @@ namespace slidewave
                  std::max(band_level[column] - y, 0.) :
                  0.;
       };
-      std::fill(surface_points.begin(), surface_points.end(), 0u);
+      std::fill(surface_weights.begin(), surface_weights.end(), 0.);
       std::fill(face_weights.begin(), face_weights.end(), 0.);
       for (const auto &particle : soil.particles())
-        {
-          const unsigned int column = column_of_point(particle);
-          if (is_surface_point(particle, column))
-            ++surface_points[column];
-          face_weights[column] += face_weight(particle, column);
-        }
-      dealii::Utilities::MPI::sum(surface_points, MPI_COMM_WORLD, surface_points);
+        for_each_column_of(particle.get_location()[0],
+                           particle.get_properties()[property::domain_half_x],
+                           [&](const unsigned int c, const double fraction) {
+                             surface_weights[c] += fraction * surface_weight(particle, c);
+                             face_weights[c] += fraction * face_weight(particle, c);
+                           });
+      dealii::Utilities::MPI::sum(surface_weights, MPI_COMM_WORLD, surface_weights);
       dealii::Utilities::MPI::sum(face_weights, MPI_COMM_WORLD, face_weights);
       // A face too low to hold a point: its thrust goes to the surface points.
-      for (unsigned int c = 0; c < surface_points.size(); ++c)
+      for (unsigned int c = 0; c < surface_weights.size(); ++c)
         if (column_thrust[c] != 0. && !(face_weights[c] > 0.))
           {
             column_load_x[c] += column_thrust[c];
@@ -230,21 +300,26 @@ namespace slidewave
           }
 
       soil.set_point_forces([&](const dealii::Particles::ParticleAccessor<2> &particle) {
-        const unsigned int   column = column_of_point(particle);
         dealii::Tensor<1, 2> force;
-        if (is_surface_point(particle, column))
-          {
-            force[0] = column_load_x[column] / surface_points[column];
-            force[1] = column_load_y[column] / surface_points[column];
-          }
-        if (column_thrust[column] != 0.)
-          force[0] += column_thrust[column] * face_weight(particle, column) / face_weights[column];
+        for_each_column_of(particle.get_location()[0],
+                           particle.get_properties()[property::domain_half_x],
+                           [&](const unsigned int c, const double fraction) {
+                             const double surface = fraction * surface_weight(particle, c);
+                             if (surface > 0.)
+                               {
+                                 force[0] += column_load_x[c] * surface / surface_weights[c];
+                                 force[1] += column_load_y[c] * surface / surface_weights[c];
+                               }
+                             const double face = fraction * face_weight(particle, c);
+                             if (face > 0.)
+                               force[0] += column_thrust[c] * face / face_weights[c];
+                           });
         return force;
       });
 
       total_load = dealii::Tensor<1, 2>();
-      for (unsigned int c = 0; c < surface_points.size(); ++c)
-        if (surface_points[c] > 0)
+      for (unsigned int c = 0; c < surface_weights.size(); ++c)
+        if (surface_weights[c] > 0.)
           total_load +=
             dealii::Tensor<1, 2>({column_load_x[c] + column_thrust[c], column_load_y[c]});
     }

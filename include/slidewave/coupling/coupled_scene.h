@@ -39,6 +39,7 @@ namespace slidewave
 
       double       water_density   = 1000.;
       WaterCells   water_cells     = WaterCells::grid_columns;
+      SoilSurface  soil_surface    = SoilSurface::envelope;
       bool         loads_on_soil   = true;
       unsigned int maximum_substeps = 1;
 

@@ -13,23 +13,40 @@ namespace slidewave
 {
   namespace coupling
   {
+    /** How the soil makes the bed of a column (subsection "Coupling", 'Soil surface'). */
+    enum class SoilSurface
+    {
+      /** The top of the highest point domain in the column, max_p (y_p + l_p). */
+      top,
+      /** The mean over the column of the upper envelope of the point domains (sampled at
+       *  samples_per_column points across the column; the grid's floor where no domain
+       *  is): the top where the soil fills the column, and continuous as a face moves
+       *  through a column. */
+      envelope
+    };
+
+
+
     /**
      * What passes between the soil (material points) and the water (1D finite volumes)
      * across the seabed (paper 000, Eq. 10 and Algorithm 1):
      *
-     * - soil to water: the soil surface in each column of the background grid, the top of
-     *   the highest point domain (y_p + l_p) in it; the bed of the water cells is the
-     *   higher of it and the fixed terrain. When the water cells are the grid columns the
+     * - soil to water: the soil surface in each column of the background grid (the top
+     *   of the highest point domain in it, or the mean of the domains' upper envelope
+     *   across it: SoilSurface); the bed of the water cells is the higher of it and the
+     *   fixed terrain. When the water cells are the grid columns the
      *   column values are the bed; otherwise the bed is reconstructed at the water cell
      *   centres by monotone cubic interpolation through the column centres (no overshoot
      *   at a steep face or a corner).
      * - water to soil: per water cell, the weight of the water column on the bed and the
      *   Manning bed shear along it, and the hydrostatic thrust on the rising side of every
      *   step of the bed (exact for a stepped bed); moved to the soil columns in proportion
-     *   to the overlap (conservative). In each column the weight and shear are shared by
+     *   to the overlap (conservative), the weight and shear in proportion to the part of
+     *   the column's width that is soil. In each column the weight and shear are shared by
      *   the material points within half a point spacing of the surface, the thrust by the
      *   points in the wet band of the face in proportion to the water pressure at their
-     *   height, as point forces. Dry cells load nothing; what falls on a column without
+     *   height, as point forces; a point acts on (and takes loads from) every column its
+     *   domain overlaps, in proportion to the overlap. Dry cells load nothing; what falls on a column without
      *   soil rests on the rigid floor.
      *
      * The water mesh and the columns are fixed at construction; per step the class
@@ -47,7 +64,9 @@ namespace slidewave
                          const water::WaterMesh &water_mesh,
                          std::vector<double>     terrain_at_columns,
                          std::vector<double>     terrain_at_cells,
-                         double                  water_density);
+                         double                  water_density,
+                         SoilSurface             surface,
+                         double                  grid_floor);
 
       /** The soil surface per column from the material points (collective). */
       void
@@ -91,9 +110,24 @@ namespace slidewave
       unsigned int
       column_of(double x) const;
 
+      /** Calls f(column, fraction) for every column the domain [x - l, x + l] overlaps,
+       *  with the fraction of the domain over it. */
+      template <typename Function>
+      void
+      for_each_column_of(double x, double l, const Function &f) const;
+
+      /** The soil's bed per column: the top or the envelope's mean. */
+      const std::vector<double> &
+      soil_bed() const
+      {
+        return surface_definition == SoilSurface::top ? surface_height : soil_height;
+      }
+
       std::vector<double> columns, column_centers, cell_centers;
       std::vector<double> terrain_at_columns, terrain_at_cells;
       double              water_density;
+      SoilSurface         surface_definition;
+      double              floor;
       /** The columns are the water cells: no reconstruction, no transfer. */
       bool same_cells;
 
@@ -102,13 +136,18 @@ namespace slidewave
       std::vector<unsigned int> overlap_start, overlap_column;
       std::vector<double>       overlap_fraction;
 
-      std::vector<double>               surface_height, samples, bed_elevation;
+      /** Samples across a column of the envelope of the point domains. */
+      static constexpr unsigned int samples_per_column = 8;
+
+      std::vector<double> surface_height, soil_height, envelope, samples, bed_elevation;
+      /** The part of each column's width that is soil (1 or 0 with SoilSurface::top). */
+      std::vector<double> coverage;
       std::vector<double>               column_load_x, column_load_y, cell_load_x, cell_load_y;
       /** Thrust on the faces of the bed and the wet band [bottom, water level] of the
        *  face, per water cell and per column. */
       std::vector<double> cell_thrust, cell_band_bottom, cell_band_level;
       std::vector<double> column_thrust, band_bottom, band_level, face_weights;
-      std::vector<unsigned int>         surface_points;
+      std::vector<double> surface_weights;
       MonotoneCubic                     reconstruction;
       dealii::Tensor<1, 2>              total_load;
     };

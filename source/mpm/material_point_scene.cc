@@ -50,18 +50,27 @@ namespace slidewave
       prm.enter_subsection("Verification");
       {
         prm.declare_entry("Exact solution", "none",
-                          Selection("none|bar vibration|self weight column"),
+                          Selection("none|bar vibration|self weight column|rigid rotation"),
                           "'bar vibration': axial vibration of an elastic bar fixed at x = 0 "
                           "and free at x = L, started with v = A sin(pi x / (2 L)); the "
                           "centre-of-mass velocity is compared with A cos(omega t) / (beta L) "
                           "at every step (material of Region 1). 'self weight column': at the "
                           "end, sigma_yy of every point against -rho g (H - Y), Y its initial "
-                          "height, normalized by sum rho g H V (Coombs and Augarde 2020).");
+                          "height, normalized by sum rho g H V (Coombs and Augarde 2020). "
+                          "'rigid rotation': a body turning rigidly at 'Rotation rate' about "
+                          "'Rotation centre' (a prescribed velocity) from the 'uniform' "
+                          "initial stress sigma_0: at the end, every point's stress against "
+                          "R sigma_0 R^T (R the rotation by omega t; the Jaumann rate turns "
+                          "the stress with the material), normalized by |sigma_0|.");
         prm.declare_entry("Bar length", "25", Double(0.), "L of the vibrating bar [m].");
         prm.declare_entry("Bar amplitude", "0.1", Double(0.),
                           "A, the initial velocity amplitude of the bar [m/s].");
         prm.declare_entry("Column height", "1", Double(0.),
                           "H, the initial height of the column's top [m].");
+        prm.declare_entry("Rotation rate", "1", Double(),
+                          "omega of the rigid rotation [rad/s], counter-clockwise positive.");
+        prm.declare_entry("Rotation centre", "0, 0", Anything(),
+                          "x, y of the centre of the rigid rotation [m].");
         prm.declare_entry("Tolerance", "0", Double(0.),
                           "If > 0, the run fails (exit status 3) when the error exceeds it "
                           "(bar: largest error over the run, in m/s).");
@@ -86,7 +95,28 @@ namespace slidewave
         const std::string type = prm.get("Exact solution");
         exact_solution = type == "bar vibration"      ? ExactSolution::bar_vibration :
                          type == "self weight column" ? ExactSolution::self_weight_column :
+                         type == "rigid rotation"     ? ExactSolution::rigid_rotation :
                                                         ExactSolution::none;
+        rotation_rate = prm.get_double("Rotation rate");
+        {
+          const std::string text  = prm.get("Rotation centre");
+          const auto        parts = dealii::Utilities::split_string_list(text, ',');
+          bool              ok    = parts.size() == 2;
+          for (unsigned int d = 0; ok && d < 2; ++d)
+            try
+              {
+                std::size_t used   = 0;
+                rotation_centre[d] = std::stod(parts[d], &used);
+                ok                 = used == parts[d].size();
+              }
+            catch (const std::exception &)
+              {
+                ok = false;
+              }
+          if (!ok)
+            throw InputError(section + "/Verification/Rotation centre", text,
+                             "two numbers x, y");
+        }
         bar_length    = prm.get_double("Bar length");
         bar_amplitude = prm.get_double("Bar amplitude");
         column_height = prm.get_double("Column height");
@@ -127,6 +157,34 @@ namespace slidewave
         }
       return dealii::Utilities::MPI::sum(error, MPI_COMM_WORLD) /
              dealii::Utilities::MPI::sum(norm, MPI_COMM_WORLD);
+    }
+
+
+
+    std::array<double, 2>
+    MaterialPointScene::rotation_errors(const double time) const
+    {
+      // sigma(t) = R sigma_0 R^T and x(t) = c + R (X - c), R the rotation by omega t.
+      const double                  angle = rotation_rate * (time - scene.start_time);
+      const double                  c = std::cos(angle), s = std::sin(angle);
+      const dealii::Tensor<2, 2>    R({{c, -s}, {s, c}});
+      const auto                   &u = parameters.uniform_stress;
+      const dealii::Tensor<2, 2>    sigma_0({{u[0], u[2]}, {u[2], u[1]}});
+      const dealii::Tensor<2, 2>    exact = R * sigma_0 * dealii::transpose(R);
+      double                        stress = 0., position = 0.;
+      for (const auto &particle : solver->particles())
+        {
+          const auto                 p = particle.get_properties();
+          const dealii::Tensor<2, 2> sigma({{p[property::stress_xx], p[property::stress_xy]},
+                                            {p[property::stress_xy], p[property::stress_yy]}});
+          stress = std::max(stress, (sigma - exact).norm());
+          const dealii::Tensor<1, 2> X({p[property::initial_x] - rotation_centre[0],
+                                        p[property::initial_y] - rotation_centre[1]});
+          const dealii::Point<2>     x = rotation_centre + R * X;
+          position                     = std::max(position, particle.get_location().distance(x));
+        }
+      return {{dealii::Utilities::MPI::max(stress, MPI_COMM_WORLD) / sigma_0.norm(),
+               dealii::Utilities::MPI::max(position, MPI_COMM_WORLD)}};
     }
 
 
@@ -508,6 +566,20 @@ namespace slidewave
 
       if (exact_solution == ExactSolution::self_weight_column)
         max_error = column_stress_error();
+      if (exact_solution == ExactSolution::rigid_rotation)
+        {
+          const auto errors = rotation_errors(time);
+          max_error         = errors[0];
+          if (is_writer)
+            {
+              char line[160];
+              std::snprintf(line, sizeof(line),
+                            "Rigid rotation by %.4f rad: largest distance of a point from its "
+                            "rigidly rotated position = %.3e m",
+                            rotation_rate * (time - scene.start_time), errors[1]);
+              std::cout << line << std::endl;
+            }
+        }
       bool within = true;
       if (exact_solution != ExactSolution::none && is_writer)
         {
@@ -515,6 +587,8 @@ namespace slidewave
           std::snprintf(line, sizeof(line), "%s error against the exact solution = %.4e",
                         exact_solution == ExactSolution::bar_vibration ?
                           "Largest centre-of-mass velocity" :
+                        exact_solution == ExactSolution::rigid_rotation ?
+                          "Largest normalized stress" :
                           "Normalized sigma_yy",
                         max_error);
           std::cout << line;

@@ -95,6 +95,13 @@ namespace slidewave
       prm.declare_entry("Particles per direction", "2", Integer(1, 10),
                         "Material points per cell per direction at the start (n x n per "
                         "cell, at the centres of n x n sub-cells).");
+      prm.declare_entry("Prescribed velocity", "", Anything(),
+                        "Kinematic verification mode: if not empty, two expressions of x, y "
+                        "and t separated by ';' (e.g. '-(y-0.5); x-0.5', a rigid rotation): "
+                        "the nodal velocities are this field instead of the solution of the "
+                        "momentum balance (Eqs. 18-19); the points move with it and their "
+                        "stresses follow from it as usual (strain rate, Jaumann rate, "
+                        "B-bar).");
       prm.enter_subsection("Grid");
       {
         prm.declare_entry("Lower left", "0, 0", Anything(), "Corner x, y of the domain [m].");
@@ -152,13 +159,17 @@ namespace slidewave
         }
       prm.enter_subsection("Initial stress");
       {
-        prm.declare_entry("Type", "none", Selection("none|geostatic|gravity loading"),
+        prm.declare_entry("Type", "none", Selection("none|geostatic|gravity loading|uniform"),
                           "'none': stress free. 'geostatic': sigma_yy = -g (weight of the "
                           "material above the point per unit width), sigma_xx = sigma_zz = "
                           "K0 sigma_yy (at rest, exact for horizontal layers). 'gravity "
                           "loading': gravity is applied with heavy local damping and all "
                           "rigid walls held, for 'Gravity loading time', before the start "
-                          "time; then velocities are zeroed and the scene starts.");
+                          "time; then velocities are zeroed and the scene starts. "
+                          "'uniform': 'Uniform stress' in every point.");
+        prm.declare_entry("Uniform stress", "0, 0, 0, 0", Anything(),
+                          "For 'uniform': sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa], "
+                          "tension positive.");
         prm.declare_entry("K0", "auto", Anything(),
                           "Coefficient of earth pressure at rest for 'geostatic': a number "
                           "> 0, or 'auto': 1 - sin(phi) (Jaky) for Drucker-Prager, "
@@ -287,12 +298,60 @@ namespace slidewave
           prm.leave_subsection();
         }
 
+      {
+        const std::string text = dealii::Utilities::trim(prm.get("Prescribed velocity"));
+        prescribed_velocity.reset();
+        if (!text.empty())
+          {
+            // deal.II prints muparser's diagnosis to std::cerr before it throws: keep it
+            // quiet, the InputError says what is wrong.
+            std::ostringstream diagnosis;
+            std::streambuf    *cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
+            try
+              {
+                if (dealii::Utilities::split_string_list(text, ';').size() != 2)
+                  throw std::invalid_argument("two components");
+                prescribed_velocity = std::make_shared<dealii::FunctionParser<2>>(2);
+                prescribed_velocity->initialize("x,y,t", text, {{"pi", M_PI}},
+                                                /*time_dependent=*/true);
+                prescribed_velocity->value(dealii::Point<2>(), 0);
+                std::cerr.rdbuf(cerr_buffer);
+              }
+            catch (...)
+              {
+                std::cerr.rdbuf(cerr_buffer);
+                throw InputError(path + "/Prescribed velocity", text,
+                                 "empty, or two expressions of x, y and t separated by ';'");
+              }
+          }
+      }
+
       prm.enter_subsection("Initial stress");
       {
         const std::string type = prm.get("Type");
         initial_stress = type == "geostatic"       ? InitialStress::geostatic :
                          type == "gravity loading" ? InitialStress::gravity_loading :
+                         type == "uniform"         ? InitialStress::uniform :
                                                      InitialStress::none;
+        {
+          const std::string text  = prm.get("Uniform stress");
+          const auto        parts = dealii::Utilities::split_string_list(text, ',');
+          bool              ok    = parts.size() == 4;
+          for (unsigned int i = 0; ok && i < 4; ++i)
+            try
+              {
+                std::size_t used  = 0;
+                uniform_stress[i] = std::stod(parts[i], &used);
+                ok = used == parts[i].size() && std::isfinite(uniform_stress[i]);
+              }
+            catch (const std::exception &)
+              {
+                ok = false;
+              }
+          if (!ok)
+            throw InputError(path + "/Initial stress/Uniform stress", text,
+                             "four finite numbers sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa]");
+        }
         const std::string k0 = dealii::Utilities::trim(prm.get("K0"));
         if (k0 == "auto")
           lateral_stress_ratio = -1.;
@@ -484,7 +543,16 @@ namespace slidewave
       balance_load();
       if (apply_loads)
         apply_loads();
-      if (prm.initial_stress == InitialStress::geostatic)
+      if (prm.initial_stress == InitialStress::uniform)
+        for (auto &particle : particle_handler)
+          {
+            auto p                 = particle.get_properties();
+            p[property::stress_xx] = prm.uniform_stress[0];
+            p[property::stress_yy] = prm.uniform_stress[1];
+            p[property::stress_xy] = prm.uniform_stress[2];
+            p[property::stress_zz] = prm.uniform_stress[3];
+          }
+      else if (prm.initial_stress == InitialStress::geostatic)
         set_geostatic_stress();
       else if (prm.initial_stress == InitialStress::gravity_loading)
         load_gravity();
@@ -550,6 +618,17 @@ namespace slidewave
           force[d].reinit(nodal_mass);
           velocity[d].reinit(nodal_mass);
           velocity_old[d].reinit(nodal_mass);
+        }
+      if (prm.prescribed_velocity)
+        {
+          node_positions.resize(nodal_mass.locally_owned_size());
+          const auto &partitioner = *nodal_mass.get_partitioner();
+          for (const auto &cell : dofs.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const unsigned int v : cell->vertex_indices())
+                if (partitioner.in_local_range(cell->vertex_dof_index(v, 0)))
+                  node_positions[partitioner.global_to_local(cell->vertex_dof_index(v, 0))] =
+                    cell->vertex(v);
         }
       const auto &partitioner = nodal_mass.get_partitioner();
 
@@ -1190,26 +1269,31 @@ namespace slidewave
       const double   tiny  = empty_node_mass();
       const double   alpha = damping;
       const unsigned n_own = nodal_mass.locally_owned_size();
-      for (unsigned int i = 0; i < n_own; ++i)
+      if (prm.prescribed_velocity)
+        prescribe_nodal_velocities(dt);
+      else
         {
-          const double m = nodal_mass.local_element(i);
-          for (unsigned int d = 0; d < 2; ++d)
+          for (unsigned int i = 0; i < n_own; ++i)
             {
-              if (m > tiny)
+              const double m = nodal_mass.local_element(i);
+              for (unsigned int d = 0; d < 2; ++d)
                 {
-                  const double v = momentum[d].local_element(i) / m;
-                  double       f = force[d].local_element(i);
-                  // Cundall's local damping: a force opposing the motion, proportional
-                  // to the unbalanced force.
-                  if (alpha > 0.)
-                    f -= alpha * std::abs(f) * (v > 0. ? 1. : v < 0. ? -1. : 0.);
-                  velocity_old[d].local_element(i) = v;
-                  velocity[d].local_element(i)     = v + dt * f / m; // Eqs. 18-19
-                }
-              else
-                {
-                  velocity_old[d].local_element(i) = 0.;
-                  velocity[d].local_element(i)     = 0.;
+                  if (m > tiny)
+                    {
+                      const double v = momentum[d].local_element(i) / m;
+                      double       f = force[d].local_element(i);
+                      // Cundall's local damping: a force opposing the motion, proportional
+                      // to the unbalanced force.
+                      if (alpha > 0.)
+                        f -= alpha * std::abs(f) * (v > 0. ? 1. : v < 0. ? -1. : 0.);
+                      velocity_old[d].local_element(i) = v;
+                      velocity[d].local_element(i)     = v + dt * f / m; // Eqs. 18-19
+                    }
+                  else
+                    {
+                      velocity_old[d].local_element(i) = 0.;
+                      velocity[d].local_element(i)     = 0.;
+                    }
                 }
             }
         }
@@ -1221,6 +1305,28 @@ namespace slidewave
           velocity_old[d].update_ghost_values();
           interpolate_hanging_nodes(velocity[d]);
           interpolate_hanging_nodes(velocity_old[d]);
+        }
+    }
+
+
+
+    void
+    MaterialPointSolver::prescribe_nodal_velocities(const double dt)
+    {
+      // Kinematic mode: the field at the node at the start and the end of the step (zero
+      // on nodes without mass, as in the dynamic update).
+      const double   tiny  = empty_node_mass();
+      const unsigned n_own = nodal_mass.locally_owned_size();
+      for (const auto &[when, target] : {std::pair<double, std::array<Vector, 2> *>{time, &velocity_old},
+                                         {time + dt, &velocity}})
+        {
+          prm.prescribed_velocity->set_time(when);
+          for (unsigned int i = 0; i < n_own; ++i)
+            for (unsigned int d = 0; d < 2; ++d)
+              (*target)[d].local_element(i) =
+                nodal_mass.local_element(i) > tiny ?
+                  prm.prescribed_velocity->value(node_positions[i], d) :
+                  0.;
         }
     }
 
@@ -1240,6 +1346,8 @@ namespace slidewave
     void
     MaterialPointSolver::remap_velocities_to_grid()
     {
+      if (prm.prescribed_velocity)
+        return; // the nodal velocities are given
       // MUSL: nodal momentum from the updated particle velocities, on the old positions.
       for (unsigned int d = 0; d < 2; ++d)
         momentum[d] = 0.;

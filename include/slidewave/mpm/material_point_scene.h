@@ -82,8 +82,17 @@ namespace slidewave
       {
         none,
         bar_vibration,
-        self_weight_column
+        self_weight_column,
+        rigid_rotation
       };
+
+      /** Rigid rotation: the largest stress error against R sigma_0 R^T over |sigma_0|, and
+       *  the largest distance [m] of a point from its rigidly rotated position. */
+      std::array<double, 2>
+      rotation_errors(double time) const;
+
+      double           rotation_rate = 1.;
+      dealii::Point<2> rotation_centre;
 
       const SceneParameters                 &scene;
       ExactSolution exact_solution = ExactSolution::none;

@@ -1,6 +1,7 @@
 #ifndef slidewave_mpm_material_point_solver_h
 #define slidewave_mpm_material_point_solver_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/distributed/tria.h>
@@ -15,6 +16,7 @@
 #include <slidewave/mpm/shape_functions.h>
 
 #include <array>
+#include <memory>
 #include <functional>
 #include <set>
 #include <string>
@@ -48,9 +50,10 @@ namespace slidewave
     /** How the material starts stressed (subsection "Initial stress"). */
     enum class InitialStress
     {
-      none,           ///< stress free
-      geostatic,      ///< sigma_v from the weight of the material above, sigma_h = K0 sigma_v
-      gravity_loading ///< gravity applied with heavy damping until at rest, then released
+      none,            ///< stress free
+      geostatic,       ///< sigma_v from the weight of the material above, sigma_h = K0 sigma_v
+      gravity_loading, ///< gravity applied with heavy damping until at rest, then released
+      uniform          ///< the same given stress in every point
     };
 
     /**
@@ -107,6 +110,15 @@ namespace slidewave
       double lateral_stress_ratio    = -1.;
       double gravity_loading_time    = 0.;
       double gravity_loading_damping = 0.7;
+      /** 'uniform': sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa]. */
+      std::array<double, 4> uniform_stress{{0., 0., 0., 0.}};
+
+      /**
+       * Kinematic mode ('Prescribed velocity'): the nodal velocities are v(x, y, t) of
+       * this function (two components) instead of the solution of the momentum balance;
+       * the points move and their stresses are updated from it as usual. Null: off.
+       */
+      std::shared_ptr<dealii::FunctionParser<2>> prescribed_velocity;
 
       std::vector<materials::MaterialParameters> materials;
       std::vector<MaterialRegion>                regions;
@@ -372,6 +384,10 @@ namespace slidewave
       double
       empty_node_mass() const;
 
+      /** Kinematic mode: nodal velocities from SolverParameters::prescribed_velocity. */
+      void
+      prescribe_nodal_velocities(double dt);
+
       void
       update_cell_stresses(const dealii::Triangulation<2>::active_cell_iterator &cell,
                            double                                                dt);
@@ -438,6 +454,9 @@ namespace slidewave
       /** Local damping in force now (heavier during gravity loading). */
       double damping = 0.;
       bool   loading_gravity = false;
+
+      /** Positions of the owned nodes (local index), for a prescribed velocity only. */
+      std::vector<dealii::Point<2>> node_positions;
 
       /** Side arrays reused every step (no allocation per particle). */
       std::vector<dealii::Point<2>>     new_positions;

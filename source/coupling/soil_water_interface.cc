@@ -28,6 +28,11 @@ namespace slidewave
     {
       const unsigned int n_columns = columns.size() - 1;
       const unsigned int n_cells   = water_mesh.n_cells();
+      // Uniform columns are found by division, others by bisection.
+      uniform_width = (columns.back() - columns.front()) / n_columns;
+      for (unsigned int c = 0; c < n_columns; ++c)
+        if (std::abs(columns[c + 1] - columns[c] - uniform_width) > 1e-9 * uniform_width)
+          uniform_width = 0.;
       for (unsigned int c = 0; c < n_columns; ++c)
         column_centers.push_back(0.5 * (columns[c] + columns[c + 1]));
       for (unsigned int i = 0; i < n_cells; ++i)
@@ -78,6 +83,10 @@ namespace slidewave
     unsigned int
     SoilWaterInterface::column_of(const double x) const
     {
+      if (uniform_width > 0.)
+        return static_cast<unsigned int>(std::clamp(
+          std::floor((x - columns.front()) / uniform_width), 0.,
+          static_cast<double>(columns.size() - 2)));
       const auto k = std::upper_bound(columns.begin(), columns.end(), x) - columns.begin();
       return static_cast<unsigned int>(
         std::clamp<long>(k - 1, 0, static_cast<long>(columns.size()) - 2));

@@ -124,6 +124,8 @@ namespace slidewave
       }
 
       std::vector<double> columns, column_centers, cell_centers;
+      /** The width of the columns if they are all equal, else 0. */
+      double uniform_width = 0.;
       std::vector<double> terrain_at_columns, terrain_at_cells;
       double              water_density;
       SoilSurface         surface_definition;

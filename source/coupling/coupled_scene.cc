@@ -1,6 +1,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 
+#include <slidewave/core/format.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/progress_reporter.h>
 #include <slidewave/core/timed_run.h>
@@ -20,14 +21,6 @@ namespace slidewave
     namespace
     {
       const std::string section = "Coupling";
-
-      std::string
-      format(const char *pattern, const double value)
-      {
-        char buffer[64];
-        std::snprintf(buffer, sizeof(buffer), pattern, value);
-        return buffer;
-      }
     } // namespace
 
 

@@ -3,6 +3,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <slidewave/core/format.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/core/progress_reporter.h>
@@ -26,14 +27,6 @@ namespace slidewave
     namespace
     {
       const std::string section = "Shallow water";
-
-      std::string
-      format(const char *pattern, const double value)
-      {
-        char buffer[64];
-        std::snprintf(buffer, sizeof(buffer), pattern, value);
-        return buffer;
-      }
     } // namespace
 
 

@@ -283,15 +283,7 @@ namespace slidewave
         "at step " + std::to_string(step) + ", t = " + to_string(time) + " s: ";
       const unsigned int bad = water->find_invalid_cell();
       if (bad < water->n_cells())
-        {
-          const double h = water->depth()[bad], q = water->discharge()[bad];
-          throw RunFailure(where +
-                           (std::isfinite(h) && std::isfinite(q) ? "negative water depth" :
-                                                                    "non-finite water state") +
-                           " in water cell " + std::to_string(bad) + " (x = " +
-                           to_string(water->mesh().center(bad)) + " m): h = " + to_string(h) +
-                           ", hu = " + to_string(q));
-        }
+        throw RunFailure(where + water->describe_invalid_cell(bad));
       if (check_soil)
         {
           const std::string problem = soil->find_invalid_particle();

@@ -582,6 +582,17 @@ namespace slidewave
 
 
 
+    std::string
+    ShallowWater1D::describe_invalid_cell(const unsigned int i) const
+    {
+      return std::string(std::isfinite(h[i]) && std::isfinite(hu[i]) ? "negative water depth" :
+                                                                       "non-finite water state") +
+             " in water cell " + std::to_string(i) + " (x = " + to_string(water_mesh.center(i)) +
+             " m): h = " + to_string(h[i]) + ", hu = " + to_string(hu[i]);
+    }
+
+
+
     unsigned int
     ShallowWater1D::find_invalid_cell() const
     {

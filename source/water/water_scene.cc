@@ -401,16 +401,8 @@ namespace slidewave
 
           const unsigned int bad = water->find_invalid_cell();
           if (bad < water->n_cells())
-            {
-              const double h = water->depth()[bad], q = water->discharge()[bad];
-              throw RunFailure(
-                "at step " + std::to_string(step) + ", t = " + to_string(time) +
-                " s: " + (std::isfinite(h) && std::isfinite(q) ? "negative water depth" :
-                                                                  "non-finite water state") +
-                " in water cell " + std::to_string(bad) + " (x = " +
-                to_string(water->mesh().center(bad)) + " m): h = " + to_string(h) +
-                ", hu = " + to_string(q));
-            }
+            throw RunFailure("at step " + std::to_string(step) + ", t = " + to_string(time) +
+                             " s: " + water->describe_invalid_cell(bad));
 
           if (tolerance_volume > 0.)
             max_volume_balance =

@@ -123,6 +123,10 @@ namespace slidewave
       unsigned int
       find_invalid_cell() const;
 
+      /** "negative water depth in water cell I (x = X m): h = H, hu = Q" (or non-finite). */
+      std::string
+      describe_invalid_cell(unsigned int i) const;
+
       const WaterMesh &
       mesh() const
       {

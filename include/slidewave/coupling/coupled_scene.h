@@ -125,7 +125,7 @@ namespace slidewave
       water::GaugeRecorder                       gauges;
       mpm::ParticleOutput                        particle_output;
 
-      double initial_volume = 0., initial_toe = 0., still_level = 0.;
+      double initial_volume = 0., initial_toe = 0.;
     };
   } // namespace coupling
 } // namespace slidewave

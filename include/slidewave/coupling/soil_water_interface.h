@@ -86,19 +86,6 @@ namespace slidewave
                         const water::ShallowWater1D &water,
                         double                       dt);
 
-      /** Surface height per column (-infinity where there is no soil). */
-      const std::vector<double> &
-      surface() const
-      {
-        return surface_height;
-      }
-
-      const std::vector<double> &
-      column_interfaces() const
-      {
-        return columns;
-      }
-
       /** The total load the water puts on the soil (the last apply_water_loads). */
       dealii::Tensor<1, 2>
       load_on_soil() const

@@ -38,12 +38,6 @@ namespace slidewave
                       double             left,
                       double             right);
 
-      const std::vector<double> &
-      positions() const
-      {
-        return gauge_positions;
-      }
-
       /** Opens @p file_name and writes the header (only where @p is_writer, and only when
        *  there are gauges). */
       void

@@ -421,10 +421,10 @@ def main(argv=None):
     p.add_argument("--shapes", default=",".join(SHAPES), help="shape functions")
     p.add_argument("--materials", default=",".join(MATERIALS), help="material models")
     p.add_argument("--ranks", default=",".join(map(str, RANKS)), help="MPI rank counts")
-    p.add_argument("--particle-weights", default="scene,10000",
-                   help="values of 'Material points/Load balancing/Particle weight' for the "
-                        "runs on more than one rank ('scene': the scene's, i.e. the default "
-                        "100)")
+    p.add_argument("--particle-weights", default="scene",
+                   help="comma-separated values of 'Material points/Load balancing/Particle "
+                        "weight' for the runs on more than one rank ('scene': the scene's, "
+                        "i.e. the default 10000)")
     p.add_argument("--hydrostatic", action="store_true",
                    help="run only the elastic hydrostatic column")
     p.add_argument("--no-hydrostatic", action="store_true",
@@ -513,7 +513,7 @@ def main(argv=None):
           "start-up, set-up and output; p-steps/s = particles x steps / advance; RSS = peak "
           "resident set size summed over ranks; B/particle = RSS / particles (includes "
           "the fixed overhead); busiest = share of the particles on the busiest rank at "
-          "start/end; ranks 2w10000 = 2 ranks with 'Load balancing/Particle weight' = 10000; bg = cores busy with other processes during the run (should be ~0).")
+          "start/end; ranks 2wN = 2 ranks with 'Load balancing/Particle weight' = N (--particle-weights); bg = cores busy with other processes during the run (should be ~0).")
     print(summary(rows))
     if run_hydrostatic:
         print("Reference (BENCHMARKS.md, another open-source C++ MPM): column collapse "

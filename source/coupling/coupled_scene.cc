@@ -368,6 +368,7 @@ namespace slidewave
       {
         TimerOutput::Scope scope(timer, "coupled: setup");
         soil = std::make_unique<mpm::MaterialPointSolver>(soil_parameters);
+        soil->set_timer(timer);
         soil->setup(scene.start_time, [this]() { setup_water(); });
         // The soil may have settled under gravity loading: the water starts over the bed
         // it left, at the initial condition.

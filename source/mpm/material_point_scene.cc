@@ -434,6 +434,7 @@ namespace slidewave
       {
         TimerOutput::Scope scope(timer, "mpm: setup");
         solver = std::make_unique<MaterialPointSolver>(parameters);
+        solver->set_timer(timer);
         if (scene.resume)
           resume(loop);
         else
@@ -486,6 +487,7 @@ namespace slidewave
           initial_energy    = budget.kinetic + budget.elastic;
           total_mass        = solver->integrals().mass;
         }
+      const unsigned int first_step = step;
       const auto wall_start      = std::chrono::steady_clock::now();
       auto       last_checkpoint = wall_start;
 
@@ -563,6 +565,9 @@ namespace slidewave
               last_checkpoint = std::chrono::steady_clock::now();
             }
         }
+
+      pcout << "Particle relocation: deal.II's full sort in " << solver->n_full_particle_sorts()
+            << " of " << step - first_step << " steps" << std::endl;
 
       if (exact_solution == ExactSolution::self_weight_column)
         max_error = column_stress_error();

@@ -11,6 +11,7 @@
 #include <slidewave/mpm/particle_properties.h>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <sstream>
 
@@ -89,6 +90,22 @@ namespace slidewave
                         "Average the volumetric strain increment over each cell (B-bar / "
                         "mean dilatation, paper 000 §3.1) against volumetric locking.");
       prm.declare_entry("Gravity", "0, -9.81", Anything(), "Gravity vector g_x, g_y [m/s^2].");
+      prm.declare_entry("Particle relocation", "neighbour cells",
+                        Selection("neighbour cells|full sort"),
+                        "How the points find their cells after moving. 'neighbour cells': "
+                        "each point looks in the cells of its old cell's patch (a step moves "
+                        "a point less than a cell) and only the points that changed cell are "
+                        "moved in the particle handler; when any point on any rank leaves "
+                        "its rank's cells or the patch, and every 'Load balancing/Interval' "
+                        "steps (to keep the points' memory in cell order), deal.II's full "
+                        "sort runs instead. 'full sort': deal.II's sort every step. Both "
+                        "give the same cells and reference coordinates.");
+      prm.declare_entry("Detailed timing", "false", Bool(),
+                        "Time the parts of each step (grid changes, particle to grid, grid "
+                        "update, grid to particle with the stresses, MUSL re-map, sorting "
+                        "the points into cells) as rows 'mpm step: ...' of the timer summary. "
+                        "Each part starts with a barrier over the ranks, so waiting for the "
+                        "slowest rank shows in the part where it happens.");
       prm.declare_entry("Local damping", "0", Double(0., 1.),
                         "Cundall's local non-viscous damping coefficient of the nodal "
                         "forces, for quasi-static loading; 0 for dynamics.");
@@ -214,6 +231,8 @@ namespace slidewave
                          "(doc/stability.md)");
       fixed_time_step = prm.get_double("Fixed time step");
       b_bar           = prm.get_bool("B-bar");
+      detailed_timing = prm.get_bool("Detailed timing");
+      full_sort_every_step = prm.get("Particle relocation") == "full sort";
       const auto g    = parse_numbers(path + "/Gravity", prm.get("Gravity"), 2);
       gravity[0]      = g[0];
       gravity[1]      = g[1];
@@ -240,13 +259,13 @@ namespace slidewave
                                  to_string(b[0] - a[0]) + " x " + to_string(b[1] - a[1]) +
                                  " m)");
           }
-        // Every rank holds the whole coarse grid: beyond some 10^7 cells it does not fit.
+        // The supported size: beyond it the grid alone takes most of a machine's memory.
         const double n_cells = std::round((b[0] - a[0]) / cell_size) *
                                std::round((b[1] - a[1]) / cell_size);
         if (n_cells > 1e7)
           throw InputError(path + "/Grid/Cell size", to_string(cell_size),
                            "a size giving at most 10^7 grid cells (this one gives " +
-                             to_string(n_cells) + "; every rank stores the whole grid)");
+                             to_string(n_cells) + ")");
       }
       prm.leave_subsection();
 
@@ -469,9 +488,21 @@ namespace slidewave
       // the cells holding material (and a buffer around them) are refined to 'Cell size'.
       const unsigned int levels = prm.adaptivity.enabled ? prm.adaptivity.levels : 0;
       const double       base   = prm.cell_size * (1u << levels);
-      const std::vector<unsigned int> subdivisions{
+      std::vector<unsigned int> subdivisions{
         static_cast<unsigned int>(std::round((prm.upper_right[0] - prm.lower_left[0]) / base)),
         static_cast<unsigned int>(std::round((prm.upper_right[1] - prm.lower_left[1]) / base))};
+      // Every rank stores every coarse cell (p4est's trees), and deal.II's cell loops visit
+      // them all: the base grid is built from as few coarse cells as the side ratio allows
+      // and refined globally (setup(); a checkpoint restores the refinement itself). The
+      // cells are the same; only their order (p4est's space-filling curve within each
+      // coarse cell) and the memory per rank change.
+      base_refinements = 0;
+      while (subdivisions[0] % 2 == 0 && subdivisions[1] % 2 == 0)
+        {
+          subdivisions[0] /= 2;
+          subdivisions[1] /= 2;
+          ++base_refinements;
+        }
       dealii::GridGenerator::subdivided_hyper_rectangle(tria, subdivisions, prm.lower_left,
                                                         prm.upper_right, /*colorize=*/true);
       tria.signals.weight.connect(
@@ -525,6 +556,7 @@ namespace slidewave
     {
       time = start_time;
       create_coarse_grid();
+      tria.refine_global(base_refinements);
       if (prm.adaptivity.enabled)
         for (unsigned int l = 0; l < prm.adaptivity.levels; ++l)
           {
@@ -808,12 +840,13 @@ namespace slidewave
         if (cell->is_locally_owned())
           {
             const bool keep_fine = near[cell->active_cell_index()];
-            if (keep_fine && static_cast<unsigned int>(cell->level()) < levels)
+            const unsigned int level = cell->level();
+            if (keep_fine && level < base_refinements + levels)
               {
                 cell->set_refine_flag();
                 changes = true;
               }
-            else if (!keep_fine && cell->level() > 0)
+            else if (!keep_fine && level > base_refinements)
               {
                 cell->set_coarsen_flag();
                 changes = true;
@@ -846,6 +879,7 @@ namespace slidewave
       const auto &vertex_to_cells = vertex_cells;
       patch_start.assign(tria.n_active_cells() + 1, 0);
       patch_cells.clear();
+      patch_cell_iterators.clear();
       std::vector<dealii::types::global_dof_index> dof_indices(4);
       const auto make_entry = [&](const dealii::DoFHandler<2>::active_cell_iterator &cell) {
         PatchCell entry;
@@ -865,6 +899,7 @@ namespace slidewave
           if (!cell->is_locally_owned())
             continue;
           patch_cells.push_back(make_entry(cell));
+          patch_cell_iterators.push_back(cell);
           std::vector<dealii::Triangulation<2>::active_cell_iterator> neighbours;
           for (const unsigned int v : cell->vertex_indices())
             for (const auto &other : vertex_to_cells[cell->vertex_index(v)])
@@ -873,9 +908,11 @@ namespace slidewave
                 neighbours.push_back(other);
           std::sort(neighbours.begin(), neighbours.end());
           for (const auto &other : neighbours)
-            patch_cells.push_back(
-              make_entry(dealii::DoFHandler<2>::active_cell_iterator(&tria, other->level(),
-                                                                      other->index(), &dofs)));
+            {
+              patch_cells.push_back(make_entry(dealii::DoFHandler<2>::active_cell_iterator(
+                &tria, other->level(), other->index(), &dofs)));
+              patch_cell_iterators.push_back(other);
+            }
           patch_start[index + 1] = patch_cells.size();
         }
     }
@@ -1163,12 +1200,9 @@ namespace slidewave
       NodeWeights  w;
       const double gx = prm.gravity[0], gy = prm.gravity[1];
       const bool   point_forces = prm.point_forces;
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          if (!cell->is_locally_owned() || particle_handler.n_particles_in_cell(cell) == 0)
-            continue;
+      for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
           const unsigned int cell_index = cell->active_cell_index();
-          for (const auto &particle : particle_handler.particles_in_cell(cell))
+          for (const auto &particle : particles_in_cell)
             {
               shape_weights(particle, cell_index, w);
               const auto   p  = particle.get_properties();
@@ -1194,7 +1228,7 @@ namespace slidewave
                     -V * (sxy * w.grad_x[k] + syy * w.grad_y[k]) + mk * gy + w.value[k] * fy;
                 }
             }
-        }
+      });
       condense_hanging_nodes(nodal_mass);
       for (unsigned int d = 0; d < 2; ++d)
         {
@@ -1352,12 +1386,9 @@ namespace slidewave
       for (unsigned int d = 0; d < 2; ++d)
         momentum[d] = 0.;
       NodeWeights w;
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          if (!cell->is_locally_owned() || particle_handler.n_particles_in_cell(cell) == 0)
-            continue;
+      for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
           const unsigned int cell_index = cell->active_cell_index();
-          for (const auto &particle : particle_handler.particles_in_cell(cell))
+          for (const auto &particle : particles_in_cell)
             {
               shape_weights(particle, cell_index, w);
               const auto   p  = particle.get_properties();
@@ -1369,7 +1400,7 @@ namespace slidewave
                   momentum[1].local_element(w.node[k]) += w.value[k] * py;
                 }
             }
-        }
+      });
       for (unsigned int d = 0; d < 2; ++d)
         {
           condense_hanging_nodes(momentum[d]);
@@ -1402,17 +1433,12 @@ namespace slidewave
       // updated in the same pass.
       NodeWeights  w;
       const double flip = prm.flip_fraction;
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          const unsigned int n_in_cell =
-            cell->is_locally_owned() ? particle_handler.n_particles_in_cell(cell) : 0;
-          if (n_in_cell == 0)
-            continue;
+      for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
           const unsigned int cell_index = cell->active_cell_index();
           if (with_stresses)
-            cell_gradients.resize(n_in_cell);
+            cell_gradients.resize(particle_handler.n_particles_in_cell(cell));
           unsigned int k = 0;
-          for (auto &particle : particle_handler.particles_in_cell(cell))
+          for (auto &particle : particles_in_cell)
             {
               shape_weights(particle, cell_index, w);
               double v_new[2] = {0., 0.}, dv[2] = {0., 0.};
@@ -1442,8 +1468,8 @@ namespace slidewave
                 cell_gradients[k++] = L;
             }
           if (with_stresses)
-            update_cell_stresses(cell, dt);
-        }
+            update_cell_stresses(particles_in_cell, dt);
+      });
     }
 
 
@@ -1452,16 +1478,11 @@ namespace slidewave
     MaterialPointSolver::update_stresses(const double dt)
     {
       NodeWeights w;
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          const unsigned int n_in_cell =
-            cell->is_locally_owned() ? particle_handler.n_particles_in_cell(cell) : 0;
-          if (n_in_cell == 0)
-            continue;
+      for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
           const unsigned int cell_index = cell->active_cell_index();
-          cell_gradients.resize(n_in_cell);
+          cell_gradients.resize(particle_handler.n_particles_in_cell(cell));
           unsigned int k = 0;
-          for (const auto &particle : particle_handler.particles_in_cell(cell))
+          for (const auto &particle : particles_in_cell)
             {
               shape_weights(particle, cell_index, w);
               dealii::Tensor<2, 2> L;
@@ -1476,16 +1497,16 @@ namespace slidewave
                 }
               cell_gradients[k++] = L;
             }
-          update_cell_stresses(cell, dt);
-        }
+          update_cell_stresses(particles_in_cell, dt);
+      });
     }
 
 
 
     void
     MaterialPointSolver::update_cell_stresses(
-      const dealii::Triangulation<2>::active_cell_iterator &cell,
-      const double                                          dt)
+      const dealii::Particles::ParticleHandler<2>::particle_iterator_range &particles_in_cell,
+      const double                                                          dt)
     {
       // With B-bar, the volumetric part of each point's strain increment is replaced by
       // its volume-weighted average over the cell (mean dilatation).
@@ -1494,7 +1515,7 @@ namespace slidewave
         {
           double       volume_sum = 0., volumetric_sum = 0.;
           unsigned int k = 0;
-          for (const auto &particle : particle_handler.particles_in_cell(cell))
+          for (const auto &particle : particles_in_cell)
             {
               const dealii::Tensor<2, 2> &L = cell_gradients[k++];
               const double V = particle.get_properties()[property::volume];
@@ -1507,7 +1528,7 @@ namespace slidewave
       const bool   stretch_domain = prm.shape_function == ShapeFunction::cpgimp;
       const double max_half       = 0.5 * prm.cell_size;
       unsigned int k              = 0;
-      for (auto &particle : particle_handler.particles_in_cell(cell))
+      for (auto &particle : particles_in_cell)
         {
           const dealii::Tensor<2, 2>   &L = cell_gradients[k++];
           dealii::SymmetricTensor<2, 3> strain_increment;
@@ -1552,30 +1573,148 @@ namespace slidewave
 
 
     void
+    MaterialPointSolver::set_timer(dealii::TimerOutput &timer_output)
+    {
+      timer = prm.detailed_timing ? &timer_output : nullptr;
+    }
+
+
+
+    void
     MaterialPointSolver::advance(const double dt)
     {
+      // A timer section per part of the step when 'Detailed timing' is on.
+      std::optional<dealii::TimerOutput::Scope> part;
+      const auto                                start = [&](const char *name) {
+        if (timer != nullptr)
+          {
+            part.reset();
+            part.emplace(*timer, name);
+          }
+      };
       if (prm.adaptivity.enabled && n_steps > 0 && n_steps % prm.adaptivity.interval == 0)
-        adapt_grid();
+        {
+          start("mpm step: grid changes");
+          adapt_grid();
+        }
       else if (n_steps > 0 && n_steps % prm.balance_interval == 0)
-        balance_load();
+        {
+          start("mpm step: grid changes");
+          balance_load();
+        }
       ++n_steps;
       for (auto &support : supports)
         support.active = loading_gravity || time < support.release_time;
+      start("mpm step: particles to grid");
       particles_to_grid();
+      start("mpm step: grid update");
       update_grid(dt);
-      new_positions.resize(particle_handler.n_locally_owned_particles());
+      // Indexed by the points' local indices (their memory slots), which may have gaps
+      // after a relocation.
+      new_positions.resize(particle_handler.get_property_pool().n_slots());
+      start("mpm step: grid to particles");
       if (prm.update_scheme == UpdateScheme::usl)
         grid_to_particles(dt, /*with_stresses=*/true);
       else
         {
           grid_to_particles(dt, /*with_stresses=*/false);
+          start("mpm step: MUSL re-map and stresses");
           remap_velocities_to_grid();
           update_stresses(dt);
         }
-      for (auto &particle : particle_handler)
-        particle.set_location(new_positions[particle.get_local_index()]);
-      particle_handler.sort_particles_into_subdomains_and_cells();
+      start("mpm step: sort particles");
+      if (prm.full_sort_every_step || n_steps % prm.balance_interval == 0 ||
+          !relocate_within_patches())
+        {
+          ++n_full_sorts;
+          for (auto &particle : particle_handler)
+            particle.set_location(new_positions[particle.get_local_index()]);
+          particle_handler.sort_particles_into_subdomains_and_cells();
+        }
       time += dt;
+    }
+
+
+
+    bool
+    MaterialPointSolver::relocate_within_patches()
+    {
+      // The reference coordinates exactly as deal.II's MappingCartesian computes them,
+      // and its test for a point inside the unit cell, so that this path and the full
+      // sort put every point in the same cell at the same reference coordinates.
+      const auto locate = [](const PatchCell &c, const dealii::Point<2> &x,
+                             dealii::Point<2> &reference) {
+        reference[0] = (x[0] - c.x0) / c.hx;
+        reference[1] = (x[1] - c.y0) / c.hy;
+        return reference[0] >= 0. && reference[0] <= 1. && reference[1] >= 0. &&
+               reference[1] <= 1.;
+      };
+      moving_particles.clear();
+      moving_data.clear();
+      const unsigned int n_properties = particle_handler.n_properties_per_particle();
+      bool               leaves_patch = false;
+      dealii::Point<2>   reference;
+      for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
+        const unsigned int cell_index = cell->active_cell_index();
+        const unsigned int own        = patch_start[cell_index];
+        const unsigned int end        = patch_start[cell_index + 1];
+        for (auto particle = particles_in_cell.begin(); particle != particles_in_cell.end();
+             ++particle)
+          {
+            const dealii::Point<2> &x = new_positions[particle->get_local_index()];
+            particle->set_location(x);
+            if (locate(patch_cells[own], x, reference))
+              {
+                particle->set_reference_location(reference);
+                continue;
+              }
+            unsigned int target = end;
+            for (unsigned int c = own + 1; c < end; ++c)
+              if (locate(patch_cells[c], x, reference))
+                {
+                  target = c;
+                  break;
+                }
+            if (target == end || !patch_cell_iterators[target]->is_locally_owned())
+              {
+                leaves_patch = true; // out of the domain, to another rank, beyond the patch
+                continue;
+              }
+            // A copy of what the point carries, to insert it in its new cell.
+            moving_particles.push_back(
+              {particle, patch_cell_iterators[target], particle->get_id(), x, reference});
+            const auto properties = particle->get_properties();
+            moving_data.insert(moving_data.end(), properties.begin(), properties.end());
+          }
+      });
+      // Collective: one reduction decides for all ranks.
+      const unsigned int local[2]  = {leaves_patch ? 1u : 0u,
+                                      moving_particles.empty() ? 0u : 1u};
+      unsigned int       global[2] = {0, 0};
+      dealii::Utilities::MPI::max(dealii::ArrayView<const unsigned int>(local, 2),
+                                  MPI_COMM_WORLD, dealii::ArrayView<unsigned int>(global, 2));
+      if (global[0] != 0)
+        return false; // the full sort takes over (the locations are set)
+      if (global[1] == 0)
+        return true;
+
+      // As deal.II's sort does it, so that the points end up in the same order within
+      // their cells: the moving points are appended to their new cells first, then
+      // removed from their old ones back to front (the points were collected cell by cell
+      // in increasing order within each cell; a removal moves a cell's last point into
+      // the gap, so the iterators of the points still to be removed stay valid).
+      for (unsigned int k = 0; k < moving_particles.size(); ++k)
+        {
+          const MovingParticle &moving = moving_particles[k];
+          particle_handler.insert_particle(
+            moving.location, moving.reference, moving.id, moving.cell,
+            dealii::ArrayView<const double>(moving_data.data() + k * n_properties,
+                                            n_properties));
+        }
+      for (auto moving = moving_particles.rbegin(); moving != moving_particles.rend(); ++moving)
+        particle_handler.remove_particle(moving->particle);
+      particle_handler.update_cached_numbers();
+      return true;
     }
 
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -84,6 +85,9 @@ namespace slidewave
       double               time_step_multiplier   = 0.5;
       double               fixed_time_step        = 0.;
       bool                 b_bar                  = true;
+      bool                 detailed_timing        = false;
+      /** 'Particle relocation = full sort': deal.II's sort every step. */
+      bool                 full_sort_every_step   = false;
       dealii::Tensor<1, 2> gravity;
       double               damping                = 0.;
       /** Boundary conditions on the left, right, bottom and top sides (ids 0-3). */
@@ -220,6 +224,13 @@ namespace slidewave
       double
       stable_time_step() const;
 
+      /**
+       * Times the parts of each step in @p timer_output when 'Detailed timing' is on
+       * (otherwise nothing); the timer must outlive the solver's steps.
+       */
+      void
+      set_timer(dealii::TimerOutput &timer_output);
+
       /** One step of length @p dt. */
       void
       advance(double dt);
@@ -303,6 +314,13 @@ namespace slidewave
         return n_grid_changes;
       }
 
+      /** Steps whose points were relocated by deal.II's full sort ('Particle relocation'). */
+      unsigned int
+      n_full_particle_sorts() const
+      {
+        return n_full_sorts;
+      }
+
       /** Time of the particles' state. */
       double
       current_time() const
@@ -320,7 +338,8 @@ namespace slidewave
     private:
       using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
 
-      /** The coarse grid (before any adaptive refinement) and the weight signal. */
+      /** The coarse grid (as few cells as the sides allow; base_refinements global
+       *  refinements make the base grid) and the weight signal. */
       void
       create_coarse_grid();
 
@@ -388,9 +407,42 @@ namespace slidewave
       void
       prescribe_nodal_velocities(double dt);
 
+      /** Stresses of the points of one cell from their velocity gradients
+       *  (cell_gradients, in the order of @p particles_in_cell). */
       void
-      update_cell_stresses(const dealii::Triangulation<2>::active_cell_iterator &cell,
-                           double                                                dt);
+      update_cell_stresses(
+        const dealii::Particles::ParticleHandler<2>::particle_iterator_range &particles_in_cell,
+        double                                                                dt);
+
+      /**
+       * Calls @p f(cell, particles) for every locally owned cell that holds material
+       * points, in the particle handler's order of cells (after a full sort the points'
+       * memory is in this order): empty cells cost nothing and the points' memory is
+       * read front to back.
+       */
+      template <typename Function>
+      void
+      for_each_cell_with_particles(const Function &f)
+      {
+        auto       particle = particle_handler.begin();
+        const auto end      = particle_handler.end();
+        while (particle != end)
+          {
+            const auto cell  = particle->get_surrounding_cell();
+            const auto range = particle_handler.particles_in_cell(cell);
+            f(cell, range);
+            particle = range.end();
+          }
+      }
+
+      /**
+       * Puts every point at its new position (new_positions) in its cell, looking only in
+       * the patch of its old cell, and moves the points that changed cell (collective).
+       * Returns false, having set the locations only, when some point on some rank left
+       * its rank's cells or its patch: then deal.II's full sort must run.
+       */
+      bool
+      relocate_within_patches();
 
       void
       particles_to_grid();
@@ -438,6 +490,8 @@ namespace slidewave
       /** The active cells around each vertex (rebuilt when the grid changes). */
       std::vector<std::set<dealii::Triangulation<2>::active_cell_iterator>> vertex_cells;
       std::vector<PatchCell>    patch_cells;
+      /** The cell of each entry of patch_cells. */
+      std::vector<dealii::Triangulation<2>::active_cell_iterator> patch_cell_iterators;
 
       /** Hanging nodes (local indices) and their parents and weights:
        * hanging_parent[hanging_start[k] .. hanging_start[k+1]) for hanging_node[k]. */
@@ -445,6 +499,25 @@ namespace slidewave
       std::vector<double>       hanging_weight;
 
       unsigned int n_steps = 0, n_grid_changes = 0;
+      /** Global refinements of the coarse grid up to the base grid (create_coarse_grid). */
+      unsigned int base_refinements = 0;
+      /** Steps relocated by the full sort (advance). */
+      unsigned int n_full_sorts = 0;
+      /** A point that changed cell within its patch (relocate_within_patches). */
+      struct MovingParticle
+      {
+        dealii::Particles::ParticleHandler<2>::particle_iterator particle;
+        dealii::Triangulation<2>::active_cell_iterator           cell;
+        dealii::types::particle_index                            id;
+        dealii::Point<2>                                         location, reference;
+      };
+      /** Scratch of relocate_within_patches(), kept between steps (no allocation once
+       *  grown): the moving points and their properties, one row each. */
+      std::vector<MovingParticle> moving_particles;
+      std::vector<double>         moving_data;
+
+      /** Where the parts of a step are timed ('Detailed timing'), or null. */
+      dealii::TimerOutput *timer = nullptr;
 
       double lost_mass = 0.;
       /** The first point of this rank that left through a side that is not free: points may

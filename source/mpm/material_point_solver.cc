@@ -573,6 +573,9 @@ namespace slidewave
       create_particles();
       // The partition of the set-up knew cells only; balance cells and points now.
       balance_load();
+      // Points that arrived from other ranks sit in memory in the order they came; the
+      // full sort puts every rank's point memory in cell order for the first steps.
+      particle_handler.sort_particles_into_subdomains_and_cells();
       if (apply_loads)
         apply_loads();
       if (prm.initial_stress == InitialStress::uniform)

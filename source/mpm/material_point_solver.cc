@@ -152,7 +152,7 @@ namespace slidewave
                           "cell plus this per point). Measured (doc/mpm.md): a point costs "
                           "far more than an empty cell; with 100 a column filling a third of "
                           "the grid ended up on one rank of two, with 10000 the points "
-                          "split evenly and two ranks ran 1.5 to 1.9 times faster than one.");
+                          "split evenly.");
         prm.declare_entry("Imbalance threshold", "1.1", Double(0.),
                           "Repartition when the most loaded rank has more than this times "
                           "the mean work (0: never, except when an adaptive grid changes).");

@@ -1,3 +1,5 @@
+#include <deal.II/base/utilities.h>
+
 #include <slidewave/core/input_error.h>
 
 #include <cmath>
@@ -68,5 +70,34 @@ namespace slidewave
                        "a number in " + std::string(lower_inclusive ? "[" : "(") +
                          to_string(lower) + ", " + to_string(upper) +
                          (upper_inclusive ? "]" : ")"));
+  }
+
+
+
+  std::vector<double>
+  parse_number_list(const std::string &parameter,
+                    const std::string &text,
+                    const std::string &allowed,
+                    const unsigned int count)
+  {
+    std::vector<double> values;
+    for (const std::string &item : dealii::Utilities::split_string_list(text, ','))
+      {
+        try
+          {
+            std::size_t  used  = 0;
+            const double value = std::stod(item, &used);
+            if (used != item.size() || !std::isfinite(value))
+              throw std::invalid_argument("");
+            values.push_back(value);
+          }
+        catch (const std::exception &)
+          {
+            throw InputError(parameter, text, allowed);
+          }
+      }
+    if (count > 0 && values.size() != count)
+      throw InputError(parameter, text, allowed);
+    return values;
   }
 } // namespace slidewave

@@ -99,23 +99,10 @@ namespace slidewave
                                                         ExactSolution::none;
         rotation_rate = prm.get_double("Rotation rate");
         {
-          const std::string text  = prm.get("Rotation centre");
-          const auto        parts = dealii::Utilities::split_string_list(text, ',');
-          bool              ok    = parts.size() == 2;
-          for (unsigned int d = 0; ok && d < 2; ++d)
-            try
-              {
-                std::size_t used   = 0;
-                rotation_centre[d] = std::stod(parts[d], &used);
-                ok                 = used == parts[d].size();
-              }
-            catch (const std::exception &)
-              {
-                ok = false;
-              }
-          if (!ok)
-            throw InputError(section + "/Verification/Rotation centre", text,
-                             "two numbers x, y");
+          const auto centre = parse_number_list(section + "/Verification/Rotation centre",
+                                                prm.get("Rotation centre"),
+                                                "two numbers x, y", 2);
+          rotation_centre   = dealii::Point<2>(centre[0], centre[1]);
         }
         bar_length    = prm.get_double("Bar length");
         bar_amplitude = prm.get_double("Bar amplitude");

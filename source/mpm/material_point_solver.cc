@@ -25,27 +25,8 @@ namespace slidewave
       parse_numbers(const std::string &parameter, const std::string &text,
                     const unsigned int count)
       {
-        std::vector<double> values;
-        for (const auto &item : dealii::Utilities::split_string_list(text, ','))
-          {
-            try
-              {
-                std::size_t  used  = 0;
-                const double value = std::stod(item, &used);
-                if (used != item.size() || !std::isfinite(value))
-                  throw std::invalid_argument("");
-                values.push_back(value);
-              }
-            catch (const std::exception &)
-              {
-                values.clear();
-                break;
-              }
-          }
-        if (values.size() != count)
-          throw InputError(parameter, text,
-                           std::to_string(count) + " comma-separated numbers");
-        return values;
+        return parse_number_list(parameter, text,
+                                 std::to_string(count) + " comma-separated numbers", count);
       }
 
       GridBoundary
@@ -353,23 +334,11 @@ namespace slidewave
                          type == "uniform"         ? InitialStress::uniform :
                                                      InitialStress::none;
         {
-          const std::string text  = prm.get("Uniform stress");
-          const auto        parts = dealii::Utilities::split_string_list(text, ',');
-          bool              ok    = parts.size() == 4;
-          for (unsigned int i = 0; ok && i < 4; ++i)
-            try
-              {
-                std::size_t used  = 0;
-                uniform_stress[i] = std::stod(parts[i], &used);
-                ok = used == parts[i].size() && std::isfinite(uniform_stress[i]);
-              }
-            catch (const std::exception &)
-              {
-                ok = false;
-              }
-          if (!ok)
-            throw InputError(path + "/Initial stress/Uniform stress", text,
-                             "four finite numbers sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa]");
+          const auto stress =
+            parse_number_list(path + "/Initial stress/Uniform stress", prm.get("Uniform stress"),
+                              "four finite numbers sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa]",
+                              4);
+          std::copy(stress.begin(), stress.end(), uniform_stress.begin());
         }
         const std::string k0 = dealii::Utilities::trim(prm.get("K0"));
         if (k0 == "auto")

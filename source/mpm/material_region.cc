@@ -11,34 +11,6 @@ namespace slidewave
 {
   namespace mpm
   {
-    namespace
-    {
-      std::vector<double>
-      parse_numbers(const std::string &parameter, const std::string &text,
-                    const std::string &allowed)
-      {
-        std::vector<double> values;
-        for (const auto &item : dealii::Utilities::split_string_list(text, ','))
-          {
-            try
-              {
-                std::size_t  used  = 0;
-                const double value = std::stod(item, &used);
-                if (used != item.size() || !std::isfinite(value))
-                  throw std::invalid_argument("");
-                values.push_back(value);
-              }
-            catch (const std::exception &)
-              {
-                throw InputError(parameter, text, allowed);
-              }
-          }
-        return values;
-      }
-    } // namespace
-
-
-
     void
     MaterialRegion::declare_parameters(dealii::ParameterHandler &prm)
     {
@@ -72,7 +44,7 @@ namespace slidewave
         return false;
       if (shape == "rectangle")
         {
-          const auto r = parse_numbers(path + "/Rectangle", prm.get("Rectangle"),
+          const auto r = parse_number_list(path + "/Rectangle", prm.get("Rectangle"),
                                        "four numbers x_min, y_min, x_max, y_max");
           if (r.size() != 4 || !(r[2] > r[0]) || !(r[3] > r[1]))
             throw InputError(path + "/Rectangle", prm.get("Rectangle"),
@@ -85,7 +57,7 @@ namespace slidewave
         {
           for (const auto &vertex : dealii::Utilities::split_string_list(prm.get("Polygon"), ';'))
             {
-              const auto v = parse_numbers(path + "/Polygon", vertex,
+              const auto v = parse_number_list(path + "/Polygon", vertex,
                                            "vertices 'x1, y1; x2, y2; ...'");
               if (v.size() != 2)
                 throw InputError(path + "/Polygon", prm.get("Polygon"),

@@ -15,24 +15,7 @@ namespace slidewave
       dealii::Point<2>
       parse_point(const std::string &parameter, const std::string &text)
       {
-        const auto items = dealii::Utilities::split_string_list(text, ',');
-        double     xy[2] = {0., 0.};
-        bool       ok    = items.size() == 2;
-        for (unsigned int d = 0; ok && d < 2; ++d)
-          {
-            try
-              {
-                std::size_t used = 0;
-                xy[d]            = std::stod(items[d], &used);
-                ok               = used == items[d].size() && std::isfinite(xy[d]);
-              }
-            catch (const std::exception &)
-              {
-                ok = false;
-              }
-          }
-        if (!ok)
-          throw InputError(parameter, text, "a point 'x, y' [m]");
+        const auto xy = parse_number_list(parameter, text, "a point 'x, y' [m]", 2);
         return dealii::Point<2>(xy[0], xy[1]);
       }
     } // namespace

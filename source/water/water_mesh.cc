@@ -15,23 +15,7 @@ namespace slidewave
       std::vector<double>
       parse_double_list(const std::string &parameter, const std::string &text)
       {
-        std::vector<double> values;
-        for (const std::string &item : dealii::Utilities::split_string_list(text, ','))
-          {
-            try
-              {
-                std::size_t used  = 0;
-                const double value = std::stod(item, &used);
-                if (used != item.size() || !std::isfinite(value))
-                  throw std::invalid_argument("");
-                values.push_back(value);
-              }
-            catch (const std::exception &)
-              {
-                throw InputError(parameter, text, "a comma-separated list of numbers");
-              }
-          }
-        return values;
+        return parse_number_list(parameter, text, "a comma-separated list of numbers");
       }
     } // namespace
 

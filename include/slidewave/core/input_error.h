@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace slidewave
 {
@@ -62,6 +63,17 @@ namespace slidewave
                    bool               lower_inclusive,
                    double             upper,
                    bool               upper_inclusive);
+
+  /**
+   * The comma-separated finite numbers of @p text. Throws InputError(@p parameter, @p text,
+   * @p allowed) when an item is not a finite number or, if @p count > 0, when there are not
+   * exactly @p count of them.
+   */
+  std::vector<double>
+  parse_number_list(const std::string &parameter,
+                    const std::string &text,
+                    const std::string &allowed,
+                    unsigned int       count = 0);
 } // namespace slidewave
 
 #endif

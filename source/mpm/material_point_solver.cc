@@ -1595,12 +1595,14 @@ namespace slidewave
           update_stresses(dt);
         }
       start("mpm step: sort particles");
-      if (prm.full_sort_every_step || n_steps % prm.balance_interval == 0 ||
-          !relocate_within_patches())
+      const bool full_sort = prm.full_sort_every_step || n_steps % prm.balance_interval == 0;
+      if (full_sort)
+        for (auto &particle : particle_handler)
+          particle.set_location(new_positions[particle.get_local_index()]);
+      // relocate_within_patches() sets the locations itself, also when it gives up.
+      if (full_sort || !relocate_within_patches())
         {
           ++n_full_sorts;
-          for (auto &particle : particle_handler)
-            particle.set_location(new_positions[particle.get_local_index()]);
           particle_handler.sort_particles_into_subdomains_and_cells();
         }
       time += dt;
@@ -1652,7 +1654,8 @@ namespace slidewave
                 leaves_patch = true; // out of the domain, to another rank, beyond the patch
                 continue;
               }
-            // A copy of what the point carries, to insert it in its new cell.
+            // A copy of what the point carries, to insert it in its new cell (inserting can
+            // grow the property pool and move the memory the point's properties are in).
             moving_particles.push_back(
               {particle, patch_cell_iterators[target], particle->get_id(), x, reference});
             const auto properties = particle->get_properties();

@@ -18,13 +18,21 @@ namespace slidewave
     std::exception_ptr         failure;
     bool                       within = false;
     {
-      dealii::TimerOutput timer(MPI_COMM_WORLD, timer_out,
+      // Each rank times its own sections (a timer on MPI_COMM_WORLD would put a barrier
+      // at the start and the end of every section, a few per time step); the summary is
+      // rank 0's, and with several ranks the spread over the ranks is printed before it.
+      dealii::TimerOutput timer(timer_out,
                                 test_mode ? dealii::TimerOutput::never :
                                             dealii::TimerOutput::summary,
                                 dealii::TimerOutput::wall_times);
       try
         {
           within = time_loop(timer);
+          // Each section's wall time over the ranks (min, average, max, and which rank):
+          // where one rank waits for another. Collective, so only after a loop that ended
+          // normally on every rank.
+          if (!test_mode && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+            timer.print_wall_time_statistics(MPI_COMM_WORLD);
         }
       catch (const InputError &)
         {

@@ -635,6 +635,16 @@ namespace slidewave
                     cell->vertex(v);
         }
       const auto &partitioner = nodal_mass.get_partitioner();
+      active_nodes.clear();
+      node_is_active.assign(partitioner->locally_owned_size() + partitioner->n_ghost_indices(),
+                            0);
+      import_nodes.clear();
+      for (const auto &[first, last] : partitioner->import_indices())
+        for (unsigned int i = first; i < last; ++i)
+          import_nodes.push_back(i);
+      std::sort(import_nodes.begin(), import_nodes.end());
+      import_nodes.erase(std::unique(import_nodes.begin(), import_nodes.end()),
+                         import_nodes.end());
 
       // Hanging nodes: each constrained node's parents and weights, as local indices.
       hanging_start.assign(1, 0);
@@ -1161,14 +1171,51 @@ namespace slidewave
 
 
     void
+    MaterialPointSolver::collect_active_nodes()
+    {
+      for (const unsigned int i : active_nodes)
+        {
+          nodal_mass.local_element(i) = 0.;
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              momentum[d].local_element(i)     = 0.;
+              force[d].local_element(i)        = 0.;
+              velocity[d].local_element(i)     = 0.;
+              velocity_old[d].local_element(i) = 0.;
+            }
+          node_is_active[i] = 0;
+        }
+      active_nodes.clear();
+      const auto mark = [this](const unsigned int i) {
+        if (node_is_active[i] == 0)
+          {
+            node_is_active[i] = 1;
+            active_nodes.push_back(i);
+          }
+      };
+      // Q1 talks to the nodes of the point's cell, GIMP to those of the cell's patch.
+      const bool whole_patch = prm.shape_function != ShapeFunction::q1;
+      for_each_cell_with_particles([&](const auto &cell, const auto &) {
+        const unsigned int c   = cell->active_cell_index();
+        const unsigned int end = whole_patch ? patch_start[c + 1] : patch_start[c] + 1;
+        for (unsigned int e = patch_start[c]; e < end; ++e)
+          for (const unsigned int i : patch_cells[e].node)
+            mark(i);
+      });
+      for (unsigned int k = 0; k < hanging_node.size(); ++k)
+        if (node_is_active[hanging_node[k]] != 0)
+          for (unsigned int e = hanging_start[k]; e < hanging_start[k + 1]; ++e)
+            mark(hanging_parent[e]);
+      for (const unsigned int i : import_nodes)
+        mark(i);
+    }
+
+
+
+    void
     MaterialPointSolver::particles_to_grid()
     {
-      nodal_mass = 0.;
-      for (unsigned int d = 0; d < 2; ++d)
-        {
-          momentum[d] = 0.;
-          force[d]    = 0.;
-        }
+      collect_active_nodes();
       NodeWeights  w;
       const double gx = prm.gravity[0], gy = prm.gravity[1];
       const bool   point_forces = prm.point_forces;
@@ -1272,14 +1319,15 @@ namespace slidewave
     MaterialPointSolver::update_grid(const double dt)
     {
       // Nodes with less than this mass are treated as empty: their velocity is zero.
-      const double   tiny  = empty_node_mass();
-      const double   alpha = damping;
-      const unsigned n_own = nodal_mass.locally_owned_size();
+      const double tiny  = empty_node_mass();
+      const double alpha = damping;
       if (prm.prescribed_velocity)
         prescribe_nodal_velocities(dt);
       else
         {
-          for (unsigned int i = 0; i < n_own; ++i)
+          // Ghost entries among the active nodes hold no mass after the compress (their
+          // velocities come from their owners below).
+          for (const unsigned int i : active_nodes)
             {
               const double m = nodal_mass.local_element(i);
               for (unsigned int d = 0; d < 2; ++d)
@@ -1355,8 +1403,9 @@ namespace slidewave
       if (prm.prescribed_velocity)
         return; // the nodal velocities are given
       // MUSL: nodal momentum from the updated particle velocities, on the old positions.
-      for (unsigned int d = 0; d < 2; ++d)
-        momentum[d] = 0.;
+      for (const unsigned int i : active_nodes)
+        for (unsigned int d = 0; d < 2; ++d)
+          momentum[d].local_element(i) = 0.;
       NodeWeights w;
       for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
           const unsigned int cell_index = cell->active_cell_index();
@@ -1378,9 +1427,8 @@ namespace slidewave
           condense_hanging_nodes(momentum[d]);
           momentum[d].compress(dealii::VectorOperation::add);
         }
-      const double   tiny  = empty_node_mass();
-      const unsigned n_own = nodal_mass.locally_owned_size();
-      for (unsigned int i = 0; i < n_own; ++i)
+      const double tiny = empty_node_mass();
+      for (const unsigned int i : active_nodes)
         {
           const double m = nodal_mass.local_element(i);
           for (unsigned int d = 0; d < 2; ++d)

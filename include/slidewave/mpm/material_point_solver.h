@@ -447,6 +447,11 @@ namespace slidewave
       void
       particles_to_grid();
 
+      /** Clears last step's nodal values and finds this step's active nodes
+       * (particles_to_grid). */
+      void
+      collect_active_nodes();
+
       void
       update_grid(double dt);
 
@@ -471,6 +476,18 @@ namespace slidewave
 
       Vector nodal_mass;
       std::array<Vector, 2> momentum, force, velocity, velocity_old;
+
+      /** The grid work of a step is over the nodes the points talk to, not the whole grid
+       * (most of which is empty in a landslide): active_nodes are the local indices (owned
+       * and ghost) of the nodes of the cells with points (their patches with GIMP), the
+       * parents of hanging ones among them and the owned nodes other ranks send to. Outside
+       * them the nodal mass, momentum, force and velocities are zero (a step clears them
+       * on last step's active nodes before it scatters). */
+      std::vector<unsigned int> active_nodes;
+      /** Per local node (owned and ghost): in active_nodes. */
+      std::vector<unsigned char> node_is_active;
+      /** Owned nodes (local indices) that are ghosts of other ranks. */
+      std::vector<unsigned int> import_nodes;
 
       /** Local indices of owned nodes where v_x (0) or v_y (1) is held at zero. */
       std::array<std::vector<unsigned int>, 2> constrained_dofs;

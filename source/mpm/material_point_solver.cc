@@ -127,13 +127,13 @@ namespace slidewave
       prm.leave_subsection();
       prm.enter_subsection("Load balancing");
       {
-        prm.declare_entry("Particle weight", "10000", Integer(0),
+        prm.declare_entry("Particle weight", "100000", Integer(0),
                           "Cost of a material point relative to a cell's 1000 when the grid "
                           "is partitioned among MPI ranks (the work of a rank is 1000 per "
-                          "cell plus this per point). Measured (doc/mpm.md): a point costs "
-                          "far more than an empty cell; with 100 a column filling a third of "
-                          "the grid ended up on one rank of two, with 10000 the points "
-                          "split evenly.");
+                          "cell plus this per point). A step's grid work is over the nodes "
+                          "the points talk to, so an empty cell costs next to nothing: the "
+                          "default makes 100 empty cells weigh as much as a point (doc/mpm.md, "
+                          "Throughput).");
         prm.declare_entry("Imbalance threshold", "1.1", Double(0.),
                           "Repartition when the most loaded rank has more than this times "
                           "the mean work (0: never, except when an adaptive grid changes).");
@@ -524,6 +524,10 @@ namespace slidewave
     MaterialPointSolver::setup(const double start_time, const std::function<void()> &apply_loads)
     {
       time = start_time;
+      // Until the points exist, every partition of the grid (the refinements below, the
+      // repartition) weighs the cells by the points they will get, so that each rank
+      // creates the points it keeps: none move and their memory is in cell order.
+      weights_from_regions = true;
       create_coarse_grid();
       tria.refine_global(base_refinements);
       if (prm.adaptivity.enabled)
@@ -536,15 +540,18 @@ namespace slidewave
                 cell->set_refine_flag();
             tria.execute_coarsening_and_refinement();
           }
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 &&
+          prm.adaptivity.imbalance_threshold > 0.)
+        tria.repartition();
       dofs.reinit(tria);
       setup_grid_data();
       initialize_particle_handler();
       create_particles();
-      // The partition of the set-up knew cells only; balance cells and points now.
-      balance_load();
-      // Points that arrived from other ranks sit in memory in the order they came; the
-      // full sort puts every rank's point memory in cell order for the first steps.
-      particle_handler.sort_particles_into_subdomains_and_cells();
+      weights_from_regions = false;
+      // Points that arrived from other ranks would sit in memory in the order they came;
+      // the full sort puts every rank's point memory in cell order for the first steps.
+      if (balance_load())
+        particle_handler.sort_particles_into_subdomains_and_cells();
       if (apply_loads)
         apply_loads();
       if (prm.initial_stress == InitialStress::uniform)
@@ -758,23 +765,37 @@ namespace slidewave
     MaterialPointSolver::cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
                                      const dealii::Triangulation<2>::CellStatus status) const
     {
-      // A cell costs about as much as a few points (the grid update); the base weight of
-      // 1000 per cell is added by the triangulation.
+      // 1000 per cell (the convention of deal.II's weights; its 'weight' signal, unlike the
+      // older 'cell_weight', adds no base weight itself) plus the cell's points.
       unsigned int n = 0;
+      const auto   count = [&n](const auto &...) { ++n; };
+      const unsigned int per_direction = prm.particles_per_direction;
       switch (status)
         {
           case dealii::Triangulation<2>::CELL_PERSIST:
+            if (weights_from_regions)
+              for_each_point_to_create(cell, per_direction, count);
+            else
+              n = particle_handler.n_particles_in_cell(cell);
+            break;
           case dealii::Triangulation<2>::CELL_REFINE:
-            n = particle_handler.n_particles_in_cell(cell);
+            // The children's lattices together are the parent's at twice the density.
+            if (weights_from_regions)
+              for_each_point_to_create(cell, 2 * per_direction, count);
+            else
+              n = particle_handler.n_particles_in_cell(cell);
             break;
           case dealii::Triangulation<2>::CELL_COARSEN:
             for (const auto &child : cell->child_iterators())
-              n += particle_handler.n_particles_in_cell(child);
+              if (weights_from_regions)
+                for_each_point_to_create(child, per_direction, count);
+              else
+                n += particle_handler.n_particles_in_cell(child);
             break;
           default:
             break;
         }
-      return prm.adaptivity.particle_weight * n;
+      return 1000 + prm.adaptivity.particle_weight * n;
     }
 
 
@@ -795,19 +816,20 @@ namespace slidewave
 
 
 
-    void
+    bool
     MaterialPointSolver::balance_load()
     {
       if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ||
           !(prm.adaptivity.imbalance_threshold > 0.) ||
           load_imbalance() <= prm.adaptivity.imbalance_threshold)
-        return;
+        return false;
       // Points travel with their cells to their new ranks.
       particle_handler.prepare_for_coarsening_and_refinement();
       tria.repartition();
       particle_handler.unpack_after_coarsening_and_refinement();
       setup_grid_data();
       ++n_grid_changes;
+      return true;
     }
 
 
@@ -1061,6 +1083,33 @@ namespace slidewave
 
 
 
+    template <typename Function>
+    void
+    MaterialPointSolver::for_each_point_to_create(
+      const dealii::Triangulation<2>::cell_iterator &cell,
+      const unsigned int                             n,
+      const Function                                &f) const
+    {
+      const dealii::Point<2> origin = cell->vertex(0);
+      const double           hx     = cell->vertex(1)[0] - origin[0];
+      const double           hy     = cell->vertex(2)[1] - origin[1];
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const dealii::Point<2> reference((i + 0.5) / n, (j + 0.5) / n);
+            const dealii::Point<2> position(origin[0] + reference[0] * hx,
+                                            origin[1] + reference[1] * hy);
+            for (unsigned int r = 0; r < prm.regions.size(); ++r)
+              if (prm.regions[r].contains(position))
+                {
+                  f(position, reference, r, j * n + i);
+                  break;
+                }
+          }
+    }
+
+
+
     void
     MaterialPointSolver::create_particles()
     {
@@ -1070,21 +1119,12 @@ namespace slidewave
         {
           if (!cell->is_locally_owned())
             continue;
-          const dealii::Point<2> origin = cell->vertex(0);
-          const double hx = cell->vertex(1)[0] - origin[0];
-          const double hy = cell->vertex(2)[1] - origin[1];
-          for (unsigned int j = 0; j < n; ++j)
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                const dealii::Point<2> reference((i + 0.5) / n, (j + 0.5) / n);
-                const dealii::Point<2> position(origin[0] + reference[0] * hx,
-                                                origin[1] + reference[1] * hy);
-                int region_index = -1;
-                for (unsigned int r = 0; r < prm.regions.size() && region_index < 0; ++r)
-                  if (prm.regions[r].contains(position))
-                    region_index = r;
-                if (region_index < 0)
-                  continue;
+          const double hx = cell->vertex(1)[0] - cell->vertex(0)[0];
+          const double hy = cell->vertex(2)[1] - cell->vertex(0)[1];
+          for_each_point_to_create(
+            cell, n,
+            [&](const dealii::Point<2> &position, const dealii::Point<2> &reference,
+                const unsigned int region_index, const unsigned int lattice_index) {
                 const MaterialRegion &region = prm.regions[region_index];
                 const unsigned int    m      = region.material_index;
                 const double volume = hx * hy / (n * n);
@@ -1103,10 +1143,10 @@ namespace slidewave
                 // Identifiers that do not depend on the partition: the global index of the
                 // cell and the position in it.
                 const dealii::types::particle_index id =
-                  cell->global_active_cell_index() * n * n + j * n + i;
+                  cell->global_active_cell_index() * n * n + lattice_index;
                 particle_handler.insert_particle(position, reference, id, cell,
                                                  dealii::make_array_view(properties));
-              }
+            });
         }
       particle_handler.update_cached_numbers();
     }

@@ -347,8 +347,17 @@ namespace slidewave
       void
       initialize_particle_handler();
 
+      /** Fills the owned cells with points: n x n per cell where they lie in a region. */
       void
       create_particles();
+
+      /** Calls f(position, reference, region index, lattice index in the cell) for the
+       * points that create_particles() puts in @p cell with @p n per direction. */
+      template <typename Function>
+      void
+      for_each_point_to_create(const dealii::Triangulation<2>::cell_iterator &cell,
+                               unsigned int                                  n,
+                               const Function                               &f) const;
 
       /** Dofs, vectors, hanging nodes, boundary nodes, patches, walls of the grid. */
       void
@@ -358,13 +367,15 @@ namespace slidewave
       std::vector<bool>
       cells_near_material(bool from_regions) const;
 
-      /** Weight of a cell for partitioning: particle_weight per point (base 1000 added). */
+      /** Weight of a cell for partitioning: 1000 plus particle_weight per point (before the
+       * points exist, per point that create_particles() will put there). */
       unsigned int
       cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
                   dealii::Triangulation<2>::CellStatus           status) const;
 
-      /** Repartition by cells and points when the imbalance exceeds the threshold. */
-      void
+      /** Repartition by cells and points when the imbalance exceeds the threshold; true
+       * when it did. */
+      bool
       balance_load();
 
       /** Refine where material is, coarsen where it left, repartition if needed. */
@@ -544,6 +555,9 @@ namespace slidewave
       /** Local damping in force now (heavier during gravity loading). */
       double damping = 0.;
       bool   loading_gravity = false;
+      /** Set-up, before the points exist: the cell weights count the points to come, so
+       * that they are created on the ranks that keep them. */
+      bool weights_from_regions = false;
 
       /** Positions of the owned nodes (local index), for a prescribed velocity only. */
       std::vector<dealii::Point<2>> node_positions;

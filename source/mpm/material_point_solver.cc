@@ -548,10 +548,11 @@ namespace slidewave
       initialize_particle_handler();
       create_particles();
       weights_from_regions = false;
-      // Points that arrived from other ranks would sit in memory in the order they came;
-      // the full sort puts every rank's point memory in cell order for the first steps.
-      if (balance_load())
-        particle_handler.sort_particles_into_subdomains_and_cells();
+      balance_load();
+      // The first full sort builds deal.II's search structures of the grid (a few seconds
+      // at a million cells): here, not in the first step that needs one. It also puts the
+      // memory of points that arrived from other ranks in cell order.
+      particle_handler.sort_particles_into_subdomains_and_cells();
       if (apply_loads)
         apply_loads();
       if (prm.initial_stress == InitialStress::uniform)
@@ -1211,7 +1212,7 @@ namespace slidewave
 
 
     void
-    MaterialPointSolver::collect_active_nodes()
+    MaterialPointSolver::clear_active_nodes()
     {
       for (const unsigned int i : active_nodes)
         {
@@ -1226,28 +1227,19 @@ namespace slidewave
           node_is_active[i] = 0;
         }
       active_nodes.clear();
-      const auto mark = [this](const unsigned int i) {
-        if (node_is_active[i] == 0)
-          {
-            node_is_active[i] = 1;
-            active_nodes.push_back(i);
-          }
-      };
-      // Q1 talks to the nodes of the point's cell, GIMP to those of the cell's patch.
-      const bool whole_patch = prm.shape_function != ShapeFunction::q1;
-      for_each_cell_with_particles([&](const auto &cell, const auto &) {
-        const unsigned int c   = cell->active_cell_index();
-        const unsigned int end = whole_patch ? patch_start[c + 1] : patch_start[c] + 1;
-        for (unsigned int e = patch_start[c]; e < end; ++e)
-          for (const unsigned int i : patch_cells[e].node)
-            mark(i);
-      });
+    }
+
+
+
+    void
+    MaterialPointSolver::complete_active_nodes()
+    {
       for (unsigned int k = 0; k < hanging_node.size(); ++k)
         if (node_is_active[hanging_node[k]] != 0)
           for (unsigned int e = hanging_start[k]; e < hanging_start[k + 1]; ++e)
-            mark(hanging_parent[e]);
+            mark_active(hanging_parent[e]);
       for (const unsigned int i : import_nodes)
-        mark(i);
+        mark_active(i);
     }
 
 
@@ -1255,12 +1247,19 @@ namespace slidewave
     void
     MaterialPointSolver::particles_to_grid()
     {
-      collect_active_nodes();
+      clear_active_nodes();
       NodeWeights  w;
       const double gx = prm.gravity[0], gy = prm.gravity[1];
       const bool   point_forces = prm.point_forces;
+      // Q1 talks to the nodes of the point's cell, GIMP to those of the cell's patch.
+      const bool whole_patch = prm.shape_function != ShapeFunction::q1;
       for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
           const unsigned int cell_index = cell->active_cell_index();
+          const unsigned int patch_end =
+            whole_patch ? patch_start[cell_index + 1] : patch_start[cell_index] + 1;
+          for (unsigned int e = patch_start[cell_index]; e < patch_end; ++e)
+            for (const unsigned int i : patch_cells[e].node)
+              mark_active(i);
           for (const auto &particle : particles_in_cell)
             {
               shape_weights(particle, cell_index, w);
@@ -1288,6 +1287,7 @@ namespace slidewave
                 }
             }
       });
+      complete_active_nodes();
       condense_hanging_nodes(nodal_mass);
       for (unsigned int d = 0; d < 2; ++d)
         {

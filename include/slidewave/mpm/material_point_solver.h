@@ -458,10 +458,24 @@ namespace slidewave
       void
       particles_to_grid();
 
-      /** Clears last step's nodal values and finds this step's active nodes
-       * (particles_to_grid). */
+      /** Clears last step's nodal values on its active nodes and empties the list; the
+       * scatter then marks the nodes of each cell it visits (particles_to_grid). */
       void
-      collect_active_nodes();
+      clear_active_nodes();
+
+      void
+      mark_active(const unsigned int i)
+      {
+        if (node_is_active[i] == 0)
+          {
+            node_is_active[i] = 1;
+            active_nodes.push_back(i);
+          }
+      }
+
+      /** Adds the parents of active hanging nodes and the owned nodes other ranks send to. */
+      void
+      complete_active_nodes();
 
       void
       update_grid(double dt);

@@ -85,8 +85,11 @@ namespace slidewave
                         "Time the parts of each step (grid changes, particle to grid, grid "
                         "update, grid to particle with the stresses, MUSL re-map, sorting "
                         "the points into cells) as rows 'mpm step: ...' of the timer summary. "
-                        "Each part starts with a barrier over the ranks, so waiting for the "
-                        "slowest rank shows in the part where it happens.");
+                        "Each rank times its own parts (no barriers); with several ranks "
+                        "a table of each part's least, mean and largest time over the ranks "
+                        "comes first, and a rank waiting for another shows in the part where "
+                        "it waits (the ghost exchange of the scatter, the relocation's "
+                        "reduction).");
       prm.declare_entry("Local damping", "0", Double(0., 1.),
                         "Cundall's local non-viscous damping coefficient of the nodal "
                         "forces, for quasi-static loading; 0 for dynamics.");

@@ -886,6 +886,7 @@ namespace slidewave
       const auto &partitioner = nodal_mass.get_partitioner();
       const auto &vertex_to_cells = vertex_cells;
       patch_start.assign(tria.n_active_cells() + 1, 0);
+      own_cell.assign(tria.n_active_cells(), PatchCell{});
       patch_cells.clear();
       patch_cell_iterators.clear();
       std::vector<dealii::types::global_dof_index> dof_indices(4);
@@ -907,6 +908,7 @@ namespace slidewave
           if (!cell->is_locally_owned())
             continue;
           patch_cells.push_back(make_entry(cell));
+          own_cell[index] = patch_cells.back();
           patch_cell_iterators.push_back(cell);
           std::vector<dealii::Triangulation<2>::active_cell_iterator> neighbours;
           for (const unsigned int v : cell->vertex_indices())
@@ -1196,14 +1198,14 @@ namespace slidewave
                                        const unsigned int          cell_index,
                                        NodeWeights                &w) const
     {
-      const PatchCell *begin = patch_cells.data() + patch_start[cell_index];
       if (prm.shape_function == ShapeFunction::q1)
         {
           const dealii::Point<2> ref = particle.get_reference_location();
-          q1_weights(*begin, ref[0], ref[1], w);
+          q1_weights(own_cell[cell_index], ref[0], ref[1], w);
         }
       else
         {
+          const PatchCell       *begin = patch_cells.data() + patch_start[cell_index];
           const PatchCell       *end = patch_cells.data() + patch_start[cell_index + 1];
           const dealii::Point<2> x   = particle.get_location();
           const auto             p   = particle.get_properties();
@@ -1258,10 +1260,12 @@ namespace slidewave
       const bool whole_patch = prm.shape_function != ShapeFunction::q1;
       for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
           const unsigned int cell_index = cell->active_cell_index();
-          const unsigned int patch_end =
-            whole_patch ? patch_start[cell_index + 1] : patch_start[cell_index] + 1;
-          for (unsigned int e = patch_start[cell_index]; e < patch_end; ++e)
-            for (const unsigned int i : patch_cells[e].node)
+          if (whole_patch)
+            for (unsigned int e = patch_start[cell_index]; e < patch_start[cell_index + 1]; ++e)
+              for (const unsigned int i : patch_cells[e].node)
+                mark_active(i);
+          else
+            for (const unsigned int i : own_cell[cell_index].node)
               mark_active(i);
           for (const auto &particle : particles_in_cell)
             {
@@ -1728,7 +1732,7 @@ namespace slidewave
           {
             const dealii::Point<2> &x = new_positions[particle->get_local_index()];
             particle->set_location(x);
-            if (locate(patch_cells[own], x, reference))
+            if (locate(own_cell[cell_index], x, reference))
               {
                 particle->set_reference_location(reference);
                 continue;

@@ -526,6 +526,9 @@ namespace slidewave
       };
       std::vector<WallNodes> supports;
 
+      /** Each owned cell's own entry, by active cell index (a copy of the first of its
+       * patch): what Q1 and the relocation read for every point, densely stored. */
+      std::vector<PatchCell> own_cell;
       /** Cells of each owned cell's patch: patch_cells[patch_start[c] .. patch_start[c+1]),
        * the cell itself first. */
       std::vector<unsigned int> patch_start;

@@ -424,7 +424,7 @@ def main(argv=None):
     p.add_argument("--particle-weights", default="scene",
                    help="comma-separated values of 'Material points/Load balancing/Particle "
                         "weight' for the runs on more than one rank ('scene': the scene's, "
-                        "i.e. the default 10000)")
+                        "i.e. the default 100000)")
     p.add_argument("--hydrostatic", action="store_true",
                    help="run only the elastic hydrostatic column")
     p.add_argument("--no-hydrostatic", action="store_true",

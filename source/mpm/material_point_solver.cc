@@ -647,8 +647,10 @@ namespace slidewave
         }
       const auto &partitioner = nodal_mass.get_partitioner();
       active_nodes.clear();
-      node_is_active.assign(partitioner->locally_owned_size() + partitioner->n_ghost_indices(),
-                            0);
+      const unsigned int n_local = partitioner->locally_owned_size() + partitioner->n_ghost_indices();
+      node_is_active.assign(n_local, 0);
+      node_sums.assign(5 * n_local, 0.);
+      node_velocities.assign(4 * n_local, 0.);
       import_nodes.clear();
       for (const auto &[first, last] : partitioner->import_indices())
         for (unsigned int i = first; i < last; ++i)
@@ -1280,20 +1282,31 @@ namespace slidewave
               const double fy = point_forces ? p[property::point_force_y] : 0.;
               for (unsigned int k = 0; k < w.n; ++k)
                 {
-                  const unsigned int i  = w.node[k];
-                  const double       mk = w.value[k] * m;
-                  nodal_mass.local_element(i) += mk;
-                  momentum[0].local_element(i) += mk * vx;
-                  momentum[1].local_element(i) += mk * vy;
+                  double      *sums = node_sums.data() + 5 * w.node[k];
+                  const double mk   = w.value[k] * m;
+                  sums[0] += mk;
+                  sums[1] += mk * vx;
+                  sums[2] += mk * vy;
                   // Internal force -V sigma grad S (Eq. 16) plus gravity and the point
                   // force (Eq. 15).
-                  force[0].local_element(i) +=
+                  sums[3] +=
                     -V * (sxx * w.grad_x[k] + sxy * w.grad_y[k]) + mk * gx + w.value[k] * fx;
-                  force[1].local_element(i) +=
+                  sums[4] +=
                     -V * (sxy * w.grad_x[k] + syy * w.grad_y[k]) + mk * gy + w.value[k] * fy;
                 }
             }
       });
+      // Into the distributed vectors (the scratch is left zero for the next step).
+      for (const unsigned int i : active_nodes)
+        {
+          double *sums                 = node_sums.data() + 5 * i;
+          nodal_mass.local_element(i)  = sums[0];
+          momentum[0].local_element(i) = sums[1];
+          momentum[1].local_element(i) = sums[2];
+          force[0].local_element(i)    = sums[3];
+          force[1].local_element(i)    = sums[4];
+          std::fill(sums, sums + 5, 0.);
+        }
       complete_active_nodes();
       condense_hanging_nodes(nodal_mass);
       for (unsigned int d = 0; d < 2; ++d)
@@ -1407,6 +1420,15 @@ namespace slidewave
           interpolate_hanging_nodes(velocity[d]);
           interpolate_hanging_nodes(velocity_old[d]);
         }
+      // What the gather reads per node, side by side: v^new and v^new - v^old.
+      for (const unsigned int i : active_nodes)
+        {
+          double *v = node_velocities.data() + 4 * i;
+          v[0]      = velocity[0].local_element(i);
+          v[1]      = velocity[1].local_element(i);
+          v[2]      = v[0] - velocity_old[0].local_element(i);
+          v[3]      = v[1] - velocity_old[1].local_element(i);
+        }
     }
 
 
@@ -1512,13 +1534,13 @@ namespace slidewave
               dealii::Tensor<2, 2> L;
               for (unsigned int e = 0; e < w.n; ++e)
                 {
-                  const unsigned int i  = w.node[e];
-                  const double       vx = velocity[0].local_element(i);
-                  const double       vy = velocity[1].local_element(i);
+                  const double *v  = node_velocities.data() + 4 * w.node[e];
+                  const double  vx = v[0];
+                  const double  vy = v[1];
                   v_new[0] += w.value[e] * vx;
                   v_new[1] += w.value[e] * vy;
-                  dv[0] += w.value[e] * (vx - velocity_old[0].local_element(i));
-                  dv[1] += w.value[e] * (vy - velocity_old[1].local_element(i));
+                  dv[0] += w.value[e] * v[2];
+                  dv[1] += w.value[e] * v[3];
                   L[0][0] += vx * w.grad_x[e];
                   L[0][1] += vx * w.grad_y[e];
                   L[1][0] += vy * w.grad_x[e];

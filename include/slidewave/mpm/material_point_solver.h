@@ -509,6 +509,12 @@ namespace slidewave
        * them the nodal mass, momentum, force and velocities are zero (a step clears them
        * on last step's active nodes before it scatters). */
       std::vector<unsigned int> active_nodes;
+      /** The scatter's sums per local node, side by side (mass, momentum x, y, force x,
+       * y: one cache line per node instead of five vectors); zero between steps. */
+      std::vector<double> node_sums;
+      /** The gather's values per local node, side by side: v^new x, y and v^new - v^old
+       * x, y, set on the active nodes by update_grid(). */
+      std::vector<double> node_velocities;
       /** Per local node (owned and ghost): in active_nodes. */
       std::vector<unsigned char> node_is_active;
       /** Owned nodes (local indices) that are ghosts of other ranks. */

@@ -771,37 +771,37 @@ namespace slidewave
     MaterialPointSolver::cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
                                      const dealii::Triangulation<2>::CellStatus status) const
     {
-      // 1000 per cell (the convention of deal.II's weights; its 'weight' signal, unlike the
-      // older 'cell_weight', adds no base weight itself) plus the cell's points.
-      unsigned int n = 0;
-      const auto   count = [&n](const auto &...) { ++n; };
+      // The base weight (deal.II's 'weight' signal, unlike the older 'cell_weight', adds
+      // none itself) plus the cell's points. The points of a cell, or before they exist those the regions will put there with
+      // 'per_direction' of them per direction.
+      const auto points = [this](const dealii::Triangulation<2>::cell_iterator &c,
+                                 const unsigned int per_direction) {
+        unsigned int n = 0;
+        if (weights_from_regions)
+          for_each_point_to_create(c, per_direction, [&n](const auto &...) { ++n; });
+        else
+          n = particle_handler.n_particles_in_cell(c);
+        return n;
+      };
       const unsigned int per_direction = prm.particles_per_direction;
+      unsigned int       n             = 0;
       switch (status)
         {
           case dealii::Triangulation<2>::CELL_PERSIST:
-            if (weights_from_regions)
-              for_each_point_to_create(cell, per_direction, count);
-            else
-              n = particle_handler.n_particles_in_cell(cell);
+            n = points(cell, per_direction);
             break;
           case dealii::Triangulation<2>::CELL_REFINE:
             // The children's lattices together are the parent's at twice the density.
-            if (weights_from_regions)
-              for_each_point_to_create(cell, 2 * per_direction, count);
-            else
-              n = particle_handler.n_particles_in_cell(cell);
+            n = points(cell, 2 * per_direction);
             break;
           case dealii::Triangulation<2>::CELL_COARSEN:
             for (const auto &child : cell->child_iterators())
-              if (weights_from_regions)
-                for_each_point_to_create(child, per_direction, count);
-              else
-                n += particle_handler.n_particles_in_cell(child);
+              n += points(child, per_direction);
             break;
           default:
             break;
         }
-      return 1000 + prm.adaptivity.particle_weight * n;
+      return cell_base_weight + prm.adaptivity.particle_weight * n;
     }
 
 
@@ -811,7 +811,7 @@ namespace slidewave
     {
       // Max over mean of the ranks' work: cells x 1000 + points x particle weight.
       const double work =
-        1000. * tria.n_locally_owned_active_cells() +
+        static_cast<double>(cell_base_weight) * tria.n_locally_owned_active_cells() +
         static_cast<double>(prm.adaptivity.particle_weight) *
           particle_handler.n_locally_owned_particles();
       const double max  = dealii::Utilities::MPI::max(work, MPI_COMM_WORLD);
@@ -822,20 +822,19 @@ namespace slidewave
 
 
 
-    bool
+    void
     MaterialPointSolver::balance_load()
     {
       if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ||
           !(prm.adaptivity.imbalance_threshold > 0.) ||
           load_imbalance() <= prm.adaptivity.imbalance_threshold)
-        return false;
+        return;
       // Points travel with their cells to their new ranks.
       particle_handler.prepare_for_coarsening_and_refinement();
       tria.repartition();
       particle_handler.unpack_after_coarsening_and_refinement();
       setup_grid_data();
       ++n_grid_changes;
-      return true;
     }
 
 

@@ -367,15 +367,18 @@ namespace slidewave
       std::vector<bool>
       cells_near_material(bool from_regions) const;
 
-      /** Weight of a cell for partitioning: 1000 plus particle_weight per point (before the
-       * points exist, per point that create_particles() will put there). */
+      /** Partitioning weight of a cell without points (deal.II's convention; its 'weight'
+       * signal adds none of its own). */
+      static constexpr unsigned int cell_base_weight = 1000;
+
+      /** Weight of a cell for partitioning: cell_base_weight plus particle_weight per point
+       * (before the points exist, per point that create_particles() will put there). */
       unsigned int
       cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
                   dealii::Triangulation<2>::CellStatus           status) const;
 
-      /** Repartition by cells and points when the imbalance exceeds the threshold; true
-       * when it did. */
-      bool
+      /** Repartition by cells and points when the imbalance exceeds the threshold. */
+      void
       balance_load();
 
       /** Refine where material is, coarsen where it left, repartition if needed. */

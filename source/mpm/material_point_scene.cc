@@ -195,11 +195,7 @@ namespace slidewave
       dealii::Vector<float> subdomain(solver->triangulation().n_active_cells());
       subdomain = static_cast<float>(solver->triangulation().locally_owned_subdomain());
       data_out.add_data_vector(subdomain, "subdomain");
-      // Fast zlib compression: 'best' compression spends several times longer for files
-      // hardly smaller (819,200 points: 11 s against 1.5 s per output, 24 MB either way).
-      dealii::DataOutBase::VtkFlags vtk_flags;
-      vtk_flags.compression_level = dealii::DataOutBase::VtkFlags::best_speed;
-      data_out.set_flags(vtk_flags);
+      data_out.set_flags(vtu_flags());
       data_out.build_patches();
       const std::string record = data_out.write_vtu_with_pvtu_record(
         scene.output_directory + "/grid/", "grid", index, MPI_COMM_WORLD, 5);

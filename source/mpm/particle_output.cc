@@ -39,11 +39,7 @@ namespace slidewave
           interpretation[i] = dealii::DataComponentInterpretation::component_is_part_of_vector;
 
       dealii::Particles::DataOut<2> data_out;
-      // Fast zlib compression: 'best' compression spends several times longer for files
-      // hardly smaller (819,200 points: 11 s against 1.5 s per output, 24 MB either way).
-      dealii::DataOutBase::VtkFlags vtk_flags;
-      vtk_flags.compression_level = dealii::DataOutBase::VtkFlags::best_speed;
-      data_out.set_flags(vtk_flags);
+      data_out.set_flags(vtu_flags());
       data_out.build_patches(solver.particles(), data_names, interpretation);
       const std::string record = data_out.write_vtu_with_pvtu_record(
         directory + "/particles/", "particles", index, MPI_COMM_WORLD, 5);

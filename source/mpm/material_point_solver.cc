@@ -11,8 +11,10 @@
 #include <slidewave/mpm/particle_properties.h>
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 namespace slidewave
@@ -130,12 +132,13 @@ namespace slidewave
       prm.leave_subsection();
       prm.enter_subsection("Load balancing");
       {
-        prm.declare_entry("Particle weight", "100000", Integer(0),
+        prm.declare_entry("Particle weight", "1000000", Integer(0),
                           "Cost of a material point relative to a cell's 1000 when the grid "
                           "is partitioned among MPI ranks (the work of a rank is 1000 per "
-                          "cell plus this per point). A step's grid work is over the nodes "
-                          "the points talk to, so an empty cell costs next to nothing: the "
-                          "default makes 100 empty cells weigh as much as a point (doc/mpm.md, "
+                          "cell plus this per point; a cell's weight is capped at 2^31 - 1, "
+                          "p4est's limit). A step's grid work is over the nodes the points "
+                          "talk to, so an empty cell costs next to nothing: the default makes "
+                          "1000 empty cells weigh as much as a point (doc/mpm.md, "
                           "Throughput).");
         prm.declare_entry("Imbalance threshold", "1.1", Double(0.),
                           "Repartition when the most loaded rank has more than this times "
@@ -772,8 +775,8 @@ namespace slidewave
                                      const dealii::Triangulation<2>::CellStatus status) const
     {
       // The base weight (deal.II's 'weight' signal, unlike the older 'cell_weight', adds
-      // none itself) plus the cell's points. The points of a cell, or before they exist those the regions will put there with
-      // 'per_direction' of them per direction.
+      // none itself) plus the cell's points: those it holds or, before they exist, those
+      // the regions will put there with 'per_direction' of them per direction.
       const auto points = [this](const dealii::Triangulation<2>::cell_iterator &c,
                                  const unsigned int per_direction) {
         unsigned int n = 0;
@@ -801,7 +804,11 @@ namespace slidewave
           default:
             break;
         }
-      return cell_base_weight + prm.adaptivity.particle_weight * n;
+      // p4est takes the weight as an int: saturate rather than wrap around.
+      const std::uint64_t weight =
+        cell_base_weight + static_cast<std::uint64_t>(prm.adaptivity.particle_weight) * n;
+      return static_cast<unsigned int>(
+        std::min<std::uint64_t>(weight, std::numeric_limits<int>::max()));
     }
 
 

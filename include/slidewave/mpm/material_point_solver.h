@@ -104,7 +104,7 @@ namespace slidewave
         unsigned int buffer_cells        = 2;
         unsigned int interval            = 50;
         /** Subsection "Load balancing" (also without adaptivity). */
-        unsigned int particle_weight     = 100;
+        unsigned int particle_weight     = 1000000;
         double       imbalance_threshold = 1.1;
       } adaptivity;
       unsigned int balance_interval = 50;
@@ -372,7 +372,8 @@ namespace slidewave
       static constexpr unsigned int cell_base_weight = 1000;
 
       /** Weight of a cell for partitioning: cell_base_weight plus particle_weight per point
-       * (before the points exist, per point that create_particles() will put there). */
+       * (before the points exist, per point that create_particles() will put there), capped at
+       * 2^31 - 1 (p4est takes an int). */
       unsigned int
       cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
                   dealii::Triangulation<2>::CellStatus           status) const;

@@ -556,6 +556,17 @@ namespace slidewave
 
       pcout << "Particle relocation: deal.II's full sort in " << solver->n_full_particle_sorts()
             << " of " << step - first_step << " steps" << std::endl;
+      if (const StepTimeline *timeline = solver->step_timeline())
+        {
+          const auto written = timeline->write(scene.output_directory + "/step_timeline.csv");
+          const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+          if (is_writer)
+            std::cout << "Step timeline: " << written.rows << " rows (" << timeline->n_steps()
+                      << " steps x " << n_ranks << (n_ranks == 1 ? " rank" : " ranks") << "), "
+                      << written.complete_rows
+                      << " with a time for the scatter and the gather, in step_timeline.csv"
+                      << std::endl;
+        }
 
       if (exact_solution == ExactSolution::self_weight_column)
         max_error = column_stress_error();

@@ -92,6 +92,12 @@ namespace slidewave
                         "comes first, and a rank waiting for another shows in the part where "
                         "it waits (the ghost exchange of the scatter, the relocation's "
                         "reduction).");
+      prm.declare_entry("Step timeline", "false", Bool(),
+                        "Write OUTPUT/step_timeline.csv at the end of the run: per step and "
+                        "per rank the wall time of each part of the step, with the exchanges "
+                        "between ranks (where a rank waits for a slower one) apart from the "
+                        "rank's own work. For profiling runs: it keeps a row per step in "
+                        "memory (doc/mpm.md, Where the time goes).");
       prm.declare_entry("Local damping", "0", Double(0., 1.),
                         "Cundall's local non-viscous damping coefficient of the nodal "
                         "forces, for quasi-static loading; 0 for dynamics.");
@@ -219,6 +225,7 @@ namespace slidewave
       fixed_time_step = prm.get_double("Fixed time step");
       b_bar           = prm.get_bool("B-bar");
       detailed_timing = prm.get_bool("Detailed timing");
+      step_timeline   = prm.get_bool("Step timeline");
       full_sort_every_step = prm.get("Particle relocation") == "full sort";
       const auto g    = parse_numbers(path + "/Gravity", prm.get("Gravity"), 2);
       gravity[0]      = g[0];
@@ -452,6 +459,8 @@ namespace slidewave
     {
       for (const auto &material : prm.materials)
         materials.emplace_back(material);
+      if (prm.step_timeline)
+        timeline = std::make_unique<StepTimeline>();
     }
 
 
@@ -1320,12 +1329,14 @@ namespace slidewave
           condense_hanging_nodes(momentum[d]);
           condense_hanging_nodes(force[d]);
         }
+      lap(StepTimeline::scatter);
       nodal_mass.compress(dealii::VectorOperation::add);
       for (unsigned int d = 0; d < 2; ++d)
         {
           momentum[d].compress(dealii::VectorOperation::add);
           force[d].compress(dealii::VectorOperation::add);
         }
+      lap(StepTimeline::exchange_sums);
     }
 
 
@@ -1419,10 +1430,15 @@ namespace slidewave
         }
       apply_boundary_conditions(velocity[0], velocity[1]);
       apply_boundary_conditions(velocity_old[0], velocity_old[1]);
+      lap(StepTimeline::grid_update);
       for (unsigned int d = 0; d < 2; ++d)
         {
           velocity[d].update_ghost_values();
           velocity_old[d].update_ghost_values();
+        }
+      lap(StepTimeline::exchange_velocities);
+      for (unsigned int d = 0; d < 2; ++d)
+        {
           interpolate_hanging_nodes(velocity[d]);
           interpolate_hanging_nodes(velocity_old[d]);
         }
@@ -1435,6 +1451,7 @@ namespace slidewave
           v[2]      = v[0] - velocity_old[0].local_element(i);
           v[3]      = v[1] - velocity_old[1].local_element(i);
         }
+      lap(StepTimeline::grid_update);
     }
 
 
@@ -1687,6 +1704,8 @@ namespace slidewave
             part.emplace(*timer, name);
           }
       };
+      if (timeline)
+        timeline->begin_step(n_steps + 1);
       if (prm.adaptivity.enabled && n_steps > 0 && n_steps % prm.adaptivity.interval == 0)
         {
           start("mpm step: grid changes");
@@ -1697,6 +1716,7 @@ namespace slidewave
           start("mpm step: grid changes");
           balance_load();
         }
+      lap(StepTimeline::grid_changes);
       ++n_steps;
       for (auto &support : supports)
         support.active = loading_gravity || time < support.release_time;
@@ -1713,10 +1733,13 @@ namespace slidewave
       else
         {
           grid_to_particles(dt, /*with_stresses=*/false);
+          lap(StepTimeline::gather);
           start("mpm step: MUSL re-map and stresses");
           remap_velocities_to_grid();
           update_stresses(dt);
+          lap(StepTimeline::musl_remap);
         }
+      lap(StepTimeline::gather);
       start("mpm step: sort particles");
       const bool full_sort = prm.full_sort_every_step || n_steps % prm.balance_interval == 0;
       if (full_sort)
@@ -1725,9 +1748,12 @@ namespace slidewave
       // relocate_within_patches() sets the locations itself, also when it gives up.
       if (full_sort || !relocate_within_patches())
         {
+          lap(StepTimeline::relocation);
           ++n_full_sorts;
           particle_handler.sort_particles_into_subdomains_and_cells();
+          lap(StepTimeline::full_sort);
         }
+      lap(StepTimeline::relocation);
       time += dt;
     }
 
@@ -1789,8 +1815,10 @@ namespace slidewave
       const unsigned int local[2]  = {leaves_patch ? 1u : 0u,
                                       moving_particles.empty() ? 0u : 1u};
       unsigned int       global[2] = {0, 0};
+      lap(StepTimeline::relocation);
       dealii::Utilities::MPI::max(dealii::ArrayView<const unsigned int>(local, 2),
                                   MPI_COMM_WORLD, dealii::ArrayView<unsigned int>(global, 2));
+      lap(StepTimeline::relocation_reduction);
       if (global[0] != 0)
         return false; // the full sort takes over (the locations are set)
       if (global[1] == 0)

@@ -15,6 +15,7 @@
 #include <slidewave/mpm/material_region.h>
 #include <slidewave/mpm/rigid_wall.h>
 #include <slidewave/mpm/shape_functions.h>
+#include <slidewave/mpm/step_timeline.h>
 
 #include <array>
 #include <memory>
@@ -86,6 +87,7 @@ namespace slidewave
       double               fixed_time_step        = 0.;
       bool                 b_bar                  = true;
       bool                 detailed_timing        = false;
+      bool                 step_timeline          = false;
       /** 'Particle relocation = full sort': deal.II's sort every step. */
       bool                 full_sort_every_step   = false;
       dealii::Tensor<1, 2> gravity;
@@ -312,6 +314,14 @@ namespace slidewave
       n_grid_adaptations() const
       {
         return n_grid_changes;
+      }
+
+      /** The per-step, per-rank times of the parts of the step ('Step timeline'), or null
+       * when it is off. */
+      const StepTimeline *
+      step_timeline() const
+      {
+        return timeline.get();
       }
 
       /** Steps whose points were relocated by deal.II's full sort ('Particle relocation'). */
@@ -573,6 +583,16 @@ namespace slidewave
 
       /** Where the parts of a step are timed ('Detailed timing'), or null. */
       dealii::TimerOutput *timer = nullptr;
+      /** Per-step times of the parts ('Step timeline'): only allocated when on. */
+      std::unique_ptr<StepTimeline> timeline;
+
+      /** The end of a part of the step for the step timeline, when it is on. */
+      void
+      lap(const StepTimeline::Part part)
+      {
+        if (timeline)
+          timeline->lap(part);
+      }
 
       double lost_mass = 0.;
       /** The first point of this rank that left through a side that is not free: points may

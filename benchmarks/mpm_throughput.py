@@ -63,6 +63,7 @@ Only the Python standard library is used.
 """
 
 import argparse
+import csv
 import glob
 import os
 import re
@@ -156,7 +157,7 @@ def run_slidewave(exe, prm, settings, ranks, mpirun):
               "advance_wall_s": None, "time_step_wall_s": None, "setup_wall_s": None,
               "total_wall_s": None, "peak_rss_sum_mb": None, "peak_rss_max_rank_mb": None,
               "busiest_rank_share_start": None, "busiest_rank_share_end": None,
-              "background_load": None, "stdout": ""}
+              "background_load": None, "timeline": None, "stdout": ""}
     try:
         t0, busy0, own0 = time.perf_counter(), cpu_busy_seconds(), children_cpu_seconds()
         proc = subprocess.run(cmd, cwd=workdir, stdout=subprocess.PIPE,
@@ -195,6 +196,13 @@ def run_slidewave(exe, prm, settings, ranks, mpirun):
         if rss:
             result["peak_rss_sum_mb"] = sum(rss) / 1024.
             result["peak_rss_max_rank_mb"] = max(rss) / 1024.
+
+        # 'Material points/Step timeline': one row per step and rank, the parts in seconds.
+        timeline = os.path.join(outdir, "step_timeline.csv")
+        if os.path.isfile(timeline):
+            with open(timeline, newline="") as f:
+                result["timeline"] = [{k: float(v) for k, v in row.items()}
+                                      for row in csv.DictReader(f)]
 
         particle_dir = os.path.join(outdir, "particles")
         for key, index in (("busiest_rank_share_start", 0), ("busiest_rank_share_end", 1)):

@@ -10,11 +10,22 @@ therefore measure the machine as much as the code. This script runs N pairs back
 wall time of the time loop ('mpm: advance', rank 0's timer) and the speed-up; then the
 median of the pairs' speed-ups, the ratio of the medians and the ratio of the fastest runs.
 
+With ``--timeline`` the runs write 'Material points/Step timeline' (per step and rank the
+time of each part of the step, the exchanges between ranks apart), and each pair also gets
+  work       the one-rank run's own work (every part but the exchanges) over the larger of
+             the two ranks' own work: the speed-up if no rank ever waited for the other;
+  step-max   the one-rank work over the sum over the steps of the larger rank's work of
+             that step: the speed-up if the exchanges cost nothing but every step waits for
+             the rank that was slower in it (what the ranks' speeds from step to step allow).
+The per-step rows of every run go to ``--timeline-csv``; ``--plot`` draws the pair with the
+median speed-up (``--png``); ``--plot-only`` redraws it from the CSV.
+
 Usage: benchmarks/mpm_two_ranks.py [--pairs 5] [--cell-size 0.0003125] [--steps 100]
-       [--shape q1] [--material "linear elastic"] [--csv FILE]
+       [--shape q1] [--material "linear elastic"] [--csv FILE] [--timeline [--plot]]
 Results go to ``benchmarks/results/mpm_two_ranks.csv`` (one row per run).
 """
 import argparse
+import csv
 import os
 import statistics
 import sys
@@ -25,7 +36,62 @@ from mpm_throughput import column_collapse_settings, run_slidewave  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 COLUMNS = ["pair", "ranks", "particles", "cells", "steps", "advance_wall_s",
-           "setup_wall_s", "background_load", "status"]
+           "setup_wall_s", "background_load", "own_work_s", "exchange_s", "step_max_work_s",
+           "status"]
+# The parts of step_timeline.csv: a rank's own work, and the exchanges where it may wait.
+EXCHANGE_PARTS = ["exchange_sums", "exchange_velocities", "relocation_reduction"]
+WORK_PARTS = ["grid_changes", "scatter", "grid_update", "gather", "musl_remap", "relocation",
+              "full_sort"]
+
+
+def summarize_timeline(rows):
+    """Own work and exchange time [s] of the busiest rank, and the sum over the steps of
+    the larger rank's work in that step."""
+    work, exchange, per_step = {}, {}, {}
+    for r in rows:
+        rank, step = int(r["rank"]), int(r["step"])
+        w = sum(r[p] for p in WORK_PARTS)
+        work[rank] = work.get(rank, 0.) + w
+        exchange[rank] = exchange.get(rank, 0.) + sum(r[p] for p in EXCHANGE_PARTS)
+        per_step[step] = max(per_step.get(step, 0.), w)
+    busiest = max(work, key=work.get)
+    return {"own_work_s": work[busiest], "exchange_s": exchange[busiest],
+            "step_max_work_s": sum(per_step.values()), "work_by_rank": work}
+
+
+def read_timeline_csv(path):
+    with open(path, newline="") as f:
+        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+
+
+def plot(rows, pair, png):
+    """Per step, the own work of the two ranks of ``pair`` against half the one-rank run."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    def series(ranks, rank):
+        picked = sorted((int(r["step"]), sum(r[p] for p in WORK_PARTS))
+                        for r in rows if int(r["pair"]) == pair and int(r["ranks"]) == ranks
+                        and int(r["rank"]) == rank)
+        return [s for s, _ in picked], [1e3 * w for _, w in picked]
+
+    fig, ax = plt.subplots(figsize=(8, 4))
+    steps, serial = series(1, 0)
+    ax.plot(steps, [w / 2 for w in serial], color="0.5", lw=1.5,
+            label="one rank, half its work per step")
+    for rank, color in ((0, "tab:blue"), (1, "tab:orange")):
+        s, w = series(2, rank)
+        ax.plot(s, w, color=color, lw=1, label=f"two ranks: rank {rank}'s own work")
+    ax.set_xlabel("step")
+    ax.set_ylabel("wall time of the step's own work [ms]")
+    ax.set_title(f"Column collapse, 819,200 points, Q1 elastic: pair {pair} "
+                 "(every step waits for the slower rank)", fontsize=9)
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    os.makedirs(os.path.dirname(os.path.abspath(png)), exist_ok=True)
+    fig.savefig(png, dpi=110)
 
 
 def main(argv=None):
@@ -44,24 +110,61 @@ def main(argv=None):
                    help="before each pair, wait up to this many seconds for an idle machine")
     p.add_argument("--csv", default=os.path.join(REPO, "benchmarks", "results",
                                                  "mpm_two_ranks.csv"))
+    p.add_argument("--timeline", action="store_true",
+                   help="write and analyse the step timeline of every run")
+    p.add_argument("--timeline-csv", default=os.path.join(REPO, "benchmarks", "results",
+                                                          "mpm_two_ranks_timeline.csv"))
+    p.add_argument("--plot", action="store_true",
+                   help="with --timeline: draw the pair with the median speed-up (--png)")
+    p.add_argument("--plot-only", type=int, metavar="PAIR",
+                   help="only redraw the figure of pair PAIR from --timeline-csv")
+    p.add_argument("--png", default=os.path.join(REPO, "doc", "figures",
+                                                 "mpm-two-ranks-timeline.png"))
     args = p.parse_args(argv)
+    if args.plot_only is not None:
+        plot(read_timeline_csv(args.timeline_csv), args.plot_only, args.png)
+        print(f"wrote {args.png}")
+        return
     exe = find_executable(args.exe, 0.)
     _, settings = column_collapse_settings(args.cell_size, args.steps, args.shape,
                                            args.material)
-    rows, times = [], {1: [], 2: []}
-    print(f"{'pair':>4} {'1 rank [s]':>11} {'2 ranks [s]':>12} {'speed-up':>9}")
+    if args.timeline:
+        settings["Material points/Step timeline"] = "true"
+    rows, times, timeline_rows = [], {1: [], 2: []}, []
+    work, step_max = [], []
+    header = f"{'pair':>4} {'1 rank [s]':>11} {'2 ranks [s]':>12} {'speed-up':>9}"
+    if args.timeline:
+        header += f" {'work':>7} {'step-max':>9} {'rank work [s]':>14} {'exchanges [s]':>14}"
+    print(header)
     for pair in range(1, args.pairs + 1):
         if args.idle_wait > 0:
             wait_until_idle(args.idle_wait)
+        summaries = {}
         for ranks in (1, 2):
             r = run_slidewave(exe, args.prm, settings, ranks, args.mpirun)
             r.update(pair=pair, ranks=ranks)
-            rows.append(r)
             if r["status"] != "ok":
                 sys.exit(f"pair {pair}, {ranks} rank(s): {r['status']}")
+            if args.timeline:
+                if not r["timeline"]:
+                    sys.exit(f"pair {pair}, {ranks} rank(s): no step_timeline.csv")
+                summaries[ranks] = summarize_timeline(r["timeline"])
+                r.update({k: summaries[ranks][k] for k in
+                          ("own_work_s", "exchange_s", "step_max_work_s")})
+                timeline_rows += [dict(t, pair=pair, ranks=ranks, step=int(t["step"]),
+                                      rank=int(t["rank"])) for t in r["timeline"]]
+            rows.append(r)
             times[ranks].append(r["advance_wall_s"])
-        print(f"{pair:>4} {times[1][-1]:>11.2f} {times[2][-1]:>12.2f} "
-              f"{times[1][-1] / times[2][-1]:>8.2f}x", flush=True)
+        line = (f"{pair:>4} {times[1][-1]:>11.2f} {times[2][-1]:>12.2f} "
+                f"{times[1][-1] / times[2][-1]:>8.2f}x")
+        if args.timeline:
+            one, two = summaries[1], summaries[2]
+            work.append(one["own_work_s"] / two["own_work_s"])
+            step_max.append(one["own_work_s"] / two["step_max_work_s"])
+            by_rank = "/".join(f"{two['work_by_rank'][k]:.2f}" for k in sorted(two["work_by_rank"]))
+            line += (f" {work[-1]:>6.2f}x {step_max[-1]:>8.2f}x {by_rank:>14} "
+                     f"{two['exchange_s']:>14.2f}")
+        print(line, flush=True)
     write_csv(args.csv, rows, COLUMNS)
     ratios = [a / b for a, b in zip(times[1], times[2])]
     print(f"{rows[0]['particles']} points, {rows[0]['cells']} cells, {args.steps} steps, "
@@ -73,6 +176,17 @@ def main(argv=None):
           f"{fmt(statistics.median(times[2]), '.2f')} s)")
     print(f"ratio of the fastest runs: {min(times[1]) / min(times[2]):.2f}x")
     print(f"results: {args.csv}")
+    if args.timeline:
+        print(f"median work speed-up (no rank waits): {statistics.median(work):.2f}x; "
+              f"median step-max speed-up (each step waits for its slower rank, free "
+              f"exchanges): {statistics.median(step_max):.2f}x")
+        columns = ["pair", "ranks", "step", "rank"] + WORK_PARTS + EXCHANGE_PARTS
+        write_csv(args.timeline_csv, timeline_rows, columns)
+        print(f"step timelines: {args.timeline_csv}")
+        if args.plot:
+            median_pair = sorted(range(len(ratios)), key=lambda i: ratios[i])[len(ratios) // 2] + 1
+            plot(timeline_rows, median_pair, args.png)
+            print(f"figure of pair {median_pair} (median speed-up): {args.png}")
 
 
 if __name__ == "__main__":

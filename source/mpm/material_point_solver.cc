@@ -1729,7 +1729,10 @@ namespace slidewave
       new_positions.resize(particle_handler.get_property_pool().n_slots());
       start("mpm step: grid to particles");
       if (prm.update_scheme == UpdateScheme::usl)
-        grid_to_particles(dt, /*with_stresses=*/true);
+        {
+          grid_to_particles(dt, /*with_stresses=*/true);
+          lap(StepTimeline::gather);
+        }
       else
         {
           grid_to_particles(dt, /*with_stresses=*/false);
@@ -1739,7 +1742,6 @@ namespace slidewave
           update_stresses(dt);
           lap(StepTimeline::musl_remap);
         }
-      lap(StepTimeline::gather);
       start("mpm step: sort particles");
       const bool full_sort = prm.full_sort_every_step || n_steps % prm.balance_interval == 0;
       if (full_sort)

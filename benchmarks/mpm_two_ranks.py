@@ -64,8 +64,9 @@ def read_timeline_csv(path):
         return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
 
 
-def plot(rows, pair, png):
-    """Per step, the own work of the two ranks of ``pair`` against half the one-rank run."""
+def plot(rows, pair, png, scene="Column collapse"):
+    """Per step, the own work of the two ranks of ``pair`` against half the one-rank run
+    (``scene``: what was run, for the title)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -85,8 +86,7 @@ def plot(rows, pair, png):
         ax.plot(s, w, color=color, lw=1, label=f"two ranks: rank {rank}'s own work")
     ax.set_xlabel("step")
     ax.set_ylabel("wall time of the step's own work [ms]")
-    ax.set_title(f"Column collapse, 819,200 points, Q1 elastic: pair {pair} "
-                 "(every step waits for the slower rank)", fontsize=9)
+    ax.set_title(f"{scene}: pair {pair} (every step waits for the slower rank)", fontsize=9)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     fig.tight_layout()
@@ -185,7 +185,9 @@ def main(argv=None):
         print(f"step timelines: {args.timeline_csv}")
         if args.plot:
             median_pair = sorted(range(len(ratios)), key=lambda i: ratios[i])[len(ratios) // 2] + 1
-            plot(timeline_rows, median_pair, args.png)
+            plot(timeline_rows, median_pair, args.png,
+                 f"Column collapse, {rows[0]['particles']:,} points, {args.shape}, "
+                 f"{args.material}")
             print(f"figure of pair {median_pair} (median speed-up): {args.png}")
 
 

@@ -38,6 +38,14 @@ def cpu_busy_seconds():
     return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
 
 
+def cpu_steal_seconds():
+    """CPU seconds the hypervisor has taken from this virtual machine's cores so far
+    (/proc/stat's 'steal': a core wanted to run and the host ran something else)."""
+    with open("/proc/stat") as f:
+        fields = f.readline().split()[1:]
+    return (int(fields[7]) if len(fields) > 7 else 0) / os.sysconf("SC_CLK_TCK")
+
+
 def background_load(seconds):
     """Average number of busy cores over ``seconds`` (the caller is idle meanwhile)."""
     b0, t0 = cpu_busy_seconds(), time.perf_counter()

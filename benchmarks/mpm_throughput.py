@@ -132,8 +132,10 @@ def children_cpu_seconds():
     return r.ru_utime + r.ru_stime
 
 
-def run_slidewave(exe, prm, settings, ranks, mpirun):
+def run_slidewave(exe, prm, settings, ranks, mpirun, prefix=()):
     """Run ``exe`` on ``prm`` with ``--set`` overrides on ``ranks`` MPI ranks.
+
+    ``prefix``: a command that the run goes under (``taskset -c 1``, say); with one rank only.
 
     Every rank runs under ``/usr/bin/time -v``; the output directory is a fresh temporary
     directory (also the working directory), removed before returning. Returns a dict with
@@ -146,8 +148,10 @@ def run_slidewave(exe, prm, settings, ranks, mpirun):
     outdir = os.path.join(workdir, "out")
     cmd = []
     if ranks > 1:
+        if prefix:
+            raise ValueError("run_slidewave: a prefix is for one-rank runs only")
         cmd += shlex.split(mpirun) + ["-np", str(ranks)]
-    cmd += ["/usr/bin/time", "-v", exe]
+    cmd += list(prefix) + ["/usr/bin/time", "-v", exe]
     for key, value in list(settings.items()) + [("Output directory", outdir)]:
         cmd += ["--set", f"{key}={value}"]
     cmd.append(os.path.abspath(prm))

@@ -7,7 +7,9 @@ therefore measure the machine as much as the code. This script runs N pairs back
 (one rank, then two ranks, N times) of the column collapse of
 ``prm/granular-column-collapse.prm`` at one size (default 819,200 points, 0.3125 mm cells,
 100 steps; Q1, linear elastic; no output but the first and last) and prints, per pair, the
-wall time of the time loop ('mpm: advance', rank 0's timer) and the speed-up; then the
+wall time of the time loop ('mpm: advance', rank 0's timer), the speed-up and the CPU
+seconds the hypervisor took from the machine's cores during each run ('stolen', /proc/stat's
+steal time: a core was ready to run and the host ran something else); then the
 median of the pairs' speed-ups, the ratio of the medians and the ratio of the fastest runs.
 
 With ``--timeline`` the runs write 'Material points/Step timeline' (per step and rank the
@@ -17,6 +19,14 @@ time of each part of the step, the exchanges between ranks apart), and each pair
   step-max   the one-rank work over the sum over the steps of the larger rank's work of
              that step: the speed-up if the exchanges cost nothing but every step waits for
              the rank that was slower in it (what the ranks' speeds from step to step allow).
+With ``--control`` each pair also runs two one-rank runs side by side, each bound to one of
+the two cores (``taskset``), and prints
+  side by side  their loop times;
+  ceiling       2 x the pair's one-rank time over the slower of the two: what the two cores
+                deliver on two independent copies of the one-rank run, no communication and
+                no decomposition involved. The two-rank speed-up over this ceiling is what
+                the code itself (decomposition, ghosts, exchanges) costs; the ceiling below
+                2 is the machine (cores that slow down when both are busy).
 The per-step rows of every run go to ``--timeline-csv``; ``--plot`` draws the pair with the
 median speed-up (``--png``); ``--plot-only`` redraws it from the CSV.
 
@@ -29,15 +39,16 @@ import csv
 import os
 import statistics
 import sys
+import threading
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from benchmark_common import find_executable, fmt, wait_until_idle, write_csv  # noqa: E402
+from benchmark_common import cpu_steal_seconds, find_executable, fmt, wait_until_idle, write_csv  # noqa: E402
 from mpm_throughput import column_collapse_settings, run_slidewave  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-COLUMNS = ["pair", "ranks", "particles", "cells", "steps", "advance_wall_s",
-           "setup_wall_s", "background_load", "own_work_s", "exchange_s", "step_max_work_s",
-           "status"]
+COLUMNS = ["pair", "ranks", "side_by_side_core", "particles", "cells", "steps", "advance_wall_s",
+           "setup_wall_s", "background_load", "steal_s", "own_work_s", "exchange_s",
+           "step_max_work_s", "status"]
 # The parts of step_timeline.csv: a rank's own work, and the exchanges where it may wait.
 EXCHANGE_PARTS = ["exchange_sums", "exchange_velocities", "relocation_reduction"]
 WORK_PARTS = ["grid_changes", "scatter", "grid_update", "gather", "musl_remap", "relocation",
@@ -57,6 +68,81 @@ def summarize_timeline(rows):
     busiest = max(work, key=work.get)
     return {"own_work_s": work[busiest], "exchange_s": exchange[busiest],
             "step_max_work_s": sum(per_step.values()), "work_by_rank": work}
+
+
+def side_by_side(exe, prm, settings, mpirun):
+    """Two one-rank runs started together, on cores 0 and 1. Returns the two results."""
+    results = [None, None]
+
+    def one(core):
+        results[core] = run_slidewave(exe, prm, settings, 1, mpirun,
+                                      prefix=("taskset", "-c", str(core)))
+
+    threads = [threading.Thread(target=one, args=(core,)) for core in (0, 1)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    return results
+
+
+def pair_figures(rows):
+    """Per pair, from the result rows: the two-rank speed-up, the ceiling (with --control)
+    and the work speed-up (with --timeline). Returns {pair: {name: value}}."""
+    runs = {}
+    for r in rows:
+        core = r.get("side_by_side_core")
+        kind = "alone" if core in (None, "") and int(r["ranks"]) == 1 else \
+            "two ranks" if core in (None, "") else f"side by side {int(core)}"
+        runs.setdefault(int(r["pair"]), {})[kind] = r
+    figures = {}
+    for pair, k in sorted(runs.items()):
+        one, two = float(k["alone"]["advance_wall_s"]), float(k["two ranks"]["advance_wall_s"])
+        f = {"speed-up": one / two}
+        if "side by side 0" in k and "side by side 1" in k:
+            f["ceiling"] = 2 * one / max(float(k[f"side by side {c}"]["advance_wall_s"])
+                                         for c in (0, 1))
+        if k["alone"].get("own_work_s") not in (None, ""):
+            f["work"] = float(k["alone"]["own_work_s"]) / float(k["two ranks"]["own_work_s"])
+        figures[pair] = f
+    return figures
+
+
+def plot_ceiling(rows, png, scene="Column collapse"):
+    """Per pair, the two-rank speed-up against the ceiling of two one-rank runs side by side."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    figures = pair_figures(rows)
+    pairs = list(figures)
+    fig, ax = plt.subplots(figsize=(8, 5))
+    ax.axhline(2.0, color="0.7", lw=1, ls=":")
+    ax.axhline(1.8, color="tab:red", lw=1, ls="--", label="target 1.8x")
+    styles = (("ceiling", "tab:green", "s",
+               "ceiling: two one-rank runs side by side (2 x alone / slower)"),
+              ("work", "tab:blue", "^", "work speed-up (the ranks' own work, no waiting)"),
+              ("speed-up", "black", "o", "two ranks: speed-up of the time loop"))
+    for name, color, marker, label in styles:
+        xs = [p for p in pairs if name in figures[p]]
+        if xs:
+            ax.plot(xs, [figures[p][name] for p in xs], color=color, marker=marker, lw=0.8,
+                    label=label)
+    ax.set_xlabel("pair (one rank, two ranks, two one-rank runs side by side; in that order)")
+    ax.set_ylabel("speed-up over the pair's one-rank run")
+    ax.set_xticks(pairs)
+    ax.set_title(f"{scene}: what two cores of this machine deliver, and what two ranks get",
+                 fontsize=9)
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.15), ncol=2)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    os.makedirs(os.path.dirname(os.path.abspath(png)), exist_ok=True)
+    fig.savefig(png, dpi=110)
+
+
+def read_result_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
 
 
 def read_timeline_csv(path):
@@ -114,25 +200,39 @@ def main(argv=None):
                    help="write and analyse the step timeline of every run")
     p.add_argument("--timeline-csv", default=os.path.join(REPO, "benchmarks", "results",
                                                           "mpm_two_ranks_timeline.csv"))
+    p.add_argument("--control", action="store_true",
+                   help="per pair also two one-rank runs side by side (the machine's ceiling)")
     p.add_argument("--plot", action="store_true",
-                   help="with --timeline: draw the pair with the median speed-up (--png)")
+                   help="with --timeline: draw the pair with the median speed-up (--png); "
+                        "with --control: the speed-ups against the ceiling (--ceiling-png)")
     p.add_argument("--plot-only", type=int, metavar="PAIR",
-                   help="only redraw the figure of pair PAIR from --timeline-csv")
+                   help="only redraw the figures: the timeline of pair PAIR from "
+                        "--timeline-csv, the ceiling from --csv if it has --control runs")
     p.add_argument("--png", default=os.path.join(REPO, "doc", "figures",
                                                  "mpm-two-ranks-timeline.png"))
+    p.add_argument("--ceiling-png", default=os.path.join(REPO, "doc", "figures",
+                                                         "mpm-two-ranks-ceiling.png"))
     args = p.parse_args(argv)
     if args.plot_only is not None:
-        plot(read_timeline_csv(args.timeline_csv), args.plot_only, args.png)
-        print(f"wrote {args.png}")
+        if os.path.isfile(args.timeline_csv):
+            plot(read_timeline_csv(args.timeline_csv), args.plot_only, args.png)
+            print(f"wrote {args.png}")
+        results = read_result_csv(args.csv)
+        if any(r.get("side_by_side_core") not in (None, "") for r in results):
+            plot_ceiling(results, args.ceiling_png)
+            print(f"wrote {args.ceiling_png}")
         return
     exe = find_executable(args.exe, 0.)
     _, settings = column_collapse_settings(args.cell_size, args.steps, args.shape,
                                            args.material)
     if args.timeline:
         settings["Material points/Step timeline"] = "true"
-    rows, times, timeline_rows = [], {1: [], 2: []}, []
-    work, step_max = [], []
-    header = f"{'pair':>4} {'1 rank [s]':>11} {'2 ranks [s]':>12} {'speed-up':>9}"
+    rows, times, steals, timeline_rows = [], {1: [], 2: []}, {1: [], 2: []}, []
+    work, step_max, ceilings = [], [], []
+    header = (f"{'pair':>4} {'1 rank [s]':>11} {'2 ranks [s]':>12} {'speed-up':>9} "
+              f"{'stolen [s]':>11}")
+    if args.control:
+        header += f" {'side by side [s]':>17} {'ceiling':>8}"
     if args.timeline:
         header += f" {'work':>7} {'step-max':>9} {'rank work [s]':>14} {'exchanges [s]':>14}"
     print(header)
@@ -141,8 +241,10 @@ def main(argv=None):
             wait_until_idle(args.idle_wait)
         summaries = {}
         for ranks in (1, 2):
+            steal = cpu_steal_seconds()
             r = run_slidewave(exe, args.prm, settings, ranks, args.mpirun)
-            r.update(pair=pair, ranks=ranks)
+            r.update(pair=pair, ranks=ranks, steal_s=cpu_steal_seconds() - steal)
+            steals[ranks].append(r["steal_s"])
             if r["status"] != "ok":
                 sys.exit(f"pair {pair}, {ranks} rank(s): {r['status']}")
             if args.timeline:
@@ -156,7 +258,19 @@ def main(argv=None):
             rows.append(r)
             times[ranks].append(r["advance_wall_s"])
         line = (f"{pair:>4} {times[1][-1]:>11.2f} {times[2][-1]:>12.2f} "
-                f"{times[1][-1] / times[2][-1]:>8.2f}x")
+                f"{times[1][-1] / times[2][-1]:>8.2f}x "
+                f"{steals[1][-1]:>5.2f}/{steals[2][-1]:<5.2f}")
+        if args.control:
+            both = side_by_side(exe, args.prm, settings, args.mpirun)
+            for core, r in enumerate(both):
+                if r["status"] != "ok":
+                    sys.exit(f"pair {pair}, side by side on core {core}: {r['status']}")
+                r.update(pair=pair, ranks=1, side_by_side_core=core)
+                r.pop("timeline", None)
+                rows.append(r)
+            pair_times = [r["advance_wall_s"] for r in both]
+            ceilings.append(2 * times[1][-1] / max(pair_times))
+            line += f" {pair_times[0]:>8.2f}/{pair_times[1]:<8.2f} {ceilings[-1]:>7.2f}x"
         if args.timeline:
             one, two = summaries[1], summaries[2]
             work.append(one["own_work_s"] / two["own_work_s"])
@@ -175,6 +289,17 @@ def main(argv=None):
           f" ({fmt(statistics.median(times[1]), '.2f')} s / "
           f"{fmt(statistics.median(times[2]), '.2f')} s)")
     print(f"ratio of the fastest runs: {min(times[1]) / min(times[2]):.2f}x")
+    if args.control:
+        efficiency = [r / c for r, c in zip(ratios, ceilings)]
+        print(f"median ceiling (two one-rank runs side by side): "
+              f"{statistics.median(ceilings):.2f}x (from {min(ceilings):.2f}x to "
+              f"{max(ceilings):.2f}x); median two-rank speed-up over the pair's ceiling: "
+              f"{statistics.median(efficiency):.2f}")
+        if args.plot:
+            plot_ceiling(rows, args.ceiling_png,
+                         f"Column collapse, {rows[0]['particles']:,} points, {args.shape}, "
+                         f"{args.material}")
+            print(f"figure of the speed-ups against the ceiling: {args.ceiling_png}")
     print(f"results: {args.csv}")
     if args.timeline:
         print(f"median work speed-up (no rank waits): {statistics.median(work):.2f}x; "

@@ -31,8 +31,11 @@ The per-step rows of every run go to ``--timeline-csv``; ``--plot`` draws the pa
 median speed-up (``--png``); ``--plot-only`` redraws it from the CSV.
 
 Usage: benchmarks/mpm_two_ranks.py [--pairs 5] [--cell-size 0.0003125] [--steps 100]
-       [--shape q1] [--material "linear elastic"] [--csv FILE] [--timeline [--plot]]
-Results go to ``benchmarks/results/mpm_two_ranks.csv`` (one row per run).
+       [--shape q1] [--material "linear elastic"] [--csv FILE] [--control]
+       [--timeline] [--plot] [--plot-only PAIR]
+Results go to ``benchmarks/results/mpm_two_ranks.csv`` (one row per run; the side-by-side
+copies of --control have their core in ``side_by_side_core``). With --plot-only, --shape and
+--material only name the run in the figures' titles.
 """
 import argparse
 import csv
@@ -214,12 +217,15 @@ def main(argv=None):
                                                          "mpm-two-ranks-ceiling.png"))
     args = p.parse_args(argv)
     if args.plot_only is not None:
-        if os.path.isfile(args.timeline_csv):
-            plot(read_timeline_csv(args.timeline_csv), args.plot_only, args.png)
-            print(f"wrote {args.png}")
+        # The titles name the run: its size from --csv, shape and material from the options.
         results = read_result_csv(args.csv)
+        scene = (f"Column collapse, {int(results[0]['particles']):,} points, {args.shape}, "
+                 f"{args.material}")
+        if os.path.isfile(args.timeline_csv):
+            plot(read_timeline_csv(args.timeline_csv), args.plot_only, args.png, scene)
+            print(f"wrote {args.png}")
         if any(r.get("side_by_side_core") not in (None, "") for r in results):
-            plot_ceiling(results, args.ceiling_png)
+            plot_ceiling(results, args.ceiling_png, scene)
             print(f"wrote {args.ceiling_png}")
         return
     exe = find_executable(args.exe, 0.)

@@ -45,12 +45,13 @@ import sys
 import threading
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from benchmark_common import cpu_steal_seconds, find_executable, fmt, wait_until_idle, write_csv  # noqa: E402
+from benchmark_common import (cpu_steal_seconds, find_executable, fmt,  # noqa: E402
+                              wait_until_idle, write_csv)
 from mpm_throughput import column_collapse_settings, run_slidewave  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-COLUMNS = ["pair", "ranks", "side_by_side_core", "particles", "cells", "steps", "advance_wall_s",
-           "setup_wall_s", "background_load", "steal_s", "own_work_s", "exchange_s",
+COLUMNS = ["pair", "ranks", "side_by_side_core", "particles", "cells", "steps",
+           "advance_wall_s", "setup_wall_s", "background_load", "steal_s", "own_work_s", "exchange_s",
            "step_max_work_s", "status"]
 # The parts of step_timeline.csv: a rank's own work, and the exchanges where it may wait.
 EXCHANGE_PARTS = ["exchange_sums", "exchange_velocities", "relocation_reduction"]

@@ -30,20 +30,24 @@ def write_csv(path, rows, columns):
             w.writerow({k: ("" if row.get(k) is None else row[k]) for k in columns})
 
 
+def _cpu_ticks():
+    """The machine's CPU times so far, in clock ticks: the 'cpu' line of /proc/stat (user,
+    nice, system, idle, iowait, irq, softirq, steal, ...)."""
+    with open("/proc/stat") as f:
+        return [int(v) for v in f.readline().split()[1:]]
+
+
 def cpu_busy_seconds():
     """CPU seconds spent by all processes of the machine so far (from /proc/stat)."""
-    with open("/proc/stat") as f:
-        fields = f.readline().split()[1:]
-    user, nice, system, _idle, _iowait, irq, softirq, steal = (int(v) for v in fields[:8])
+    user, nice, system, _idle, _iowait, irq, softirq, steal = _cpu_ticks()[:8]
     return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
 
 
 def cpu_steal_seconds():
     """CPU seconds the hypervisor has taken from this virtual machine's cores so far
     (/proc/stat's 'steal': a core wanted to run and the host ran something else)."""
-    with open("/proc/stat") as f:
-        fields = f.readline().split()[1:]
-    return (int(fields[7]) if len(fields) > 7 else 0) / os.sysconf("SC_CLK_TCK")
+    ticks = _cpu_ticks()
+    return (ticks[7] if len(ticks) > 7 else 0) / os.sysconf("SC_CLK_TCK")
 
 
 def background_load(seconds):

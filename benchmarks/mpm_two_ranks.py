@@ -91,23 +91,28 @@ def side_by_side(exe, prm, settings, mpirun):
 
 
 def pair_figures(rows):
-    """Per pair, from the result rows: the two-rank speed-up, the ceiling (with --control)
-    and the work speed-up (with --timeline). Returns {pair: {name: value}}."""
+    """Per pair, from the result rows: the two-rank speed-up, the ceiling (with --control),
+    and the work and step-max speed-ups (with --timeline). Returns {pair: {name: value}}."""
     runs = {}
     for r in rows:
         core = r.get("side_by_side_core")
-        kind = "alone" if core in (None, "") and int(r["ranks"]) == 1 else \
-            "two ranks" if core in (None, "") else f"side by side {int(core)}"
+        if core not in (None, ""):
+            kind = f"side by side {int(core)}"
+        else:
+            kind = "alone" if int(r["ranks"]) == 1 else "two ranks"
         runs.setdefault(int(r["pair"]), {})[kind] = r
     figures = {}
     for pair, k in sorted(runs.items()):
-        one, two = float(k["alone"]["advance_wall_s"]), float(k["two ranks"]["advance_wall_s"])
-        f = {"speed-up": one / two}
+        alone, two = k["alone"], k["two ranks"]
+        one = float(alone["advance_wall_s"])
+        f = {"speed-up": one / float(two["advance_wall_s"])}
         if "side by side 0" in k and "side by side 1" in k:
             f["ceiling"] = 2 * one / max(float(k[f"side by side {c}"]["advance_wall_s"])
                                          for c in (0, 1))
-        if k["alone"].get("own_work_s") not in (None, ""):
-            f["work"] = float(k["alone"]["own_work_s"]) / float(k["two ranks"]["own_work_s"])
+        if alone.get("own_work_s") not in (None, ""):
+            own = float(alone["own_work_s"])
+            f["work"] = own / float(two["own_work_s"])
+            f["step-max"] = own / float(two["step_max_work_s"])
         figures[pair] = f
     return figures
 
@@ -235,7 +240,6 @@ def main(argv=None):
     if args.timeline:
         settings["Material points/Step timeline"] = "true"
     rows, times, steals, timeline_rows = [], {1: [], 2: []}, {1: [], 2: []}, []
-    work, step_max, ceilings = [], [], []
     header = (f"{'pair':>4} {'1 rank [s]':>11} {'2 ranks [s]':>12} {'speed-up':>9} "
               f"{'stolen [s]':>11}")
     if args.control:
@@ -264,9 +268,6 @@ def main(argv=None):
                                       rank=int(t["rank"])) for t in r["timeline"]]
             rows.append(r)
             times[ranks].append(r["advance_wall_s"])
-        line = (f"{pair:>4} {times[1][-1]:>11.2f} {times[2][-1]:>12.2f} "
-                f"{times[1][-1] / times[2][-1]:>8.2f}x "
-                f"{steals[1][-1]:>5.2f}/{steals[2][-1]:<5.2f}")
         if args.control:
             both = side_by_side(exe, args.prm, settings, args.mpirun)
             for core, r in enumerate(both):
@@ -275,19 +276,23 @@ def main(argv=None):
                 r.update(pair=pair, ranks=1, side_by_side_core=core)
                 r.pop("timeline", None)
                 rows.append(r)
-            pair_times = [r["advance_wall_s"] for r in both]
-            ceilings.append(2 * times[1][-1] / max(pair_times))
-            line += f" {pair_times[0]:>8.2f}/{pair_times[1]:<8.2f} {ceilings[-1]:>7.2f}x"
+        f = pair_figures([r for r in rows if r["pair"] == pair])[pair]
+        line = (f"{pair:>4} {times[1][-1]:>11.2f} {times[2][-1]:>12.2f} "
+                f"{f['speed-up']:>8.2f}x {steals[1][-1]:>5.2f}/{steals[2][-1]:<5.2f}")
+        if args.control:
+            line += (f" {both[0]['advance_wall_s']:>8.2f}/{both[1]['advance_wall_s']:<8.2f}"
+                     f" {f['ceiling']:>7.2f}x")
         if args.timeline:
-            one, two = summaries[1], summaries[2]
-            work.append(one["own_work_s"] / two["own_work_s"])
-            step_max.append(one["own_work_s"] / two["step_max_work_s"])
+            two = summaries[2]
             by_rank = "/".join(f"{two['work_by_rank'][k]:.2f}" for k in sorted(two["work_by_rank"]))
-            line += (f" {work[-1]:>6.2f}x {step_max[-1]:>8.2f}x {by_rank:>14} "
+            line += (f" {f['work']:>6.2f}x {f['step-max']:>8.2f}x {by_rank:>14} "
                      f"{two['exchange_s']:>14.2f}")
         print(line, flush=True)
     write_csv(args.csv, rows, COLUMNS)
-    ratios = [a / b for a, b in zip(times[1], times[2])]
+    figures = list(pair_figures(rows).values())
+    ratios = [f["speed-up"] for f in figures]
+    scene = (f"Column collapse, {rows[0]['particles']:,} points, {args.shape}, "
+             f"{args.material}")
     print(f"{rows[0]['particles']} points, {rows[0]['cells']} cells, {args.steps} steps, "
           f"{args.shape}, {args.material}")
     print(f"median of the pairs' speed-ups: {statistics.median(ratios):.2f}x "
@@ -297,29 +302,28 @@ def main(argv=None):
           f"{fmt(statistics.median(times[2]), '.2f')} s)")
     print(f"ratio of the fastest runs: {min(times[1]) / min(times[2]):.2f}x")
     if args.control:
+        ceilings = [f["ceiling"] for f in figures]
         efficiency = [r / c for r, c in zip(ratios, ceilings)]
         print(f"median ceiling (two one-rank runs side by side): "
               f"{statistics.median(ceilings):.2f}x (from {min(ceilings):.2f}x to "
               f"{max(ceilings):.2f}x); median two-rank speed-up over the pair's ceiling: "
               f"{statistics.median(efficiency):.2f}")
         if args.plot:
-            plot_ceiling(rows, args.ceiling_png,
-                         f"Column collapse, {rows[0]['particles']:,} points, {args.shape}, "
-                         f"{args.material}")
+            plot_ceiling(rows, args.ceiling_png, scene)
             print(f"figure of the speed-ups against the ceiling: {args.ceiling_png}")
     print(f"results: {args.csv}")
     if args.timeline:
-        print(f"median work speed-up (no rank waits): {statistics.median(work):.2f}x; "
+        work = statistics.median(f["work"] for f in figures)
+        step_max = statistics.median(f["step-max"] for f in figures)
+        print(f"median work speed-up (no rank waits): {work:.2f}x; "
               f"median step-max speed-up (each step waits for its slower rank, free "
-              f"exchanges): {statistics.median(step_max):.2f}x")
+              f"exchanges): {step_max:.2f}x")
         columns = ["pair", "ranks", "step", "rank"] + WORK_PARTS + EXCHANGE_PARTS
         write_csv(args.timeline_csv, timeline_rows, columns)
         print(f"step timelines: {args.timeline_csv}")
         if args.plot:
             median_pair = sorted(range(len(ratios)), key=lambda i: ratios[i])[len(ratios) // 2] + 1
-            plot(timeline_rows, median_pair, args.png,
-                 f"Column collapse, {rows[0]['particles']:,} points, {args.shape}, "
-                 f"{args.material}")
+            plot(timeline_rows, median_pair, args.png, scene)
             print(f"figure of pair {median_pair} (median speed-up): {args.png}")
 
 

@@ -1,10 +1,8 @@
 // The `slidewave` executable: MPI set-up around the application in the library.
 #include <deal.II/base/mpi.h>
-
-#include <slidewave/core/application.h>
-
 #include <exception>
 #include <iostream>
+#include <slidewave/core/application.h>
 
 int
 main(int argc, char *argv[])
@@ -12,7 +10,7 @@ main(int argc, char *argv[])
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const std::vector<std::string> arguments(argv + 1, argv + argc);
+      const std::vector<std::string>           arguments(argv + 1, argv + argc);
       return slidewave::run_application(arguments, std::cout, std::cerr);
     }
   catch (const std::exception &e)

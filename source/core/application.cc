@@ -1,7 +1,9 @@
+#include <cstdlib>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
-
+#include <filesystem>
+#include <fstream>
 #include <slidewave/core/application.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parameter_documentation.h>
@@ -9,36 +11,32 @@
 #include <slidewave/coupling/coupled_scene.h>
 #include <slidewave/mpm/material_point_scene.h>
 #include <slidewave/water/water_scene.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace slidewave
 {
   namespace
   {
-    const char *usage =
-      "Usage: slidewave [options] SCENE.prm\n"
-      "\n"
-      "Runs the scene described by the parameter file SCENE.prm (in parallel with\n"
-      "'mpirun -np N slidewave SCENE.prm').\n"
-      "\n"
-      "Options:\n"
-      "  --validate                 parse and check SCENE.prm, run nothing\n"
-      "  --set 'PATH=VALUE'         override one parameter after reading the file, e.g.\n"
-      "                             --set 'Shallow water/Mesh/Number of cells=400'\n"
-      "  --resume                   resume from the newest checkpoint in the output\n"
-      "                             directory (same as --set 'Checkpoint/Resume=true')\n"
-      "  --print-parameters [FMT]   print every parameter with its default, allowed\n"
-      "                             values and documentation; FMT is prm (default),\n"
-      "                             json or markdown\n"
-      "  --help                     this text\n"
-      "  --version                  the version\n"
-      "\n"
-      "Exit status: 0 success, 1 bad input (nothing run), 2 the run became invalid,\n"
-      "3 an exact-solution check exceeded its tolerance.\n";
+    const char *usage
+      = "Usage: slidewave [options] SCENE.prm\n"
+        "\n"
+        "Runs the scene described by the parameter file SCENE.prm (in parallel with\n"
+        "'mpirun -np N slidewave SCENE.prm').\n"
+        "\n"
+        "Options:\n"
+        "  --validate                 parse and check SCENE.prm, run nothing\n"
+        "  --set 'PATH=VALUE'         override one parameter after reading the file, e.g.\n"
+        "                             --set 'Shallow water/Mesh/Number of cells=400'\n"
+        "  --resume                   resume from the newest checkpoint in the output\n"
+        "                             directory (same as --set 'Checkpoint/Resume=true')\n"
+        "  --print-parameters [FMT]   print every parameter with its default, allowed\n"
+        "                             values and documentation; FMT is prm (default),\n"
+        "                             json or markdown\n"
+        "  --help                     this text\n"
+        "  --version                  the version\n"
+        "\n"
+        "Exit status: 0 success, 1 bad input (nothing run), 2 the run became invalid,\n"
+        "3 an exact-solution check exceeded its tolerance.\n";
 
     /** deal.II's exception text without its source location, on one line. */
     std::string
@@ -46,7 +44,7 @@ namespace slidewave
     {
       std::ostringstream info;
       exception.print_info(info);
-      std::string text = info.str(), result;
+      std::string text  = info.str(), result;
       bool        space = false;
       for (const char c : text)
         {
@@ -74,7 +72,7 @@ namespace slidewave
       const auto at = message.find("Line <");
       if (at == std::string::npos)
         return "";
-      const unsigned int line_number = std::atoi(message.c_str() + at + 6);
+      const unsigned int       line_number = std::atoi(message.c_str() + at + 6);
       std::ifstream            in(file);
       std::vector<std::string> path;
       std::string              line;
@@ -120,7 +118,8 @@ namespace slidewave
         {
           for (; depth > 0; --depth)
             prm.leave_subsection();
-          throw InputError(path, value,
+          throw InputError(path,
+                           value,
                            "a declared parameter and a value of its type (see "
                            "'slidewave --print-parameters')");
         }
@@ -148,19 +147,22 @@ namespace slidewave
           std::filesystem::remove(probe, error);
           if (!failed)
             {
-              const auto target =
-                std::filesystem::path(directory) / std::filesystem::path(input_file).filename();
+              const auto target
+                = std::filesystem::path(directory) / std::filesystem::path(input_file).filename();
               std::error_code copy_error;
               if (!std::filesystem::equivalent(input_file, target, copy_error))
-                std::filesystem::copy_file(input_file, target,
+                std::filesystem::copy_file(input_file,
+                                           target,
                                            std::filesystem::copy_options::overwrite_existing,
                                            copy_error);
             }
         }
       failed = dealii::Utilities::MPI::max(failed, MPI_COMM_WORLD);
       if (failed)
-        throw InputError("Output directory", directory, "a directory that can be created "
-                                                        "and written");
+        throw InputError("Output directory",
+                         directory,
+                         "a directory that can be created "
+                         "and written");
     }
   } // namespace
 
@@ -206,15 +208,17 @@ namespace slidewave
           }
         if (arg == "--print-parameters")
           {
-            const std::string format = a + 1 < arguments.size() ? arguments[a + 1] : "prm";
+            const std::string        format = a + 1 < arguments.size() ? arguments[a + 1] : "prm";
             dealii::ParameterHandler prm;
             declare_all_parameters(prm);
             if (format == "prm")
-              prm.print_parameters(out, dealii::ParameterHandler::PRM |
-                                          dealii::ParameterHandler::KeepDeclarationOrder);
+              prm.print_parameters(out,
+                                   dealii::ParameterHandler::PRM
+                                     | dealii::ParameterHandler::KeepDeclarationOrder);
             else if (format == "json")
-              prm.print_parameters(out, dealii::ParameterHandler::JSON |
-                                          dealii::ParameterHandler::KeepDeclarationOrder);
+              prm.print_parameters(out,
+                                   dealii::ParameterHandler::JSON
+                                     | dealii::ParameterHandler::KeepDeclarationOrder);
             else if (format == "markdown")
               print_parameters_markdown(prm, out);
             else
@@ -247,8 +251,8 @@ namespace slidewave
           input_file = arg;
         else
           {
-            err << "slidewave: error: more than one scene file ('" << input_file << "', '"
-                << arg << "')\n\n"
+            err << "slidewave: error: more than one scene file ('" << input_file << "', '" << arg
+                << "')\n\n"
                 << usage;
             return input_error;
           }
@@ -271,7 +275,9 @@ namespace slidewave
         declare_all_parameters(prm);
         try
           {
-            prm.parse_input(input_file, "", /*skip_undefined=*/false,
+            prm.parse_input(input_file,
+                            "",
+                            /*skip_undefined=*/false,
                             /*assert_mandatory_entries_are_found=*/false);
           }
         catch (const dealii::ExceptionBase &e)
@@ -288,10 +294,9 @@ namespace slidewave
 
         switch (scene.physics)
           {
-            case Physics::shallow_water:
-              {
-                if (scene.resume || scene.checkpoint_steps > 0 || scene.checkpoint_minutes > 0. ||
-                    scene.checkpoint_at_end)
+              case Physics::shallow_water: {
+                if (scene.resume || scene.checkpoint_steps > 0 || scene.checkpoint_minutes > 0.
+                    || scene.checkpoint_at_end)
                   throw InputError(scene.resume ? "Checkpoint/Resume" : "Checkpoint",
                                    scene.resume ? "true" : "set",
                                    "no checkpoint settings in a shallow-water scene "
@@ -305,8 +310,7 @@ namespace slidewave
                 prepare_output_directory(scene.output_directory, input_file);
                 return water_scene.run() ? success : verification_error;
               }
-            case Physics::material_points:
-              {
+              case Physics::material_points: {
                 mpm::MaterialPointScene scene_of_material_points(scene, prm);
                 if (validate_only)
                   {
@@ -316,8 +320,7 @@ namespace slidewave
                 prepare_output_directory(scene.output_directory, input_file);
                 return scene_of_material_points.run() ? success : verification_error;
               }
-            case Physics::coupled:
-              {
+              case Physics::coupled: {
                 coupling::CoupledScene coupled_scene(scene, prm);
                 if (validate_only)
                   {

@@ -1,8 +1,6 @@
-#include <deal.II/base/utilities.h>
-
-#include <slidewave/core/input_error.h>
-
 #include <cmath>
+#include <deal.II/base/utilities.h>
+#include <slidewave/core/input_error.h>
 #include <sstream>
 
 namespace slidewave
@@ -10,18 +8,19 @@ namespace slidewave
   InputError::InputError(const std::string &parameter,
                          const std::string &value,
                          const std::string &allowed)
-    : std::runtime_error("parameter '" + parameter + "' = '" + value +
-                         "': allowed: " + allowed)
+    : std::runtime_error("parameter '" + parameter + "' = '" + value + "': allowed: " + allowed)
     , parameter(parameter)
     , value(value)
     , allowed(allowed)
-  {}
+  {
+  }
 
 
 
   RunFailure::RunFailure(const std::string &what)
     : std::runtime_error(what)
-  {}
+  {
+  }
 
 
 
@@ -67,9 +66,8 @@ namespace slidewave
     if (!(above && below) || !std::isfinite(value))
       throw InputError(parameter,
                        to_string(value),
-                       "a number in " + std::string(lower_inclusive ? "[" : "(") +
-                         to_string(lower) + ", " + to_string(upper) +
-                         (upper_inclusive ? "]" : ")"));
+                       "a number in " + std::string(lower_inclusive ? "[" : "(") + to_string(lower)
+                         + ", " + to_string(upper) + (upper_inclusive ? "]" : ")"));
   }
 
 

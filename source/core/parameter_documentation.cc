@@ -1,8 +1,6 @@
-#include <slidewave/core/parameter_documentation.h>
-
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
-
+#include <slidewave/core/parameter_documentation.h>
 #include <sstream>
 
 namespace slidewave
@@ -35,15 +33,13 @@ namespace slidewave
               header_written = true;
             }
           out << "- **`" << child.first << "`** (default: `"
-              << node.get<std::string>("default_value") << "`; allowed: "
-              << escape(node.get<std::string>("pattern_description")) << ")  \n  "
+              << node.get<std::string>("default_value")
+              << "`; allowed: " << escape(node.get<std::string>("pattern_description")) << ")  \n  "
               << node.get<std::string>("documentation") << "\n";
         }
       for (const auto &child : tree)
         if (child.second.find("value") == child.second.not_found())
-          print_section(child.second,
-                        (path.empty() ? "" : path + " / ") + child.first,
-                        out);
+          print_section(child.second, (path.empty() ? "" : path + " / ") + child.first, out);
     }
   } // namespace
 
@@ -54,8 +50,8 @@ namespace slidewave
   {
     std::stringstream json;
     prm.print_parameters(json,
-                         dealii::ParameterHandler::JSON |
-                           dealii::ParameterHandler::KeepDeclarationOrder);
+                         dealii::ParameterHandler::JSON
+                           | dealii::ParameterHandler::KeepDeclarationOrder);
     boost::property_tree::ptree tree;
     boost::property_tree::read_json(json, tree);
 

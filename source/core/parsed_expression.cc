@@ -1,11 +1,9 @@
+#include <cmath>
 #include <deal.II/base/point.h>
 #include <deal.II/base/utilities.h>
-
+#include <iostream>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parsed_expression.h>
-
-#include <cmath>
-#include <iostream>
 #include <sstream>
 
 namespace slidewave
@@ -14,20 +12,18 @@ namespace slidewave
   parse_constants(const std::string &parameter, const std::string &constants)
   {
     std::map<std::string, double> result;
-    for (const std::string &item :
-         dealii::Utilities::split_string_list(constants, ','))
+    for (const std::string &item : dealii::Utilities::split_string_list(constants, ','))
       {
         if (item.empty())
           continue;
         const auto equal = item.find('=');
         if (equal == std::string::npos)
-          throw InputError(parameter, constants,
-                           "a comma-separated list of name=value pairs");
+          throw InputError(parameter, constants, "a comma-separated list of name=value pairs");
         const std::string name = dealii::Utilities::trim(item.substr(0, equal));
         const std::string text = dealii::Utilities::trim(item.substr(equal + 1));
         try
           {
-            std::size_t used = 0;
+            std::size_t  used  = 0;
             const double value = std::stod(text, &used);
             if (used != text.size() || name.empty())
               throw std::invalid_argument("trailing characters");
@@ -35,7 +31,8 @@ namespace slidewave
           }
         catch (const std::exception &)
           {
-            throw InputError(parameter, constants,
+            throw InputError(parameter,
+                             constants,
                              "a comma-separated list of name=value pairs with numeric values");
           }
       }
@@ -68,7 +65,7 @@ namespace slidewave
     catch (...)
       {
         std::cerr.rdbuf(cerr_buffer);
-        std::string reason;
+        std::string       reason;
         const std::string text = diagnosis.str();
         const auto        at   = text.find("Message:");
         if (at != std::string::npos)
@@ -78,10 +75,11 @@ namespace slidewave
             if (open != std::string::npos && close != std::string::npos)
               reason = " (muparser: " + text.substr(open + 1, close - open - 1) + ")";
           }
-        throw InputError(parameter, expression,
+        throw InputError(parameter,
+                         expression,
                          "a valid expression of x and t in muparser syntax, e.g. "
-                         "'x < 0.5 ? 1.0 : 0.5', using only the declared constants" +
-                           reason);
+                         "'x < 0.5 ? 1.0 : 0.5', using only the declared constants"
+                           + reason);
       }
   }
 

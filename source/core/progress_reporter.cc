@@ -1,6 +1,5 @@
-#include <slidewave/core/progress_reporter.h>
-
 #include <cstdio>
+#include <slidewave/core/progress_reporter.h>
 
 namespace slidewave
 {
@@ -14,7 +13,8 @@ namespace slidewave
     , seconds_between_lines(seconds_between_lines)
     , wall_start(std::chrono::steady_clock::now())
     , last_line(wall_start)
-  {}
+  {
+  }
 
 
 
@@ -26,15 +26,15 @@ namespace slidewave
   {
     if (out == nullptr)
       return;
-    const auto   now     = std::chrono::steady_clock::now();
-    const double since   = std::chrono::duration<double>(now - last_line).count();
+    const auto   now   = std::chrono::steady_clock::now();
+    const double since = std::chrono::duration<double>(now - last_line).count();
     if (!force && step > 1 && since < seconds_between_lines)
       return;
     last_line = now;
 
     const double elapsed  = std::chrono::duration<double>(now - wall_start).count();
     const double fraction = (time - start_time) / (end_time - start_time);
-    const double eta = fraction > 0. ? elapsed * (1. - fraction) / fraction : 0.;
+    const double eta      = fraction > 0. ? elapsed * (1. - fraction) / fraction : 0.;
 
     char line[160];
     std::snprintf(line,

@@ -1,8 +1,7 @@
-#include <slidewave/core/input_error.h>
-#include <slidewave/core/scene_parameters.h>
-
 #include <filesystem>
 #include <limits>
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/scene_parameters.h>
 
 namespace slidewave
 {
@@ -59,14 +58,20 @@ namespace slidewave
 
     prm.enter_subsection("Checkpoint");
     {
-      prm.declare_entry("Step interval", "0", Integer(0),
+      prm.declare_entry("Step interval",
+                        "0",
+                        Integer(0),
                         "Write a checkpoint every this many steps (0: never). Checkpoints "
                         "go to OUTPUT/checkpoint (the previous one is kept as "
                         "checkpoint.previous); writing is atomic.");
-      prm.declare_entry("Wall time interval", "0", Double(0.),
+      prm.declare_entry("Wall time interval",
+                        "0",
+                        Double(0.),
                         "Write a checkpoint every this many minutes of wall time (0: never).");
       prm.declare_entry("At end", "false", Bool(), "Write a checkpoint at the end of the run.");
-      prm.declare_entry("Resume", "false", Bool(),
+      prm.declare_entry("Resume",
+                        "false",
+                        Bool(),
                         "Resume from the newest checkpoint in the output directory (same as "
                         "the command-line option --resume). The scene may change its end "
                         "time, output and checkpoint settings, and the number of MPI ranks; "
@@ -92,8 +97,8 @@ namespace slidewave
   std::string
   SceneParameters::resolve_path(const std::string &file_name) const
   {
-    if (file_name.empty() || std::filesystem::path(file_name).is_absolute() ||
-        scene_directory.empty())
+    if (file_name.empty() || std::filesystem::path(file_name).is_absolute()
+        || scene_directory.empty())
       return file_name;
     return (std::filesystem::path(scene_directory) / file_name).string();
   }
@@ -101,8 +106,7 @@ namespace slidewave
 
 
   void
-  SceneParameters::parse_parameters(dealii::ParameterHandler &prm,
-                                    const std::string        &input_file)
+  SceneParameters::parse_parameters(dealii::ParameterHandler &prm, const std::string &input_file)
   {
     const std::string physics_name = prm.get("Physics");
     if (physics_name == "shallow water")
@@ -117,11 +121,10 @@ namespace slidewave
                        "one of 'shallow water', 'material points', 'coupled' (a scene must "
                        "choose its physics)");
 
-    scene_directory = std::filesystem::path(input_file).parent_path().string();
+    scene_directory  = std::filesystem::path(input_file).parent_path().string();
     output_directory = prm.get("Output directory");
     if (output_directory.empty())
-      output_directory =
-        "output-" + std::filesystem::path(input_file).stem().string();
+      output_directory = "output-" + std::filesystem::path(input_file).stem().string();
 
     prm.enter_subsection("Time");
     {

@@ -1,7 +1,6 @@
-#include <slidewave/core/statistics.h>
-
 #include <cmath>
 #include <cstdio>
+#include <slidewave/core/statistics.h>
 #include <stdexcept>
 
 namespace slidewave
@@ -63,8 +62,8 @@ namespace slidewave
     for (unsigned int c = 0; c < columns.size(); ++c)
       {
         if (current_row[c].first != columns[c])
-          throw std::logic_error("Statistics: column '" + current_row[c].first +
-                                 "' where '" + columns[c] + "' was expected");
+          throw std::logic_error("Statistics: column '" + current_row[c].first + "' where '"
+                                 + columns[c] + "' was expected");
         last_row[c] = current_row[c].second;
       }
 

@@ -1,11 +1,9 @@
-#include <deal.II/base/utilities.h>
-
-#include <slidewave/core/input_error.h>
-#include <slidewave/core/table_1d.h>
-
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/utilities.h>
 #include <fstream>
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/table_1d.h>
 
 namespace slidewave
 {
@@ -39,8 +37,8 @@ namespace slidewave
       throw InputError(parameter, filename, "the name of a readable CSV file");
 
     std::string  line;
-    unsigned int line_number      = 0;
-    bool         seen_first_line  = false;
+    unsigned int line_number     = 0;
+    bool         seen_first_line = false;
     while (std::getline(in, line))
       {
         ++line_number;
@@ -49,31 +47,31 @@ namespace slidewave
           continue;
         const auto fields = dealii::Utilities::split_string_list(trimmed, ',');
         double     a = 0., b = 0.;
-        const bool numeric = fields.size() == 2 && parse_number(fields[0], a) &&
-                             parse_number(fields[1], b);
+        const bool numeric
+          = fields.size() == 2 && parse_number(fields[0], a) && parse_number(fields[1], b);
         if (!numeric)
           {
-            const bool header =
-              !seen_first_line &&
-              std::none_of(fields.begin(), fields.end(), [](const std::string &f) {
-                double dummy;
-                return parse_number(f, dummy);
-              });
+            const bool header
+              = !seen_first_line
+                && std::none_of(fields.begin(), fields.end(), [](const std::string &f) {
+                     double dummy;
+                     return parse_number(f, dummy);
+                   });
             seen_first_line = true;
             if (header)
               continue;
             throw InputError(parameter,
                              filename,
-                             "a CSV file of two numeric columns (line " +
-                               std::to_string(line_number) + " reads '" + trimmed + "')");
+                             "a CSV file of two numeric columns (line "
+                               + std::to_string(line_number) + " reads '" + trimmed + "')");
           }
         seen_first_line = true;
         if (!x.empty() && !(a > x.back()))
           throw InputError(parameter,
                            filename,
-                           "a CSV table whose first column increases strictly (line " +
-                             std::to_string(line_number) + ": " + to_string(a) +
-                             " follows " + to_string(x.back()) + ")");
+                           "a CSV table whose first column increases strictly (line "
+                             + std::to_string(line_number) + ": " + to_string(a) + " follows "
+                             + to_string(x.back()) + ")");
         x.push_back(a);
         y.push_back(b);
       }

@@ -1,17 +1,14 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
-
-#include <slidewave/core/input_error.h>
-#include <slidewave/core/timed_run.h>
-
 #include <exception>
 #include <iostream>
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/timed_run.h>
 
 namespace slidewave
 {
   bool
-  run_with_timer(const bool test_mode,
-                 const std::function<bool(dealii::TimerOutput &)> &time_loop)
+  run_with_timer(const bool test_mode, const std::function<bool(dealii::TimerOutput &)> &time_loop)
   {
     const bool writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     dealii::ConditionalOStream timer_out(std::cout, writer && !test_mode);

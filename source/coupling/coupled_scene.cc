@@ -1,18 +1,16 @@
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
-
+#include <filesystem>
+#include <iostream>
+#include <limits>
 #include <slidewave/core/format.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/progress_reporter.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/coupling/coupled_scene.h>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <iostream>
-#include <limits>
 
 namespace slidewave
 {
@@ -29,17 +27,23 @@ namespace slidewave
     CouplingParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
       using namespace dealii::Patterns;
-      prm.declare_entry("Water density", "1000", Double(0.),
+      prm.declare_entry("Water density",
+                        "1000",
+                        Double(0.),
                         "rho_w [kg/m^3]: the water's pressure and bed shear on the soil "
                         "(paper 000, Eq. 10).");
-      prm.declare_entry("Water cells", "grid columns", Selection("grid columns|water mesh"),
+      prm.declare_entry("Water cells",
+                        "grid columns",
+                        Selection("grid columns|water mesh"),
                         "'grid columns': the water cells are the columns of the material "
                         "points' grid at set-up (non-uniform where it is refined; the bed is "
                         "the soil surface of each column, no interpolation between meshes). "
                         "'water mesh': the cells of 'Shallow water/Mesh'; the bed is "
                         "reconstructed on them by monotone cubic interpolation through the "
                         "column surfaces.");
-      prm.declare_entry("Soil surface", "envelope", Selection("envelope|top"),
+      prm.declare_entry("Soil surface",
+                        "envelope",
+                        Selection("envelope|top"),
                         "How the soil makes the water's bed in each grid column. 'top': the "
                         "top of the highest point domain in the column, max (y_p + l_p); it "
                         "jumps by the height of a face when the first point enters a column. "
@@ -47,25 +51,35 @@ namespace slidewave
                         "point domains (8 samples per column; the grid's floor where there "
                         "is no soil): the top where the soil fills the column, and growing "
                         "continuously as a face moves into a column.");
-      prm.declare_entry("Water loads on soil", "true", Bool(),
+      prm.declare_entry("Water loads on soil",
+                        "true",
+                        Bool(),
                         "Whether the water's pressure and bed shear act on the soil (false: "
                         "one-way coupling, the soil moves the water only).");
-      prm.declare_entry("Maximum substeps", "1", Integer(1, 1000),
+      prm.declare_entry("Maximum substeps",
+                        "1",
+                        Integer(1, 1000),
                         "1: one step of both solvers per coupled step, the smaller of the two "
                         "stable steps (Eq. 38). N > 1: the solver with the smaller stable step "
                         "takes up to N steps inside one step of the other; bed and loads are "
                         "exchanged once per coupled step.");
       prm.enter_subsection("Verification");
       {
-        prm.declare_entry("Tolerance on volume balance", "0", Double(0.),
+        prm.declare_entry("Tolerance on volume balance",
+                          "0",
+                          Double(0.),
                           "If > 0, the run fails (exit status 3) when, at any step, the water "
                           "volume differs from the initial volume plus the boundary inflow by "
                           "more than this fraction of the initial volume.");
-        prm.declare_entry("Tolerance on free surface", "0", Double(0.),
+        prm.declare_entry("Tolerance on free surface",
+                          "0",
+                          Double(0.),
                           "If > 0, the run fails (exit status 3) when, at any step, the free "
                           "surface over the wet cells is not flat to within this [m] (max eta "
                           "- min eta): the coupled lake at rest.");
-        prm.declare_entry("Tolerance on soil speed", "0", Double(0.),
+        prm.declare_entry("Tolerance on soil speed",
+                          "0",
+                          Double(0.),
                           "If > 0, the run fails (exit status 3) when a material point ever "
                           "moves faster than this [m/s]: soil that must stay at rest.");
       }
@@ -77,15 +91,15 @@ namespace slidewave
     void
     CouplingParameters::parse_parameters(dealii::ParameterHandler &prm)
     {
-      water_density    = prm.get_double("Water density");
-      water_cells      = prm.get("Water cells") == "grid columns" ? WaterCells::grid_columns :
-                                                                    WaterCells::water_mesh;
-      soil_surface     = prm.get("Soil surface") == "top" ? SoilSurface::top :
-                                                            SoilSurface::envelope;
-      loads_on_soil    = prm.get_bool("Water loads on soil");
+      water_density = prm.get_double("Water density");
+      water_cells   = prm.get("Water cells") == "grid columns" ? WaterCells::grid_columns :
+                                                                 WaterCells::water_mesh;
+      soil_surface  = prm.get("Soil surface") == "top" ? SoilSurface::top : SoilSurface::envelope;
+      loads_on_soil = prm.get_bool("Water loads on soil");
       maximum_substeps = prm.get_integer("Maximum substeps");
       if (!(water_density > 0.))
-        throw InputError(section + "/Water density", to_string(water_density),
+        throw InputError(section + "/Water density",
+                         to_string(water_density),
                          "a density > 0 kg/m^3");
       prm.enter_subsection("Verification");
       tolerance_volume       = prm.get_double("Tolerance on volume balance");
@@ -106,13 +120,13 @@ namespace slidewave
 
 
 
-    CoupledScene::CoupledScene(const SceneParameters &scene_parameters,
+    CoupledScene::CoupledScene(const SceneParameters    &scene_parameters,
                                dealii::ParameterHandler &prm)
       : scene(scene_parameters)
       , particle_output(scene_parameters.output_directory)
     {
-      if (scene.resume || scene.checkpoint_steps > 0 || scene.checkpoint_minutes > 0. ||
-          scene.checkpoint_at_end)
+      if (scene.resume || scene.checkpoint_steps > 0 || scene.checkpoint_minutes > 0.
+          || scene.checkpoint_at_end)
         throw InputError(scene.resume ? "Checkpoint/Resume" : "Checkpoint",
                          scene.resume ? "true" : "set",
                          "no checkpoint settings in a coupled scene (checkpoints exist for "
@@ -148,7 +162,8 @@ namespace slidewave
         prm.enter_subsection("Bed");
         terrain.parse_parameters(prm, water_section + "/Bed", scene);
         if (terrain.time_dependent())
-          throw InputError(water_section + "/Bed/Time dependent", "true",
+          throw InputError(water_section + "/Bed/Time dependent",
+                           "true",
                            "false in a coupled scene (the soil moves the bed; 'Bed' is the "
                            "fixed terrain)");
         prm.leave_subsection();
@@ -162,15 +177,16 @@ namespace slidewave
       prm.leave_subsection();
 
       const double left = soil_parameters.lower_left[0], right = soil_parameters.upper_right[0];
-      if (configured_mesh &&
-          (configured_mesh->left_end() < left - 1e-12 * (right - left) ||
-           configured_mesh->right_end() > right + 1e-12 * (right - left)))
+      if (configured_mesh
+          && (configured_mesh->left_end() < left - 1e-12 * (right - left)
+              || configured_mesh->right_end() > right + 1e-12 * (right - left)))
         throw InputError(water_section + "/Mesh",
-                         "[" + to_string(configured_mesh->left_end()) + ", " +
-                           to_string(configured_mesh->right_end()) + "]",
-                         "a water mesh inside the material points' grid [" + to_string(left) +
-                           ", " + to_string(right) + "] (x)");
-      gauges.parse_positions(water_section + "/Gauges/Positions", gauge_text,
+                         "[" + to_string(configured_mesh->left_end()) + ", "
+                           + to_string(configured_mesh->right_end()) + "]",
+                         "a water mesh inside the material points' grid [" + to_string(left) + ", "
+                           + to_string(right) + "] (x)");
+      gauges.parse_positions(water_section + "/Gauges/Positions",
+                             gauge_text,
                              configured_mesh ? configured_mesh->left_end() : left,
                              configured_mesh ? configured_mesh->right_end() : right);
     }
@@ -202,7 +218,8 @@ namespace slidewave
         grid_columns = std::move(unique);
       }
 
-      const water::WaterMesh mesh = configured_mesh ? *configured_mesh : water::WaterMesh(grid_columns);
+      const water::WaterMesh mesh
+        = configured_mesh ? *configured_mesh : water::WaterMesh(grid_columns);
       // Soil columns: the grid columns themselves, or, under an independent water mesh,
       // uniform columns of the finest cell size.
       std::vector<double> columns;
@@ -220,12 +237,17 @@ namespace slidewave
           const double x = 0.5 * (columns[c] + columns[c + 1]);
           terrain_at_columns.push_back(terrain.value(x, scene.start_time));
           if (!std::isfinite(terrain_at_columns.back()))
-            throw InputError("Shallow water/Bed", "B(" + to_string(x) + ")",
+            throw InputError("Shallow water/Bed",
+                             "B(" + to_string(x) + ")",
                              "a bed elevation that is finite everywhere");
         }
-      water = std::make_unique<water::ShallowWater1D>(mesh, water_parameters, boundaries[0],
+      water     = std::make_unique<water::ShallowWater1D>(mesh,
+                                                      water_parameters,
+                                                      boundaries[0],
                                                       boundaries[1]);
-      interface = std::make_unique<SoilWaterInterface>(columns, mesh, terrain_at_columns,
+      interface = std::make_unique<SoilWaterInterface>(columns,
+                                                       mesh,
+                                                       terrain_at_columns,
                                                        terrain.sample(mesh, scene.start_time),
                                                        coupling.water_density,
                                                        coupling.soil_surface,
@@ -276,11 +298,12 @@ namespace slidewave
 
 
     void
-    CoupledScene::check_state(const unsigned int step, const double time,
-                              const bool check_soil) const
+    CoupledScene::check_state(const unsigned int step,
+                              const double       time,
+                              const bool         check_soil) const
     {
-      const std::string where =
-        "at step " + std::to_string(step) + ", t = " + to_string(time) + " s: ";
+      const std::string where
+        = "at step " + std::to_string(step) + ", t = " + to_string(time) + " s: ";
       const unsigned int bad = water->find_invalid_cell();
       if (bad < water->n_cells())
         throw RunFailure(where + water->describe_invalid_cell(bad));
@@ -319,8 +342,8 @@ namespace slidewave
                            volume - initial_volume - water->net_boundary_inflow());
       statistics.add_value("soil_mass", integrals.mass);
       statistics.add_value("soil_kinetic_energy", integrals.kinetic_energy);
-      const dealii::Tensor<1, 2> load =
-        coupling.loads_on_soil ? interface->load_on_soil() : dealii::Tensor<1, 2>();
+      const dealii::Tensor<1, 2> load
+        = coupling.loads_on_soil ? interface->load_on_soil() : dealii::Tensor<1, 2>();
       statistics.add_value("water_load_x", load[0]);
       statistics.add_value("water_load_y", load[1]);
     }
@@ -344,9 +367,8 @@ namespace slidewave
     bool
     CoupledScene::run()
     {
-      return run_with_timer(scene.test_mode, [this](dealii::TimerOutput &timer) {
-        return run_time_loop(timer);
-      });
+      return run_with_timer(scene.test_mode,
+                            [this](dealii::TimerOutput &timer) { return run_time_loop(timer); });
     }
 
 
@@ -383,31 +405,33 @@ namespace slidewave
             throw InputError("Material points/Fixed time step",
                              to_string(soil_parameters.fixed_time_step),
                              "a time step at most the stability limit of this scene, h / "
-                             "(sqrt(2) max(c_p + |v_p|)) = " + to_string(limit) + " s");
+                             "(sqrt(2) max(c_p + |v_p|)) = "
+                               + to_string(limit) + " s");
         }
       initial_volume = water->water_volume();
       initial_toe    = soil->integrals().runout;
 
       pcout << "Coupled: " << soil->particles().n_global_particles() << " material points on "
-            << soil->triangulation().n_global_active_cells() << " cells; "
-            << water->n_cells() << " water cells ("
+            << soil->triangulation().n_global_active_cells() << " cells; " << water->n_cells()
+            << " water cells ("
             << (coupling.water_cells == WaterCells::grid_columns ? "grid columns" : "water mesh")
             << ", widths " << water->mesh().min_width() << " to " << water->mesh().max_width()
             << " m); output in " << scene.output_directory << std::endl;
 
       Statistics statistics;
-      statistics.open(scene.output_directory + "/statistics.csv", is_writer,
+      statistics.open(scene.output_directory + "/statistics.csv",
+                      is_writer,
                       is_writer && test_mode ? &std::cout : nullptr);
       gauges.open(scene.output_directory + "/water/gauges.csv", is_writer);
       ProgressReporter progress(is_writer && !test_mode ? &std::cout : nullptr,
-                                scene.start_time, scene.end_time);
+                                scene.start_time,
+                                scene.end_time);
 
       const double end_time       = scene.end_time;
       const double time_tolerance = 1e-12 * (end_time - scene.start_time);
       double       time           = scene.start_time;
       unsigned int step = 0, output_index = 0;
-      double       next_output = scene.output_interval > 0. ? time + scene.output_interval :
-                                                              end_time;
+      double next_output = scene.output_interval > 0. ? time + scene.output_interval : end_time;
       double max_volume_balance = 0., max_deviation = free_surface_deviation(),
              max_soil_speed = soil->integrals().max_speed;
 
@@ -435,11 +459,11 @@ namespace slidewave
               dt_soil  = std::min(dt_soil, scene.maximum_time_step);
               dt_water = std::min(dt_water, scene.maximum_time_step);
             }
-          const unsigned int N  = coupling.maximum_substeps;
-          double             dt = dt_soil <= dt_water ? std::min(dt_water, N * dt_soil) :
-                                                        std::min(dt_soil, N * dt_water);
-          const double target         = std::min(next_output, end_time);
-          const bool   reaches_target = time + dt >= target - time_tolerance;
+          const unsigned int N      = coupling.maximum_substeps;
+          double             dt     = dt_soil <= dt_water ? std::min(dt_water, N * dt_soil) :
+                                                            std::min(dt_soil, N * dt_water);
+          const double       target = std::min(next_output, end_time);
+          const bool         reaches_target = time + dt >= target - time_tolerance;
           if (reaches_target)
             dt = target - time;
           const auto substeps = [&](const double limit) {
@@ -465,7 +489,7 @@ namespace slidewave
             for (double t = time; t < time + dt * (1. - 1e-12); ++n_water)
               {
                 const double limit = n_water == 0 ? dt_water : water->stable_time_step();
-                last_step = std::min(limit, time + dt - t);
+                last_step          = std::min(limit, time + dt - t);
                 if (time + dt - t - last_step < 1e-12 * dt)
                   last_step = time + dt - t;
                 water->advance(t, last_step);
@@ -489,10 +513,10 @@ namespace slidewave
             }
 
           if (coupling.tolerance_volume > 0.)
-            max_volume_balance =
-              std::max(max_volume_balance, std::abs(water->water_volume() - initial_volume -
-                                                    water->net_boundary_inflow()) /
-                                             initial_volume);
+            max_volume_balance = std::max(max_volume_balance,
+                                          std::abs(water->water_volume() - initial_volume
+                                                   - water->net_boundary_inflow())
+                                            / initial_volume);
           if (coupling.tolerance_free_surface > 0.)
             max_deviation = std::max(max_deviation, free_surface_deviation());
           if (coupling.tolerance_soil_speed > 0.)
@@ -507,8 +531,8 @@ namespace slidewave
                   write_output(output_index, time);
                 ++output_index;
                 if (is_output_time)
-                  next_output = scene.output_interval > 0. ? next_output + scene.output_interval :
-                                                             end_time;
+                  next_output
+                    = scene.output_interval > 0. ? next_output + scene.output_interval : end_time;
               }
             if (reports)
               {
@@ -520,19 +544,21 @@ namespace slidewave
         }
       gauges.flush();
 
-      bool within = true;
-      const auto check = [&](const char *what, const double value, const double tolerance) {
+      bool       within = true;
+      const auto check  = [&](const char *what, const double value, const double tolerance) {
         if (tolerance <= 0.)
           return;
         const bool ok = value <= tolerance;
         within        = within && ok;
         if (is_writer)
-          std::cout << what << " = " << format("%.3e", value) << " <= "
-                    << format("%.3e", tolerance) << ": " << (ok ? "yes" : "no") << std::endl;
+          std::cout << what << " = " << format("%.3e", value) << " <= " << format("%.3e", tolerance)
+                    << ": " << (ok ? "yes" : "no") << std::endl;
       };
-      check("Largest relative water volume balance error", max_volume_balance,
+      check("Largest relative water volume balance error",
+            max_volume_balance,
             coupling.tolerance_volume);
-      check("Largest free-surface deviation from flat [m]", max_deviation,
+      check("Largest free-surface deviation from flat [m]",
+            max_deviation,
             coupling.tolerance_free_surface);
       check("Largest soil speed [m/s]", max_soil_speed, coupling.tolerance_soil_speed);
       return within;

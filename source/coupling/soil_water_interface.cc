@@ -1,11 +1,9 @@
-#include <deal.II/base/mpi.h>
-
-#include <slidewave/coupling/soil_water_interface.h>
-#include <slidewave/mpm/particle_properties.h>
-
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <limits>
+#include <slidewave/coupling/soil_water_interface.h>
+#include <slidewave/mpm/particle_properties.h>
 
 namespace slidewave
 {
@@ -84,9 +82,10 @@ namespace slidewave
     SoilWaterInterface::column_of(const double x) const
     {
       if (uniform_width > 0.)
-        return static_cast<unsigned int>(std::clamp(
-          std::floor((x - columns.front()) / uniform_width), 0.,
-          static_cast<double>(columns.size() - 2)));
+        return static_cast<unsigned int>(
+          std::clamp(std::floor((x - columns.front()) / uniform_width),
+                     0.,
+                     static_cast<double>(columns.size() - 2)));
       const auto k = std::upper_bound(columns.begin(), columns.end(), x) - columns.begin();
       return static_cast<unsigned int>(
         std::clamp<long>(k - 1, 0, static_cast<long>(columns.size()) - 2));
@@ -119,7 +118,8 @@ namespace slidewave
     SoilWaterInterface::update_surface(const mpm::MaterialPointSolver &soil)
     {
       using namespace mpm;
-      std::fill(surface_height.begin(), surface_height.end(),
+      std::fill(surface_height.begin(),
+                surface_height.end(),
                 -std::numeric_limits<double>::infinity());
       if (surface_definition == SoilSurface::envelope)
         std::fill(envelope.begin(), envelope.end(), -std::numeric_limits<double>::infinity());
@@ -135,10 +135,11 @@ namespace slidewave
               {
                 // The samples of the column under the point's domain.
                 const double w = (columns[c + 1] - columns[c]) / samples_per_column;
-                const int    first =
-                  std::max(0, static_cast<int>(std::ceil((x[0] - l - columns[c]) / w - 0.5)));
-                const int last = std::min(static_cast<int>(samples_per_column) - 1,
-                                          static_cast<int>(std::floor((x[0] + l - columns[c]) / w - 0.5)));
+                const int    first
+                  = std::max(0, static_cast<int>(std::ceil((x[0] - l - columns[c]) / w - 0.5)));
+                const int last
+                  = std::min(static_cast<int>(samples_per_column) - 1,
+                             static_cast<int>(std::floor((x[0] + l - columns[c]) / w - 0.5)));
                 for (int k = first; k <= last; ++k)
                   {
                     double &e = envelope[c * samples_per_column + k];
@@ -186,11 +187,10 @@ namespace slidewave
           reconstruction.reinit(column_centers, samples);
           for (unsigned int i = 0; i < bed_elevation.size(); ++i)
             {
-              const double x = cell_centers[i];
-              bed_elevation[i] =
-                x < columns.front() || x > columns.back() ?
-                  terrain_at_cells[i] :
-                  std::max(reconstruction.value(x), terrain_at_cells[i]);
+              const double x   = cell_centers[i];
+              bed_elevation[i] = x < columns.front() || x > columns.back() ?
+                                   terrain_at_cells[i] :
+                                   std::max(reconstruction.value(x), terrain_at_cells[i]);
             }
         }
       return bed_elevation;
@@ -199,7 +199,7 @@ namespace slidewave
 
 
     void
-    SoilWaterInterface::apply_water_loads(mpm::MaterialPointSolver     &soil,
+    SoilWaterInterface::apply_water_loads(mpm::MaterialPointSolver    &soil,
                                           const water::ShallowWater1D &water,
                                           const double                 dt)
     {
@@ -227,18 +227,19 @@ namespace slidewave
           if (dt > 0.)
             tau = std::clamp(tau, -rho * h[i] * std::abs(u) / dt, rho * h[i] * std::abs(u) / dt);
           const unsigned int l = i > 0 ? i - 1 : i, r = i + 1 < n ? i + 1 : i;
-          const double       slope =
-            r > l ? (B[r] - B[l]) / (mesh.center(r) - mesh.center(l)) : 0.;
-          cell_load_x[i] = tau * dx;
-          cell_load_y[i] = -rho * g * h[i] * dx + tau * slope * dx;
+          const double       slope = r > l ? (B[r] - B[l]) / (mesh.center(r) - mesh.center(l)) : 0.;
+          cell_load_x[i]           = tau * dx;
+          cell_load_y[i]           = -rho * g * h[i] * dx + tau * slope * dx;
         }
       // The thrust of the water against each step of the bed, on the higher side: the
       // hydrostatic pressure of the lower cell's water integrated over the step's height,
       // borne by the soil in the wet band of the face, [B_low, eta_low].
       std::fill(cell_thrust.begin(), cell_thrust.end(), 0.);
-      std::fill(cell_band_bottom.begin(), cell_band_bottom.end(),
+      std::fill(cell_band_bottom.begin(),
+                cell_band_bottom.end(),
                 std::numeric_limits<double>::infinity());
-      std::fill(cell_band_level.begin(), cell_band_level.end(),
+      std::fill(cell_band_level.begin(),
+                cell_band_level.end(),
                 -std::numeric_limits<double>::infinity());
       for (unsigned int i = 0; i + 1 < n; ++i)
         {
@@ -246,8 +247,8 @@ namespace slidewave
           const unsigned int low = rises ? i : i + 1, high = rises ? i + 1 : i;
           if (h[low] <= dry)
             continue;
-          const double eta   = h[low] + B[low];
-          const double above = std::max(eta - B[high], 0.);
+          const double eta    = h[low] + B[low];
+          const double above  = std::max(eta - B[high], 0.);
           const double thrust = 0.5 * rho * g * (h[low] * h[low] - above * above);
           cell_thrust[high] += rises ? thrust : -thrust;
           cell_band_bottom[high] = std::min(cell_band_bottom[high], B[low]);
@@ -329,8 +330,8 @@ namespace slidewave
       total_load = dealii::Tensor<1, 2>();
       for (unsigned int c = 0; c < surface_weights.size(); ++c)
         if (surface_weights[c] > 0.)
-          total_load +=
-            dealii::Tensor<1, 2>({column_load_x[c] + column_thrust[c], column_load_y[c]});
+          total_load
+            += dealii::Tensor<1, 2>({column_load_x[c] + column_thrust[c], column_load_y[c]});
     }
   } // namespace coupling
 } // namespace slidewave

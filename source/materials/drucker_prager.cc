@@ -39,8 +39,7 @@ namespace slidewave
       , dilatancy_coefficient(plane_strain_coefficient(dilatancy_angle_degrees))
       , cohesion_term(
           3. * cohesion
-          / std::sqrt(
-            9. + 12. * std::pow(tangent_of_degrees(friction_angle_degrees), 2)))
+          / std::sqrt(9. + 12. * std::pow(tangent_of_degrees(friction_angle_degrees), 2)))
       , cutoff(tension_cutoff)
     {
     }
@@ -57,23 +56,20 @@ namespace slidewave
 
 
     PlasticCorrection
-    DruckerPrager::update_stress(
-      dealii::SymmetricTensor<2, 3>       &stress,
-      const dealii::SymmetricTensor<2, 3> &strain_increment,
-      double                              &equivalent_plastic_strain) const
+    DruckerPrager::update_stress(dealii::SymmetricTensor<2, 3>       &stress,
+                                 const dealii::SymmetricTensor<2, 3> &strain_increment,
+                                 double &equivalent_plastic_strain) const
     {
       stress += elastic.stress_increment(strain_increment);
       const PlasticCorrection correction = return_to_yield_surface(stress);
-      equivalent_plastic_strain
-        += correction.equivalent_plastic_strain_increment;
+      equivalent_plastic_strain += correction.equivalent_plastic_strain_increment;
       return correction;
     }
 
 
 
     PlasticCorrection
-    DruckerPrager::return_to_yield_surface(
-      dealii::SymmetricTensor<2, 3> &stress) const
+    DruckerPrager::return_to_yield_surface(dealii::SymmetricTensor<2, 3> &stress) const
     {
       const double K = elastic.bulk_modulus();
       const double G = elastic.shear_modulus();
@@ -82,17 +78,13 @@ namespace slidewave
       const double                        p_trial = dealii::trace(trial) / 3.;
       const dealii::SymmetricTensor<2, 3> s_trial = dealii::deviator(trial);
       const double                        q_trial = root_j2(s_trial);
-      const double                        f_trial
-        = 3. * friction_coefficient * p_trial + q_trial - cohesion_term;
+      const double f_trial = 3. * friction_coefficient * p_trial + q_trial - cohesion_term;
 
-      const double cone_scale = cohesion_term
-                                + std::abs(3. * friction_coefficient * p_trial)
-                                + q_trial;
+      const double cone_scale
+        = cohesion_term + std::abs(3. * friction_coefficient * p_trial) + q_trial;
       const bool outside_cone = f_trial > relative_tolerance * cone_scale;
       const bool beyond_cutoff
-        = p_trial
-          > cutoff
-              + relative_tolerance * (cutoff + std::abs(p_trial) + q_trial);
+        = p_trial > cutoff + relative_tolerance * (cutoff + std::abs(p_trial) + q_trial);
 
       PlasticCorrection correction;
       if (!outside_cone && !beyond_cutoff)
@@ -107,11 +99,9 @@ namespace slidewave
       if (outside_cone)
         {
           const double dlambda
-            = f_trial
-              / (G + 9. * K * friction_coefficient * dilatancy_coefficient);
+            = f_trial / (G + 9. * K * friction_coefficient * dilatancy_coefficient);
           const double q_cone = q_trial - G * dlambda;
-          const double p_cone
-            = p_trial - 3. * K * dilatancy_coefficient * dlambda;
+          const double p_cone = p_trial - 3. * K * dilatancy_coefficient * dlambda;
           // Without friction the cone is a cylinder: q_cone = k_c >= 0 up to
           // rounding, and there is no apex to fall back on.
           const bool has_apex = friction_coefficient > 0.;
@@ -126,8 +116,7 @@ namespace slidewave
 
       if (!found && p_trial > cutoff)
         {
-          const double f_at_cutoff
-            = 3. * friction_coefficient * cutoff + q_trial - cohesion_term;
+          const double f_at_cutoff = 3. * friction_coefficient * cutoff + q_trial - cohesion_term;
           if (f_at_cutoff <= relative_tolerance * cone_scale)
             {
               correction.region = ReturnRegion::tension_cutoff;
@@ -140,17 +129,14 @@ namespace slidewave
         {
           correction.region = ReturnRegion::corner;
           p                 = std::min(cutoff, apex_mean_stress());
-          q                 = std::min(q_trial,
-                       std::max(cohesion_term - 3. * friction_coefficient * p,
-                                0.));
+          q = std::min(q_trial, std::max(cohesion_term - 3. * friction_coefficient * p, 0.));
         }
 
       stress = p * dealii::unit_symmetric_tensor<3>();
       if (q_trial > 0.)
         stress += (q / q_trial) * s_trial;
 
-      correction.plastic_strain_increment
-        = elastic.strain_increment(trial - stress);
+      correction.plastic_strain_increment = elastic.strain_increment(trial - stress);
       correction.equivalent_plastic_strain_increment
         = equivalent_plastic_strain(correction.plastic_strain_increment);
       return correction;
@@ -159,11 +145,10 @@ namespace slidewave
 
 
     double
-    DruckerPrager::yield_function(
-      const dealii::SymmetricTensor<2, 3> &stress) const
+    DruckerPrager::yield_function(const dealii::SymmetricTensor<2, 3> &stress) const
     {
-      return friction_coefficient * dealii::trace(stress)
-             + root_j2(dealii::deviator(stress)) - cohesion_term;
+      return friction_coefficient * dealii::trace(stress) + root_j2(dealii::deviator(stress))
+             - cohesion_term;
     }
 
 
@@ -219,8 +204,7 @@ namespace slidewave
 
 
     double
-    DruckerPrager::equivalent_plastic_strain(
-      const dealii::SymmetricTensor<2, 3> &strain)
+    DruckerPrager::equivalent_plastic_strain(const dealii::SymmetricTensor<2, 3> &strain)
     {
       const dealii::SymmetricTensor<2, 3> e = dealii::deviator(strain);
       return std::sqrt(2. / 3. * (e * e));

@@ -10,20 +10,18 @@ namespace slidewave
     MaterialParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
       using namespace dealii::Patterns;
-      prm.declare_entry(
-        "Name",
-        "",
-        Anything(),
-        "The name of the material; geometry regions refer to it "
-        "by this name.");
-      prm.declare_entry(
-        "Model",
-        "drucker prager",
-        Selection("linear elastic|drucker prager"),
-        "'linear elastic': Hooke's law only. 'drucker prager': "
-        "linear elasticity with the non-associative "
-        "Drucker-Prager criterion matched to Mohr-Coulomb in "
-        "plane strain and a tension cutoff (paper 000, Eqs. 2-4).");
+      prm.declare_entry("Name",
+                        "",
+                        Anything(),
+                        "The name of the material; geometry regions refer to it "
+                        "by this name.");
+      prm.declare_entry("Model",
+                        "drucker prager",
+                        Selection("linear elastic|drucker prager"),
+                        "'linear elastic': Hooke's law only. 'drucker prager': "
+                        "linear elasticity with the non-associative "
+                        "Drucker-Prager criterion matched to Mohr-Coulomb in "
+                        "plane strain and a tension cutoff (paper 000, Eqs. 2-4).");
       prm.declare_entry("Density",
                         "2000",
                         Double(),
@@ -48,39 +46,34 @@ namespace slidewave
                         "Mises) criterion sqrt(J2) = c of a total stress "
                         "analysis, where the cohesion is the undrained shear "
                         "strength s_u.");
-      prm.declare_entry(
-        "Cohesion",
-        "0",
-        Double(),
-        "Cohesion c [Pa] of the Drucker-Prager criterion, >= 0.");
-      prm.declare_entry(
-        "Dilatancy angle",
-        "0",
-        Double(),
-        "Dilatancy angle psi [degrees] of the plastic potential, "
-        "in [0, friction angle]: 0 gives plastic flow without "
-        "volume change, the friction angle gives associated "
-        "flow.");
-      prm.declare_entry(
-        "Tension cutoff",
-        "0",
-        Double(),
-        "Tensile strength T [Pa] on the mean stress p = tr(sigma)/3 "
-        "(tension positive), >= 0: the Drucker-Prager model keeps "
-        "p <= T. With a friction angle above 0, values above "
-        "c cot(phi), the apex of the cone, have no effect.");
+      prm.declare_entry("Cohesion",
+                        "0",
+                        Double(),
+                        "Cohesion c [Pa] of the Drucker-Prager criterion, >= 0.");
+      prm.declare_entry("Dilatancy angle",
+                        "0",
+                        Double(),
+                        "Dilatancy angle psi [degrees] of the plastic potential, "
+                        "in [0, friction angle]: 0 gives plastic flow without "
+                        "volume change, the friction angle gives associated "
+                        "flow.");
+      prm.declare_entry("Tension cutoff",
+                        "0",
+                        Double(),
+                        "Tensile strength T [Pa] on the mean stress p = tr(sigma)/3 "
+                        "(tension positive), >= 0: the Drucker-Prager model keeps "
+                        "p <= T. With a friction angle above 0, values above "
+                        "c cot(phi), the apex of the cone, have no effect.");
     }
 
 
 
     void
-    MaterialParameters::parse_parameters(dealii::ParameterHandler &prm,
-                                         const std::string        &path)
+    MaterialParameters::parse_parameters(dealii::ParameterHandler &prm, const std::string &path)
     {
       name            = dealii::Utilities::trim(prm.get("Name"));
-      model           = prm.get("Model") == "linear elastic" ?
-                          MaterialModel::linear_elastic :
-                          MaterialModel::drucker_prager;
+      model           = prm.get("Model") == "linear elastic" ? MaterialModel::linear_elastic :
+                                                               MaterialModel::drucker_prager;
       density         = prm.get_double("Density");
       youngs_modulus  = prm.get_double("Young's modulus");
       poisson_ratio   = prm.get_double("Poisson ratio");
@@ -97,13 +90,11 @@ namespace slidewave
       require_positive(path + "/Density", density);
       require_positive(path + "/Young's modulus", youngs_modulus);
       if (!(poisson_ratio > -1. && poisson_ratio < 0.5))
-        throw InputError(
-          path + "/Poisson ratio",
-          to_string(poisson_ratio),
-          "a number in (-1, 0.5), where the bulk and shear moduli "
-          "are positive and finite");
-      require_in_range(
-        path + "/Friction angle", friction_angle, 0., true, 90., false);
+        throw InputError(path + "/Poisson ratio",
+                         to_string(poisson_ratio),
+                         "a number in (-1, 0.5), where the bulk and shear moduli "
+                         "are positive and finite");
+      require_in_range(path + "/Friction angle", friction_angle, 0., true, 90., false);
       if (!(dilatancy_angle >= 0. && dilatancy_angle <= friction_angle))
         throw InputError(path + "/Dilatancy angle",
                          to_string(dilatancy_angle),
@@ -117,8 +108,7 @@ namespace slidewave
 
 
     void
-    apply_jaumann_rotation(dealii::SymmetricTensor<2, 3> &stress,
-                           const double                   spin_increment_xy)
+    apply_jaumann_rotation(dealii::SymmetricTensor<2, 3> &stress, const double spin_increment_xy)
     {
       // σ + Wσ - σW for W_xy = ω, W_yx = -ω (see the documentation in the
       // header); computed from the old components.
@@ -153,11 +143,10 @@ namespace slidewave
 
 
     void
-    Material::update_stress(
-      dealii::SymmetricTensor<2, 3>       &stress,
-      const dealii::SymmetricTensor<2, 3> &strain_increment,
-      const double                         spin_increment_xy,
-      double                              &equivalent_plastic_strain) const
+    Material::update_stress(dealii::SymmetricTensor<2, 3>       &stress,
+                            const dealii::SymmetricTensor<2, 3> &strain_increment,
+                            const double                         spin_increment_xy,
+                            double                              &equivalent_plastic_strain) const
     {
       apply_jaumann_rotation(stress, spin_increment_xy);
       switch (parameters.model)
@@ -166,9 +155,7 @@ namespace slidewave
             stress += elastic.stress_increment(strain_increment);
             break;
           case MaterialModel::drucker_prager:
-            plasticity->update_stress(stress,
-                                      strain_increment,
-                                      equivalent_plastic_strain);
+            plasticity->update_stress(stress, strain_increment, equivalent_plastic_strain);
             break;
         }
     }

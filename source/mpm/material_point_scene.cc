@@ -1,23 +1,21 @@
+#include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
-
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/progress_reporter.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/mpm/material_point_scene.h>
 #include <slidewave/mpm/particle_properties.h>
-
-#include <chrono>
-#include <cmath>
-#include <exception>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
 #include <sstream>
 
 namespace slidewave
@@ -37,19 +35,24 @@ namespace slidewave
       using namespace dealii::Patterns;
       prm.enter_subsection(section);
       SolverParameters::declare_parameters(prm);
-      prm.declare_entry("Check interval", "10", Integer(1),
+      prm.declare_entry("Check interval",
+                        "10",
+                        Integer(1),
                         "Every this many steps (and before every output), the material "
                         "points are checked for non-finite values and non-positive volumes, "
                         "for points that left through a side that is not free, and the "
                         "kinetic energy against the energy available (initial "
                         "kinetic + elastic energy + work of gravity); a failed check stops "
                         "the run (exit status 2) with the step, time and point.");
-      prm.declare_entry("Output grid", "false", Bool(),
+      prm.declare_entry("Output grid",
+                        "false",
+                        Bool(),
                         "Also write the background grid (grid/*.pvtu, grid.pvd) with the "
                         "nodal mass and velocity of the last step at each output time.");
       prm.enter_subsection("Verification");
       {
-        prm.declare_entry("Exact solution", "none",
+        prm.declare_entry("Exact solution",
+                          "none",
                           Selection("none|bar vibration|self weight column|rigid rotation"),
                           "'bar vibration': axial vibration of an elastic bar fixed at x = 0 "
                           "and free at x = L, started with v = A sin(pi x / (2 L)); the "
@@ -63,15 +66,25 @@ namespace slidewave
                           "R sigma_0 R^T (R the rotation by omega t; the Jaumann rate turns "
                           "the stress with the material), normalized by |sigma_0|.");
         prm.declare_entry("Bar length", "25", Double(0.), "L of the vibrating bar [m].");
-        prm.declare_entry("Bar amplitude", "0.1", Double(0.),
+        prm.declare_entry("Bar amplitude",
+                          "0.1",
+                          Double(0.),
                           "A, the initial velocity amplitude of the bar [m/s].");
-        prm.declare_entry("Column height", "1", Double(0.),
+        prm.declare_entry("Column height",
+                          "1",
+                          Double(0.),
                           "H, the initial height of the column's top [m].");
-        prm.declare_entry("Rotation rate", "1", Double(),
+        prm.declare_entry("Rotation rate",
+                          "1",
+                          Double(),
                           "omega of the rigid rotation [rad/s], counter-clockwise positive.");
-        prm.declare_entry("Rotation centre", "0, 0", Anything(),
+        prm.declare_entry("Rotation centre",
+                          "0, 0",
+                          Anything(),
                           "x, y of the centre of the rigid rotation [m].");
-        prm.declare_entry("Tolerance", "0", Double(0.),
+        prm.declare_entry("Tolerance",
+                          "0",
+                          Double(0.),
                           "If > 0, the run fails (exit status 3) when the error exceeds it "
                           "(bar: largest error over the run, in m/s).");
       }
@@ -88,20 +101,21 @@ namespace slidewave
     {
       prm.enter_subsection(section);
       parameters.parse_parameters(prm, section);
-      write_grid = prm.get_bool("Output grid");
+      write_grid     = prm.get_bool("Output grid");
       check_interval = prm.get_integer("Check interval");
       prm.enter_subsection("Verification");
       {
         const std::string type = prm.get("Exact solution");
-        exact_solution = type == "bar vibration"      ? ExactSolution::bar_vibration :
-                         type == "self weight column" ? ExactSolution::self_weight_column :
-                         type == "rigid rotation"     ? ExactSolution::rigid_rotation :
-                                                        ExactSolution::none;
-        rotation_rate = prm.get_double("Rotation rate");
+        exact_solution         = type == "bar vibration"      ? ExactSolution::bar_vibration :
+                                 type == "self weight column" ? ExactSolution::self_weight_column :
+                                 type == "rigid rotation"     ? ExactSolution::rigid_rotation :
+                                                                ExactSolution::none;
+        rotation_rate          = prm.get_double("Rotation rate");
         {
           const auto centre = parse_number_list(section + "/Verification/Rotation centre",
                                                 prm.get("Rotation centre"),
-                                                "two numbers x, y", 2);
+                                                "two numbers x, y",
+                                                2);
           rotation_centre   = dealii::Point<2>(centre[0], centre[1]);
         }
         bar_length    = prm.get_double("Bar length");
@@ -118,12 +132,12 @@ namespace slidewave
     double
     MaterialPointScene::bar_velocity_error(const double time) const
     {
-      const auto  &material = parameters.materials[parameters.regions[0].material_index];
-      const double beta     = M_PI / (2. * bar_length);
-      const double omega    = beta * std::sqrt(material.youngs_modulus / material.density);
+      const auto  &material  = parameters.materials[parameters.regions[0].material_index];
+      const double beta      = M_PI / (2. * bar_length);
+      const double omega     = beta * std::sqrt(material.youngs_modulus / material.density);
       const auto   integrals = solver->integrals();
-      const double exact =
-        bar_amplitude * std::cos(omega * (time - scene.start_time)) / (beta * bar_length);
+      const double exact
+        = bar_amplitude * std::cos(omega * (time - scene.start_time)) / (beta * bar_length);
       return std::abs(integrals.momentum_x / integrals.mass - exact);
     }
 
@@ -132,18 +146,18 @@ namespace slidewave
     double
     MaterialPointScene::column_stress_error() const
     {
-      const double g = std::abs(parameters.gravity[1]);
+      const double g     = std::abs(parameters.gravity[1]);
       double       error = 0., norm = 0.;
       for (const auto &particle : solver->particles())
         {
-          const auto   p       = particle.get_properties();
-          const double rho0    = p[property::mass] / p[property::initial_volume];
-          const double exact   = -rho0 * g * (column_height - p[property::initial_y]);
+          const auto   p     = particle.get_properties();
+          const double rho0  = p[property::mass] / p[property::initial_volume];
+          const double exact = -rho0 * g * (column_height - p[property::initial_y]);
           error += std::abs(p[property::stress_yy] - exact) * p[property::initial_volume];
           norm += rho0 * g * column_height * p[property::initial_volume];
         }
-      return dealii::Utilities::MPI::sum(error, MPI_COMM_WORLD) /
-             dealii::Utilities::MPI::sum(norm, MPI_COMM_WORLD);
+      return dealii::Utilities::MPI::sum(error, MPI_COMM_WORLD)
+             / dealii::Utilities::MPI::sum(norm, MPI_COMM_WORLD);
     }
 
 
@@ -152,13 +166,13 @@ namespace slidewave
     MaterialPointScene::rotation_errors(const double time) const
     {
       // sigma(t) = R sigma_0 R^T and x(t) = c + R (X - c), R the rotation by omega t.
-      const double                  angle = rotation_rate * (time - scene.start_time);
-      const double                  c = std::cos(angle), s = std::sin(angle);
-      const dealii::Tensor<2, 2>    R({{c, -s}, {s, c}});
-      const auto                   &u = parameters.uniform_stress;
-      const dealii::Tensor<2, 2>    sigma_0({{u[0], u[2]}, {u[2], u[1]}});
-      const dealii::Tensor<2, 2>    exact = R * sigma_0 * dealii::transpose(R);
-      double                        stress = 0., position = 0.;
+      const double               angle = rotation_rate * (time - scene.start_time);
+      const double               c = std::cos(angle), s = std::sin(angle);
+      const dealii::Tensor<2, 2> R({{c, -s}, {s, c}});
+      const auto                &u = parameters.uniform_stress;
+      const dealii::Tensor<2, 2> sigma_0({{u[0], u[2]}, {u[2], u[1]}});
+      const dealii::Tensor<2, 2> exact  = R * sigma_0 * dealii::transpose(R);
+      double                     stress = 0., position = 0.;
       for (const auto &particle : solver->particles())
         {
           const auto                 p = particle.get_properties();
@@ -230,8 +244,8 @@ namespace slidewave
     {
       // Written to checkpoint.tmp, then renamed: a run killed while writing leaves the
       // previous checkpoints intact. The last two are kept.
-      namespace fs          = std::filesystem;
-      const bool  is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      namespace fs             = std::filesystem;
+      const bool     is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       const fs::path directory = scene.output_directory;
       const fs::path tmp = directory / "checkpoint.tmp", latest = directory / "checkpoint",
                      previous = directory / "checkpoint.previous";
@@ -261,7 +275,8 @@ namespace slidewave
             out << t << ' ' << name << '\n';
           out.close();
           if (fs::exists(directory / "statistics.csv"))
-            fs::copy_file(directory / "statistics.csv", tmp / "statistics.csv",
+            fs::copy_file(directory / "statistics.csv",
+                          tmp / "statistics.csv",
                           fs::copy_options::overwrite_existing);
           if (fs::exists(latest))
             {
@@ -278,28 +293,30 @@ namespace slidewave
     void
     MaterialPointScene::resume(LoopState &loop)
     {
-      namespace fs = std::filesystem;
+      namespace fs             = std::filesystem;
       const fs::path directory = scene.output_directory;
       fs::path       source    = directory / "checkpoint";
       if (!fs::exists(source / "scene.txt"))
         source = directory / "checkpoint.previous";
       if (!fs::exists(source / "scene.txt"))
-        throw InputError("Checkpoint/Resume", "true",
-                         "a checkpoint in '" + (directory / "checkpoint").string() +
-                           "' (there is none: run the scene with checkpoints first)");
+        throw InputError("Checkpoint/Resume",
+                         "true",
+                         "a checkpoint in '" + (directory / "checkpoint").string()
+                           + "' (there is none: run the scene with checkpoints first)");
       std::ifstream in(source / "scene.txt");
       std::string   signature;
       std::getline(in, signature);
       if (signature != checkpoint_signature())
-        throw InputError("Checkpoint/Resume", "true",
-                         "a checkpoint written by this scene; the one in '" + source.string() +
-                           "' is of a different scene (" + signature + "; this scene: " +
-                           checkpoint_signature() + ")");
+        throw InputError("Checkpoint/Resume",
+                         "true",
+                         "a checkpoint written by this scene; the one in '" + source.string()
+                           + "' is of a different scene (" + signature
+                           + "; this scene: " + checkpoint_signature() + ")");
       MaterialPointSolver::State solver_state;
       double                     saved_interval = 0.;
       in >> solver_state.time >> solver_state.lost_mass >> solver_state.n_steps;
-      in >> loop.time >> loop.step >> loop.output_index >> loop.next_output >> saved_interval >>
-        loop.max_error >> initial_energy >> total_mass;
+      in >> loop.time >> loop.step >> loop.output_index >> loop.next_output >> saved_interval
+        >> loop.max_error >> initial_energy >> total_mass;
       std::size_t n = 0;
       in >> n;
       particle_output.files.resize(n);
@@ -310,25 +327,29 @@ namespace slidewave
       for (auto &[t, name] : grid_files)
         in >> t >> name;
       if (!in)
-        throw InputError("Checkpoint/Resume", "true",
-                         "a readable checkpoint ('" + (source / "scene.txt").string() +
-                           "' is damaged)");
+        throw InputError("Checkpoint/Resume",
+                         "true",
+                         "a readable checkpoint ('" + (source / "scene.txt").string()
+                           + "' is damaged)");
       // A changed output interval restarts the output times from the resumed time.
       if (saved_interval != scene.output_interval)
-        loop.next_output =
-          scene.output_interval > 0. ?
-            scene.start_time + (std::floor((loop.time - scene.start_time) / scene.output_interval +
-                                           1e-9) + 1.) * scene.output_interval :
-            scene.end_time;
+        loop.next_output
+          = scene.output_interval > 0. ?
+              scene.start_time
+                + (std::floor((loop.time - scene.start_time) / scene.output_interval + 1e-9) + 1.)
+                    * scene.output_interval :
+              scene.end_time;
       if (!(scene.end_time > loop.time))
-        throw InputError("Time/End time", to_string(scene.end_time),
+        throw InputError("Time/End time",
+                         to_string(scene.end_time),
                          "a time after the checkpoint's t = " + to_string(loop.time) + " s");
 
       solver->load((source / "state").string());
       solver->set_state(solver_state);
-      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 &&
-          fs::exists(source / "statistics.csv"))
-        fs::copy_file(source / "statistics.csv", directory / "statistics.csv",
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0
+          && fs::exists(source / "statistics.csv"))
+        fs::copy_file(source / "statistics.csv",
+                      directory / "statistics.csv",
                       fs::copy_options::overwrite_existing);
       MPI_Barrier(MPI_COMM_WORLD);
     }
@@ -338,7 +359,8 @@ namespace slidewave
     void
     MaterialPointScene::check_state(const unsigned int step, const double time) const
     {
-      const std::string where = "at step " + std::to_string(step) + ", t = " + to_string(time) + " s: ";
+      const std::string where
+        = "at step " + std::to_string(step) + ", t = " + to_string(time) + " s: ";
       const std::string problem = solver->find_invalid_particle();
       if (!problem.empty())
         throw RunFailure(where + problem);
@@ -349,16 +371,17 @@ namespace slidewave
       // slack and a floor far below any real motion keep round-off from tripping it.
       const auto   budget    = solver->energy_budget();
       const double available = initial_energy + std::max(0., budget.gravity_work);
-      const double floor     = 1e-9 * total_mass *
-                           (std::abs(parameters.gravity[1]) + std::abs(parameters.gravity[0])) *
-                           parameters.cell_size + 1e-300;
+      const double floor     = 1e-9 * total_mass
+                             * (std::abs(parameters.gravity[1]) + std::abs(parameters.gravity[0]))
+                             * parameters.cell_size
+                           + 1e-300;
       if (budget.kinetic > 1.1 * available + floor)
-        throw RunFailure(where + "the kinetic energy (" + to_string(budget.kinetic) +
-                         " J/m) exceeds the energy available to the material (initial "
-                         "kinetic and elastic energy plus the work of gravity: " +
-                         to_string(available) + " J/m): the run is unstable; fastest: " +
-                         solver->describe_fastest_particle() +
-                         " (reduce 'Time step multiplier' or use GIMP)");
+        throw RunFailure(where + "the kinetic energy (" + to_string(budget.kinetic)
+                         + " J/m) exceeds the energy available to the material (initial "
+                           "kinetic and elastic energy plus the work of gravity: "
+                         + to_string(available) + " J/m): the run is unstable; fastest: "
+                         + solver->describe_fastest_particle()
+                         + " (reduce 'Time step multiplier' or use GIMP)");
     }
 
 
@@ -382,8 +405,8 @@ namespace slidewave
       statistics.add_value("max_particle_speed", integrals.max_speed);
       statistics.add_value("runout", integrals.runout);
       statistics.add_value("max_surface_height", integrals.max_height);
-      statistics.add_value("cells", static_cast<unsigned int>(
-                                      solver->triangulation().n_global_active_cells()));
+      statistics.add_value(
+        "cells", static_cast<unsigned int>(solver->triangulation().n_global_active_cells()));
       statistics.add_value("load_imbalance", solver->load_imbalance());
     }
 
@@ -392,9 +415,8 @@ namespace slidewave
     bool
     MaterialPointScene::run()
     {
-      return run_with_timer(scene.test_mode, [this](dealii::TimerOutput &timer) {
-        return run_time_loop(timer);
-      });
+      return run_with_timer(scene.test_mode,
+                            [this](dealii::TimerOutput &timer) { return run_time_loop(timer); });
     }
 
 
@@ -416,9 +438,9 @@ namespace slidewave
       MPI_Barrier(MPI_COMM_WORLD);
 
       LoopState loop;
-      loop.time        = scene.start_time;
-      loop.next_output = scene.output_interval > 0. ? scene.start_time + scene.output_interval :
-                                                      scene.end_time;
+      loop.time = scene.start_time;
+      loop.next_output
+        = scene.output_interval > 0. ? scene.start_time + scene.output_interval : scene.end_time;
       {
         TimerOutput::Scope scope(timer, "mpm: setup");
         solver = std::make_unique<MaterialPointSolver>(parameters);
@@ -435,30 +457,33 @@ namespace slidewave
             throw InputError("Material points/Fixed time step",
                              to_string(parameters.fixed_time_step),
                              "a time step at most the stability limit of this scene, h / "
-                             "(sqrt(2) max(c_p + |v_p|)) = " + to_string(limit) +
-                               " s (paper 000, Eq. 23 with the largest stable alpha, "
-                               "1/sqrt(2): doc/stability.md)");
+                             "(sqrt(2) max(c_p + |v_p|)) = "
+                               + to_string(limit)
+                               + " s (paper 000, Eq. 23 with the largest stable alpha, "
+                                 "1/sqrt(2): doc/stability.md)");
         }
-      pcout << "Material points: " << solver->particles().n_global_particles()
-            << " particles on " << solver->triangulation().n_global_active_cells()
-            << " cells; output in " << scene.output_directory
-            << (scene.resume ? "; resumed at t = " + to_string(loop.time) + " s" : "")
-            << std::endl;
+      pcout << "Material points: " << solver->particles().n_global_particles() << " particles on "
+            << solver->triangulation().n_global_active_cells() << " cells; output in "
+            << scene.output_directory
+            << (scene.resume ? "; resumed at t = " + to_string(loop.time) + " s" : "") << std::endl;
 
       Statistics statistics;
-      statistics.open(scene.output_directory + "/statistics.csv", is_writer,
-                      is_writer && test_mode ? &std::cout : nullptr, scene.resume);
+      statistics.open(scene.output_directory + "/statistics.csv",
+                      is_writer,
+                      is_writer && test_mode ? &std::cout : nullptr,
+                      scene.resume);
       ProgressReporter progress(is_writer && !test_mode ? &std::cout : nullptr,
-                                loop.time, scene.end_time);
+                                loop.time,
+                                scene.end_time);
 
-      double       dt             = 0.;
-      const double end_time       = scene.end_time;
-      const double time_tolerance = 1e-12 * (end_time - scene.start_time);
-      double      &time           = loop.time;
-      unsigned int &step          = loop.step;
-      unsigned int &output_index  = loop.output_index;
-      double      &next_output    = loop.next_output;
-      double      &max_error      = loop.max_error;
+      double        dt             = 0.;
+      const double  end_time       = scene.end_time;
+      const double  time_tolerance = 1e-12 * (end_time - scene.start_time);
+      double       &time           = loop.time;
+      unsigned int &step           = loop.step;
+      unsigned int &output_index   = loop.output_index;
+      double       &next_output    = loop.next_output;
+      double       &max_error      = loop.max_error;
 
       if (!scene.resume)
         {
@@ -475,9 +500,9 @@ namespace slidewave
           initial_energy    = budget.kinetic + budget.elastic;
           total_mass        = solver->integrals().mass;
         }
-      const unsigned int first_step = step;
-      const auto wall_start      = std::chrono::steady_clock::now();
-      auto       last_checkpoint = wall_start;
+      const unsigned int first_step      = step;
+      const auto         wall_start      = std::chrono::steady_clock::now();
+      auto               last_checkpoint = wall_start;
 
       while (time < end_time - time_tolerance)
         {
@@ -500,8 +525,7 @@ namespace slidewave
 
           const bool is_output_time = reaches_target && target == next_output;
           const bool at_end         = time >= end_time - time_tolerance;
-          const bool reports =
-            is_output_time || at_end || step % scene.statistics_interval == 0;
+          const bool reports = is_output_time || at_end || step % scene.statistics_interval == 0;
           // The guards run every 'Check interval' steps and before anything is written,
           // so that no output ever holds a bad state.
           if (step % check_interval == 0 || reports)
@@ -520,8 +544,8 @@ namespace slidewave
                   particle_output.write(*solver, output_index++, time);
                 }
               if (is_output_time)
-                next_output = scene.output_interval > 0. ? next_output + scene.output_interval :
-                                                           end_time;
+                next_output
+                  = scene.output_interval > 0. ? next_output + scene.output_interval : end_time;
             }
           if (reports)
             {
@@ -535,15 +559,18 @@ namespace slidewave
 
           // Checkpoints: every N steps, every T minutes of wall time (rank 0's clock
           // decides), at the end.
-          bool checkpoint = (scene.checkpoint_steps > 0 && step % scene.checkpoint_steps == 0) ||
-                            (at_end && scene.checkpoint_at_end);
+          bool checkpoint = (scene.checkpoint_steps > 0 && step % scene.checkpoint_steps == 0)
+                            || (at_end && scene.checkpoint_at_end);
           if (scene.checkpoint_minutes > 0.)
             {
-              const double minutes =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint)
-                  .count() / 60.;
-              checkpoint = checkpoint || dealii::Utilities::MPI::broadcast(
-                                           MPI_COMM_WORLD, minutes >= scene.checkpoint_minutes, 0);
+              const double minutes
+                = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint)
+                    .count()
+                  / 60.;
+              checkpoint = checkpoint
+                           || dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD,
+                                                                minutes >= scene.checkpoint_minutes,
+                                                                0);
             }
           if (checkpoint)
             {
@@ -577,10 +604,12 @@ namespace slidewave
           if (is_writer)
             {
               char line[160];
-              std::snprintf(line, sizeof(line),
+              std::snprintf(line,
+                            sizeof(line),
                             "Rigid rotation by %.4f rad: largest distance of a point from its "
                             "rigidly rotated position = %.3e m",
-                            rotation_rate * (time - scene.start_time), errors[1]);
+                            rotation_rate * (time - scene.start_time),
+                            errors[1]);
               std::cout << line << std::endl;
             }
         }
@@ -588,7 +617,9 @@ namespace slidewave
       if (exact_solution != ExactSolution::none && is_writer)
         {
           char line[160];
-          std::snprintf(line, sizeof(line), "%s error against the exact solution = %.4e",
+          std::snprintf(line,
+                        sizeof(line),
+                        "%s error against the exact solution = %.4e",
                         exact_solution == ExactSolution::bar_vibration ?
                           "Largest centre-of-mass velocity" :
                         exact_solution == ExactSolution::rigid_rotation ?

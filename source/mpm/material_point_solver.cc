@@ -1,3 +1,6 @@
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -5,16 +8,11 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/affine_constraints.h>
-
+#include <limits>
+#include <optional>
 #include <slidewave/core/input_error.h>
 #include <slidewave/mpm/material_point_solver.h>
 #include <slidewave/mpm/particle_properties.h>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
-#include <limits>
-#include <optional>
 #include <sstream>
 
 namespace slidewave
@@ -24,17 +22,18 @@ namespace slidewave
     namespace
     {
       std::vector<double>
-      parse_numbers(const std::string &parameter, const std::string &text,
-                    const unsigned int count)
+      parse_numbers(const std::string &parameter, const std::string &text, const unsigned int count)
       {
-        return parse_number_list(parameter, text,
-                                 std::to_string(count) + " comma-separated numbers", count);
+        return parse_number_list(parameter,
+                                 text,
+                                 std::to_string(count) + " comma-separated numbers",
+                                 count);
       }
 
       GridBoundary
       boundary_type(const std::string &name)
       {
-        return name == "fixed" ? GridBoundary::fixed :
+        return name == "fixed"  ? GridBoundary::fixed :
                name == "roller" ? GridBoundary::roller :
                                   GridBoundary::free;
       }
@@ -47,33 +46,46 @@ namespace slidewave
     SolverParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
       using namespace dealii::Patterns;
-      prm.declare_entry("Shape functions", "q1", Selection("q1|gimp|cpgimp"),
+      prm.declare_entry("Shape functions",
+                        "q1",
+                        Selection("q1|gimp|cpgimp"),
                         "'q1': bilinear functions of the cell holding the point (standard "
                         "MPM). 'gimp': uGIMP, Q1 averaged over a square domain of the "
                         "point's initial size (paper 000, Eq. 11), smooth across cell faces "
                         "(no cell-crossing noise). 'cpgimp': the domain stretches with the "
                         "point along x and y.");
-      prm.declare_entry("Update scheme", "usl", Selection("usl|musl"),
+      prm.declare_entry("Update scheme",
+                        "usl",
+                        Selection("usl|musl"),
                         "'usl': stresses from the updated nodal velocities (update stress "
                         "last, paper 000). 'musl': from nodal velocities re-mapped from the "
                         "updated particle velocities (less noisy for fast flows).");
-      prm.declare_entry("FLIP fraction", "0.99", Double(0., 1.),
+      prm.declare_entry("FLIP fraction",
+                        "0.99",
+                        Double(0., 1.),
                         "Blend of the particle velocity update: 1 is pure FLIP (increments "
                         "of the nodal velocities, no dissipation, noisy), 0 pure PIC (nodal "
                         "velocities, dissipative).");
-      prm.declare_entry("Time step multiplier", "0.5", Double(),
+      prm.declare_entry("Time step multiplier",
+                        "0.5",
+                        Double(),
                         "alpha in dt = alpha h / max_p (c_p + |v_p|) (paper 000, Eq. 23); "
                         "in (0, 0.7071]: with lumped mass the highest mode of a 2D grid is "
                         "sqrt(2) times faster than along a line, so alpha above 1/sqrt(2) is "
                         "unstable (doc/stability.md).");
-      prm.declare_entry("Fixed time step", "0", Double(0.),
+      prm.declare_entry("Fixed time step",
+                        "0",
+                        Double(0.),
                         "If > 0, this time step [s] instead of Eq. 23 (it is checked against "
                         "the stability limit at the start).");
-      prm.declare_entry("B-bar", "true", Bool(),
+      prm.declare_entry("B-bar",
+                        "true",
+                        Bool(),
                         "Average the volumetric strain increment over each cell (B-bar / "
                         "mean dilatation, paper 000 §3.1) against volumetric locking.");
       prm.declare_entry("Gravity", "0, -9.81", Anything(), "Gravity vector g_x, g_y [m/s^2].");
-      prm.declare_entry("Particle relocation", "neighbour cells",
+      prm.declare_entry("Particle relocation",
+                        "neighbour cells",
                         Selection("neighbour cells|full sort"),
                         "How the points find their cells after moving. 'neighbour cells': "
                         "each point looks in the cells of its old cell's patch (a step moves "
@@ -83,7 +95,9 @@ namespace slidewave
                         "steps (to keep the points' memory in cell order), deal.II's full "
                         "sort runs instead. 'full sort': deal.II's sort every step. Both "
                         "give the same cells and reference coordinates.");
-      prm.declare_entry("Detailed timing", "false", Bool(),
+      prm.declare_entry("Detailed timing",
+                        "false",
+                        Bool(),
                         "Time the parts of each step (grid changes, particle to grid, grid "
                         "update, grid to particle with the stresses, MUSL re-map, sorting "
                         "the points into cells) as rows 'mpm step: ...' of the timer summary. "
@@ -92,19 +106,27 @@ namespace slidewave
                         "comes first, and a rank waiting for another shows in the part where "
                         "it waits (the ghost exchange of the scatter, the relocation's "
                         "reduction).");
-      prm.declare_entry("Step timeline", "false", Bool(),
+      prm.declare_entry("Step timeline",
+                        "false",
+                        Bool(),
                         "Write OUTPUT/step_timeline.csv at the end of the run: per step and "
                         "per rank the wall time of each part of the step, with the exchanges "
                         "between ranks (where a rank waits for a slower one) apart from the "
                         "rank's own work. For profiling runs: it keeps a row per step in "
                         "memory (doc/mpm.md, Where the time goes).");
-      prm.declare_entry("Local damping", "0", Double(0., 1.),
+      prm.declare_entry("Local damping",
+                        "0",
+                        Double(0., 1.),
                         "Cundall's local non-viscous damping coefficient of the nodal "
                         "forces, for quasi-static loading; 0 for dynamics.");
-      prm.declare_entry("Particles per direction", "2", Integer(1, 10),
+      prm.declare_entry("Particles per direction",
+                        "2",
+                        Integer(1, 10),
                         "Material points per cell per direction at the start (n x n per "
                         "cell, at the centres of n x n sub-cells).");
-      prm.declare_entry("Prescribed velocity", "", Anything(),
+      prm.declare_entry("Prescribed velocity",
+                        "",
+                        Anything(),
                         "Kinematic verification mode: if not empty, two expressions of x, y "
                         "and t separated by ';' (e.g. '-(y-0.5); x-0.5', a rigid rotation): "
                         "the nodal velocities are this field instead of the solution of the "
@@ -115,30 +137,42 @@ namespace slidewave
       {
         prm.declare_entry("Lower left", "0, 0", Anything(), "Corner x, y of the domain [m].");
         prm.declare_entry("Upper right", "1, 1", Anything(), "Corner x, y of the domain [m].");
-        prm.declare_entry("Cell size", "0.05", Double(),
+        prm.declare_entry("Cell size",
+                          "0.05",
+                          Double(),
                           "Side of the square background cells [m]; the domain sides must "
                           "be (close to) multiples of it.");
       }
       prm.leave_subsection();
       prm.enter_subsection("Adaptive grid");
       {
-        prm.declare_entry("Enable", "false", Bool(),
+        prm.declare_entry("Enable",
+                          "false",
+                          Bool(),
                           "Refine the background grid where material is (to 'Cell size') and "
                           "keep it coarse elsewhere; re-evaluated every 'Interval' steps.");
-        prm.declare_entry("Levels", "2", Integer(1, 8),
+        prm.declare_entry("Levels",
+                          "2",
+                          Integer(1, 8),
                           "Refinement levels: the coarsest cells are 2^Levels times 'Cell "
                           "size', which must divide the domain.");
-        prm.declare_entry("Buffer cells", "2", Integer(0, 10),
+        prm.declare_entry("Buffer cells",
+                          "2",
+                          Integer(0, 10),
                           "Layers of fine cells kept around the material (GIMP domains and "
                           "the motion until the next adaptation reach there).");
-        prm.declare_entry("Interval", "50", Integer(1),
+        prm.declare_entry("Interval",
+                          "50",
+                          Integer(1),
                           "Steps between adaptations; material must not cross the buffer in "
                           "that time.");
       }
       prm.leave_subsection();
       prm.enter_subsection("Load balancing");
       {
-        prm.declare_entry("Particle weight", "1000000", Integer(0),
+        prm.declare_entry("Particle weight",
+                          "1000000",
+                          Integer(0),
                           "Cost of a material point relative to a cell's 1000 when the grid "
                           "is partitioned among MPI ranks (the work of a rank is 1000 per "
                           "cell plus this per point; a cell's weight is capped at 2^31 - 1, "
@@ -146,17 +180,20 @@ namespace slidewave
                           "talk to, so an empty cell costs next to nothing: the default makes "
                           "1000 empty cells weigh as much as a point (doc/mpm.md, "
                           "Throughput).");
-        prm.declare_entry("Imbalance threshold", "1.1", Double(0.),
+        prm.declare_entry("Imbalance threshold",
+                          "1.1",
+                          Double(0.),
                           "Repartition when the most loaded rank has more than this times "
                           "the mean work (0: never, except when an adaptive grid changes).");
-        prm.declare_entry("Interval", "50", Integer(1),
-                          "Steps between checks of the imbalance.");
+        prm.declare_entry("Interval", "50", Integer(1), "Steps between checks of the imbalance.");
       }
       prm.leave_subsection();
       prm.enter_subsection("Boundary conditions");
       for (const std::string side : {"Left", "Right", "Bottom", "Top"})
         prm.declare_entry(side,
-                          side == "Bottom" ? "fixed" : side == "Top" ? "free" : "roller",
+                          side == "Bottom" ? "fixed" :
+                          side == "Top"    ? "free" :
+                                             "roller",
                           Selection("free|roller|fixed"),
                           "Grid velocity condition on this side: 'fixed' (no slip), "
                           "'roller' (free slip), 'free'.");
@@ -169,7 +206,9 @@ namespace slidewave
         }
       prm.enter_subsection("Initial stress");
       {
-        prm.declare_entry("Type", "none", Selection("none|geostatic|gravity loading|uniform"),
+        prm.declare_entry("Type",
+                          "none",
+                          Selection("none|geostatic|gravity loading|uniform"),
                           "'none': stress free. 'geostatic': sigma_yy = -g (weight of the "
                           "material above the point per unit width), sigma_xx = sigma_zz = "
                           "K0 sigma_yy (at rest, exact for horizontal layers). 'gravity "
@@ -177,17 +216,25 @@ namespace slidewave
                           "rigid walls held, for 'Gravity loading time', before the start "
                           "time; then velocities are zeroed and the scene starts. "
                           "'uniform': 'Uniform stress' in every point.");
-        prm.declare_entry("Uniform stress", "0, 0, 0, 0", Anything(),
+        prm.declare_entry("Uniform stress",
+                          "0, 0, 0, 0",
+                          Anything(),
                           "For 'uniform': sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa], "
                           "tension positive.");
-        prm.declare_entry("K0", "auto", Anything(),
+        prm.declare_entry("K0",
+                          "auto",
+                          Anything(),
                           "Coefficient of earth pressure at rest for 'geostatic': a number "
                           "> 0, or 'auto': 1 - sin(phi) (Jaky) for Drucker-Prager, "
                           "nu / (1 - nu) for linear elastic materials.");
-        prm.declare_entry("Gravity loading time", "0.5", Double(0.),
+        prm.declare_entry("Gravity loading time",
+                          "0.5",
+                          Double(0.),
                           "Duration [s] of the gravity loading phase; give it several "
                           "periods of the slowest mode (about 4 H / c_p).");
-        prm.declare_entry("Gravity loading damping", "0.7", Double(0., 1.),
+        prm.declare_entry("Gravity loading damping",
+                          "0.7",
+                          Double(0., 1.),
                           "Cundall's local damping coefficient during gravity loading.");
       }
       prm.leave_subsection();
@@ -211,26 +258,27 @@ namespace slidewave
     SolverParameters::parse_parameters(dealii::ParameterHandler &prm, const std::string &path)
     {
       const std::string shape = prm.get("Shape functions");
-      shape_function = shape == "gimp"   ? ShapeFunction::gimp :
-                       shape == "cpgimp" ? ShapeFunction::cpgimp :
-                                           ShapeFunction::q1;
+      shape_function          = shape == "gimp"   ? ShapeFunction::gimp :
+                                shape == "cpgimp" ? ShapeFunction::cpgimp :
+                                                    ShapeFunction::q1;
       update_scheme = prm.get("Update scheme") == "musl" ? UpdateScheme::musl : UpdateScheme::usl;
       flip_fraction = prm.get_double("FLIP fraction");
       time_step_multiplier = prm.get_double("Time step multiplier");
       if (!(time_step_multiplier > 0. && time_step_multiplier <= max_time_step_multiplier))
-        throw InputError(path + "/Time step multiplier", prm.get("Time step multiplier"),
+        throw InputError(path + "/Time step multiplier",
+                         prm.get("Time step multiplier"),
                          "a number in (0, 0.7071]: the explicit step on a 2D grid with lumped "
                          "mass is stable only up to alpha = 1/sqrt(2) in Eq. 23 "
                          "(doc/stability.md)");
-      fixed_time_step = prm.get_double("Fixed time step");
-      b_bar           = prm.get_bool("B-bar");
-      detailed_timing = prm.get_bool("Detailed timing");
-      step_timeline   = prm.get_bool("Step timeline");
-      full_sort_every_step = prm.get("Particle relocation") == "full sort";
-      const auto g    = parse_numbers(path + "/Gravity", prm.get("Gravity"), 2);
-      gravity[0]      = g[0];
-      gravity[1]      = g[1];
-      damping         = prm.get_double("Local damping");
+      fixed_time_step         = prm.get_double("Fixed time step");
+      b_bar                   = prm.get_bool("B-bar");
+      detailed_timing         = prm.get_bool("Detailed timing");
+      step_timeline           = prm.get_bool("Step timeline");
+      full_sort_every_step    = prm.get("Particle relocation") == "full sort";
+      const auto g            = parse_numbers(path + "/Gravity", prm.get("Gravity"), 2);
+      gravity[0]              = g[0];
+      gravity[1]              = g[1];
+      damping                 = prm.get_double("Local damping");
       particles_per_direction = prm.get_integer("Particles per direction");
 
       prm.enter_subsection("Grid");
@@ -242,33 +290,35 @@ namespace slidewave
         cell_size    = prm.get_double("Cell size");
         require_positive(path + "/Grid/Cell size", cell_size);
         if (!(b[0] > a[0]) || !(b[1] > a[1]))
-          throw InputError(path + "/Grid/Upper right", prm.get("Upper right"),
+          throw InputError(path + "/Grid/Upper right",
+                           prm.get("Upper right"),
                            "a corner above and to the right of 'Lower left'");
         for (unsigned int d = 0; d < 2; ++d)
           {
             const double n = (b[d] - a[d]) / cell_size;
             if (std::abs(n - std::round(n)) > 1e-6 * n)
-              throw InputError(path + "/Grid/Cell size", to_string(cell_size),
-                               "a size that divides the domain sides (" +
-                                 to_string(b[0] - a[0]) + " x " + to_string(b[1] - a[1]) +
-                                 " m)");
+              throw InputError(path + "/Grid/Cell size",
+                               to_string(cell_size),
+                               "a size that divides the domain sides (" + to_string(b[0] - a[0])
+                                 + " x " + to_string(b[1] - a[1]) + " m)");
           }
         // The supported size: beyond it the grid alone takes most of a machine's memory.
-        const double n_cells = std::round((b[0] - a[0]) / cell_size) *
-                               std::round((b[1] - a[1]) / cell_size);
+        const double n_cells
+          = std::round((b[0] - a[0]) / cell_size) * std::round((b[1] - a[1]) / cell_size);
         if (n_cells > 1e7)
-          throw InputError(path + "/Grid/Cell size", to_string(cell_size),
-                           "a size giving at most 10^7 grid cells (this one gives " +
-                             to_string(n_cells) + ")");
+          throw InputError(path + "/Grid/Cell size",
+                           to_string(cell_size),
+                           "a size giving at most 10^7 grid cells (this one gives "
+                             + to_string(n_cells) + ")");
       }
       prm.leave_subsection();
 
       prm.enter_subsection("Adaptive grid");
       {
-        adaptivity.enabled             = prm.get_bool("Enable");
-        adaptivity.levels              = prm.get_integer("Levels");
-        adaptivity.buffer_cells        = prm.get_integer("Buffer cells");
-        adaptivity.interval            = prm.get_integer("Interval");
+        adaptivity.enabled      = prm.get_bool("Enable");
+        adaptivity.levels       = prm.get_integer("Levels");
+        adaptivity.buffer_cells = prm.get_integer("Buffer cells");
+        adaptivity.interval     = prm.get_integer("Interval");
         if (adaptivity.enabled)
           {
             const double base = cell_size * (1u << adaptivity.levels);
@@ -279,10 +329,10 @@ namespace slidewave
                   throw InputError(path + "/Adaptive grid/Levels",
                                    std::to_string(adaptivity.levels),
                                    "a number of levels such that the coarsest cells (Cell "
-                                   "size x 2^Levels = " + to_string(base) +
-                                     " m) divide the domain sides (" +
-                                     to_string(upper_right[0] - lower_left[0]) + " x " +
-                                     to_string(upper_right[1] - lower_left[1]) + " m)");
+                                   "size x 2^Levels = "
+                                     + to_string(base) + " m) divide the domain sides ("
+                                     + to_string(upper_right[0] - lower_left[0]) + " x "
+                                     + to_string(upper_right[1] - lower_left[1]) + " m)");
               }
           }
       }
@@ -297,8 +347,10 @@ namespace slidewave
       prm.leave_subsection();
 
       prm.enter_subsection("Boundary conditions");
-      boundaries = {{boundary_type(prm.get("Left")), boundary_type(prm.get("Right")),
-                     boundary_type(prm.get("Bottom")), boundary_type(prm.get("Top"))}};
+      boundaries = {{boundary_type(prm.get("Left")),
+                     boundary_type(prm.get("Right")),
+                     boundary_type(prm.get("Bottom")),
+                     boundary_type(prm.get("Top"))}};
       prm.leave_subsection();
 
       walls.clear();
@@ -325,7 +377,9 @@ namespace slidewave
                 if (dealii::Utilities::split_string_list(text, ';').size() != 2)
                   throw std::invalid_argument("two components");
                 prescribed_velocity = std::make_shared<dealii::FunctionParser<2>>(2);
-                prescribed_velocity->initialize("x,y,t", text, {{"pi", M_PI}},
+                prescribed_velocity->initialize("x,y,t",
+                                                text,
+                                                {{"pi", M_PI}},
                                                 /*time_dependent=*/true);
                 prescribed_velocity->value(dealii::Point<2>(), 0);
                 std::cerr.rdbuf(cerr_buffer);
@@ -333,7 +387,8 @@ namespace slidewave
             catch (...)
               {
                 std::cerr.rdbuf(cerr_buffer);
-                throw InputError(path + "/Prescribed velocity", text,
+                throw InputError(path + "/Prescribed velocity",
+                                 text,
                                  "empty, or two expressions of x, y and t separated by ';'");
               }
           }
@@ -342,15 +397,16 @@ namespace slidewave
       prm.enter_subsection("Initial stress");
       {
         const std::string type = prm.get("Type");
-        initial_stress = type == "geostatic"       ? InitialStress::geostatic :
-                         type == "gravity loading" ? InitialStress::gravity_loading :
-                         type == "uniform"         ? InitialStress::uniform :
-                                                     InitialStress::none;
+        initial_stress         = type == "geostatic"       ? InitialStress::geostatic :
+                                 type == "gravity loading" ? InitialStress::gravity_loading :
+                                 type == "uniform"         ? InitialStress::uniform :
+                                                             InitialStress::none;
         {
-          const auto stress =
-            parse_number_list(path + "/Initial stress/Uniform stress", prm.get("Uniform stress"),
-                              "four finite numbers sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa]",
-                              4);
+          const auto stress
+            = parse_number_list(path + "/Initial stress/Uniform stress",
+                                prm.get("Uniform stress"),
+                                "four finite numbers sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa]",
+                                4);
           std::copy(stress.begin(), stress.end(), uniform_stress.begin());
         }
         const std::string k0 = dealii::Utilities::trim(prm.get("K0"));
@@ -363,8 +419,8 @@ namespace slidewave
               {
                 std::size_t used     = 0;
                 lateral_stress_ratio = std::stod(k0, &used);
-                ok = used == k0.size() && std::isfinite(lateral_stress_ratio) &&
-                     lateral_stress_ratio > 0.;
+                ok                   = used == k0.size() && std::isfinite(lateral_stress_ratio)
+                     && lateral_stress_ratio > 0.;
               }
             catch (const std::exception &)
               {
@@ -390,17 +446,16 @@ namespace slidewave
           const std::string region_path = path + "/Region " + std::to_string(r);
           if (region.parse_parameters(prm, region_path))
             {
-              const std::string entry =
-                prm.get("Shape") == "rectangle" ? "Rectangle" : "Polygon";
-              const auto box = region.bounding_box();
+              const std::string entry = prm.get("Shape") == "rectangle" ? "Rectangle" : "Polygon";
+              const auto        box   = region.bounding_box();
               for (unsigned int d = 0; d < 2; ++d)
-                if (box.first[d] < lower_left[d] - 1e-12 ||
-                    box.second[d] > upper_right[d] + 1e-12)
-                  throw InputError(region_path + "/" + entry, prm.get(entry),
-                                   "a region inside the grid [" + to_string(lower_left[0]) +
-                                     ", " + to_string(upper_right[0]) + "] x [" +
-                                     to_string(lower_left[1]) + ", " +
-                                     to_string(upper_right[1]) + "]");
+                if (box.first[d] < lower_left[d] - 1e-12 || box.second[d] > upper_right[d] + 1e-12)
+                  throw InputError(region_path + "/" + entry,
+                                   prm.get(entry),
+                                   "a region inside the grid [" + to_string(lower_left[0]) + ", "
+                                     + to_string(upper_right[0]) + "] x ["
+                                     + to_string(lower_left[1]) + ", " + to_string(upper_right[1])
+                                     + "]");
               regions.push_back(region);
             }
           prm.leave_subsection();
@@ -409,7 +464,7 @@ namespace slidewave
       materials.clear();
       for (unsigned int r = 0; r < regions.size(); ++r)
         {
-          MaterialRegion           &region = regions[r];
+          MaterialRegion           &region      = regions[r];
           const std::string         region_path = path + "/Region " + std::to_string(r + 1);
           std::vector<unsigned int> slots;
           for (unsigned int m = 1; m <= max_materials; ++m)
@@ -420,13 +475,15 @@ namespace slidewave
               prm.leave_subsection();
             }
           if (slots.empty())
-            throw InputError(region_path + "/Material", region.material_name,
+            throw InputError(region_path + "/Material",
+                             region.material_name,
                              "the name of a declared material ('Material N/Name')");
           if (slots.size() > 1)
-            throw InputError(region_path + "/Material", region.material_name,
-                             "a material name declared once (it is the name of 'Material " +
-                               std::to_string(slots[0]) + "' and 'Material " +
-                               std::to_string(slots[1]) + "')");
+            throw InputError(region_path + "/Material",
+                             region.material_name,
+                             "a material name declared once (it is the name of 'Material "
+                               + std::to_string(slots[0]) + "' and 'Material "
+                               + std::to_string(slots[1]) + "')");
           // Read each used material once, however many regions use it.
           region.material_index = materials.size();
           for (unsigned int k = 0; k < materials.size(); ++k)
@@ -444,7 +501,8 @@ namespace slidewave
             }
         }
       if (regions.empty())
-        throw InputError(path + "/Region 1/Shape", "none",
+        throw InputError(path + "/Region 1/Shape",
+                         "none",
                          "at least one region filled with material ('rectangle' or "
                          "'polygon')");
     }
@@ -470,8 +528,8 @@ namespace slidewave
     {
       // With adaptive refinement the base grid is 2^levels times coarser than 'Cell size';
       // the cells holding material (and a buffer around them) are refined to 'Cell size'.
-      const unsigned int levels = prm.adaptivity.enabled ? prm.adaptivity.levels : 0;
-      const double       base   = prm.cell_size * (1u << levels);
+      const unsigned int        levels = prm.adaptivity.enabled ? prm.adaptivity.levels : 0;
+      const double              base   = prm.cell_size * (1u << levels);
       std::vector<unsigned int> subdivisions{
         static_cast<unsigned int>(std::round((prm.upper_right[0] - prm.lower_left[0]) / base)),
         static_cast<unsigned int>(std::round((prm.upper_right[1] - prm.lower_left[1]) / base))};
@@ -487,13 +545,13 @@ namespace slidewave
           subdivisions[1] /= 2;
           ++base_refinements;
         }
-      dealii::GridGenerator::subdivided_hyper_rectangle(tria, subdivisions, prm.lower_left,
-                                                        prm.upper_right, /*colorize=*/true);
+      dealii::GridGenerator::subdivided_hyper_rectangle(
+        tria, subdivisions, prm.lower_left, prm.upper_right, /*colorize=*/true);
       tria.signals.weight.connect(
-          [this](const dealii::Triangulation<2>::cell_iterator &cell,
-                 const dealii::Triangulation<2>::CellStatus     status) -> unsigned int {
-            return cell_weight(cell, status);
-          });
+        [this](const dealii::Triangulation<2>::cell_iterator &cell,
+               const dealii::Triangulation<2>::CellStatus     status) -> unsigned int {
+          return cell_weight(cell, status);
+        });
     }
 
 
@@ -505,19 +563,19 @@ namespace slidewave
       // reference coordinates directly (MappingQ1 would build an inverse approximation per
       // cell at every sort, a fifth of the step).
       static const dealii::MappingCartesian<2> mapping;
-      particle_handler.initialize(tria, mapping,
+      particle_handler.initialize(tria,
+                                  mapping,
                                   prm.point_forces ? property::n_properties_with_point_forces :
                                                      property::n_properties);
       particle_handler.signals.particle_lost.connect(
         [this](const dealii::Particles::ParticleIterator<2> &particle,
                const typename dealii::Triangulation<2>::active_cell_iterator &) {
           lost_mass += particle->get_properties()[property::mass];
-          const dealii::Point<2> x = particle->get_location();
-          const unsigned int     side =
-            x[0] < prm.lower_left[0]  ? 0 :
-            x[0] > prm.upper_right[0] ? 1 :
-            x[1] < prm.lower_left[1]  ? 2 :
-                                        3;
+          const dealii::Point<2> x    = particle->get_location();
+          const unsigned int     side = x[0] < prm.lower_left[0]  ? 0 :
+                                        x[0] > prm.upper_right[0] ? 1 :
+                                        x[1] < prm.lower_left[1]  ? 2 :
+                                                                    3;
           if (prm.boundaries[side] != GridBoundary::free && wall_crossing.empty())
             {
               static const char *const names[4] = {"left", "right", "bottom", "top"};
@@ -555,8 +613,8 @@ namespace slidewave
                 cell->set_refine_flag();
             tria.execute_coarsening_and_refinement();
           }
-      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 &&
-          prm.adaptivity.imbalance_threshold > 0.)
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
+          && prm.adaptivity.imbalance_threshold > 0.)
         tria.repartition();
       dofs.reinit(tria);
       setup_grid_data();
@@ -623,8 +681,8 @@ namespace slidewave
       time    = state.time;
       n_steps = state.n_steps;
       // The lost mass is a sum over ranks: rank 0 carries what was lost before.
-      lost_mass =
-        dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? state.lost_mass : 0.;
+      lost_mass
+        = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? state.lost_mass : 0.;
     }
 
 
@@ -654,12 +712,13 @@ namespace slidewave
             if (cell->is_locally_owned())
               for (const unsigned int v : cell->vertex_indices())
                 if (partitioner.in_local_range(cell->vertex_dof_index(v, 0)))
-                  node_positions[partitioner.global_to_local(cell->vertex_dof_index(v, 0))] =
-                    cell->vertex(v);
+                  node_positions[partitioner.global_to_local(cell->vertex_dof_index(v, 0))]
+                    = cell->vertex(v);
         }
       const auto &partitioner = nodal_mass.get_partitioner();
       active_nodes.clear();
-      const unsigned int n_local = partitioner->locally_owned_size() + partitioner->n_ghost_indices();
+      const unsigned int n_local
+        = partitioner->locally_owned_size() + partitioner->n_ghost_indices();
       node_is_active.assign(n_local, 0);
       node_sums.assign(5 * n_local, 0.);
       node_velocities.assign(4 * n_local, 0.);
@@ -668,8 +727,7 @@ namespace slidewave
         for (unsigned int i = first; i < last; ++i)
           import_nodes.push_back(i);
       std::sort(import_nodes.begin(), import_nodes.end());
-      import_nodes.erase(std::unique(import_nodes.begin(), import_nodes.end()),
-                         import_nodes.end());
+      import_nodes.erase(std::unique(import_nodes.begin(), import_nodes.end()), import_nodes.end());
 
       // Hanging nodes: each constrained node's parents and weights, as local indices.
       hanging_start.assign(1, 0);
@@ -701,10 +759,10 @@ namespace slidewave
         {
           if (prm.boundaries[side] == GridBoundary::free)
             continue;
-          const dealii::IndexSet on_side =
-            dealii::DoFTools::extract_boundary_dofs(
-              dofs, dealii::ComponentMask(), {static_cast<dealii::types::boundary_id>(side)}) &
-            owned;
+          const dealii::IndexSet on_side
+            = dealii::DoFTools::extract_boundary_dofs(
+                dofs, dealii::ComponentMask(), {static_cast<dealii::types::boundary_id>(side)})
+              & owned;
           const unsigned int normal = side < 2 ? 0 : 1;
           for (unsigned int d = 0; d < 2; ++d)
             if (d == normal || prm.boundaries[side] == GridBoundary::fixed)
@@ -723,7 +781,7 @@ namespace slidewave
       // Cells holding material: from the regions (at set-up: any point of the finest
       // lattice of points in the cell lies in a region) or from the particles; then
       // 'Buffer cells' layers of vertex neighbours around them, across ranks.
-      std::vector<bool> near(tria.n_active_cells(), false);
+      std::vector<bool>  near(tria.n_active_cells(), false);
       const unsigned int n = prm.particles_per_direction;
       for (const auto &cell : tria.active_cell_iterators())
         {
@@ -734,8 +792,7 @@ namespace slidewave
             {
               const dealii::Point<2> origin = cell->vertex(0);
               const double           h      = cell->vertex(1)[0] - origin[0];
-              const unsigned int     m =
-                n * static_cast<unsigned int>(std::round(h / prm.cell_size));
+              const unsigned int m = n * static_cast<unsigned int>(std::round(h / prm.cell_size));
               for (unsigned int j = 0; j < m && !has_material; ++j)
                 for (unsigned int i = 0; i < m && !has_material; ++i)
                   {
@@ -753,16 +810,13 @@ namespace slidewave
       for (unsigned int layer = 0; layer <= prm.adaptivity.buffer_cells; ++layer)
         {
           // Ghost cells learn their owners' flags.
-          dealii::GridTools::exchange_cell_data_to_ghosts<unsigned char,
-                                                          dealii::Triangulation<2>>(
+          dealii::GridTools::exchange_cell_data_to_ghosts<unsigned char, dealii::Triangulation<2>>(
             tria,
             [&](const dealii::Triangulation<2>::active_cell_iterator &cell) {
               return static_cast<unsigned char>(near[cell->active_cell_index()]);
             },
             [&](const dealii::Triangulation<2>::active_cell_iterator &cell,
-                const unsigned char                                   flag) {
-              near[cell->active_cell_index()] = flag != 0;
-            });
+                const unsigned char flag) { near[cell->active_cell_index()] = flag != 0; });
           if (layer == prm.adaptivity.buffer_cells)
             break;
           std::vector<bool> grown = near;
@@ -781,13 +835,13 @@ namespace slidewave
 
     unsigned int
     MaterialPointSolver::cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
-                                     const dealii::Triangulation<2>::CellStatus status) const
+                                     const dealii::Triangulation<2>::CellStatus     status) const
     {
       // The base weight (deal.II's 'weight' signal, unlike the older 'cell_weight', adds
       // none itself) plus the cell's points: those it holds or, before they exist, those
       // the regions will put there with 'per_direction' of them per direction.
       const auto points = [this](const dealii::Triangulation<2>::cell_iterator &c,
-                                 const unsigned int per_direction) {
+                                 const unsigned int                             per_direction) {
         unsigned int n = 0;
         if (weights_from_regions)
           for_each_point_to_create(c, per_direction, [&n](const auto &...) { ++n; });
@@ -814,8 +868,8 @@ namespace slidewave
             break;
         }
       // p4est takes the weight as an int: saturate rather than wrap around.
-      const std::uint64_t weight =
-        cell_base_weight + static_cast<std::uint64_t>(prm.adaptivity.particle_weight) * n;
+      const std::uint64_t weight
+        = cell_base_weight + static_cast<std::uint64_t>(prm.adaptivity.particle_weight) * n;
       return static_cast<unsigned int>(
         std::min<std::uint64_t>(weight, std::numeric_limits<int>::max()));
     }
@@ -826,13 +880,13 @@ namespace slidewave
     MaterialPointSolver::load_imbalance() const
     {
       // Max over mean of the ranks' work: cells x 1000 + points x particle weight.
-      const double work =
-        static_cast<double>(cell_base_weight) * tria.n_locally_owned_active_cells() +
-        static_cast<double>(prm.adaptivity.particle_weight) *
-          particle_handler.n_locally_owned_particles();
+      const double work
+        = static_cast<double>(cell_base_weight) * tria.n_locally_owned_active_cells()
+          + static_cast<double>(prm.adaptivity.particle_weight)
+              * particle_handler.n_locally_owned_particles();
       const double max  = dealii::Utilities::MPI::max(work, MPI_COMM_WORLD);
-      const double mean = dealii::Utilities::MPI::sum(work, MPI_COMM_WORLD) /
-                          dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      const double mean = dealii::Utilities::MPI::sum(work, MPI_COMM_WORLD)
+                          / dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
       return mean > 0. ? max / mean : 1.;
     }
 
@@ -841,9 +895,9 @@ namespace slidewave
     void
     MaterialPointSolver::balance_load()
     {
-      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ||
-          !(prm.adaptivity.imbalance_threshold > 0.) ||
-          load_imbalance() <= prm.adaptivity.imbalance_threshold)
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1
+          || !(prm.adaptivity.imbalance_threshold > 0.)
+          || load_imbalance() <= prm.adaptivity.imbalance_threshold)
         return;
       // Points travel with their cells to their new ranks.
       particle_handler.prepare_for_coarsening_and_refinement();
@@ -858,14 +912,14 @@ namespace slidewave
     void
     MaterialPointSolver::adapt_grid()
     {
-      const auto near = cells_near_material(/*from_regions=*/false);
-      const unsigned int levels = prm.adaptivity.levels;
-      bool changes = false;
+      const auto         near    = cells_near_material(/*from_regions=*/false);
+      const unsigned int levels  = prm.adaptivity.levels;
+      bool               changes = false;
       for (const auto &cell : tria.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            const bool keep_fine = near[cell->active_cell_index()];
-            const unsigned int level = cell->level();
+            const bool         keep_fine = near[cell->active_cell_index()];
+            const unsigned int level     = cell->level();
             if (keep_fine && level < base_refinements + levels)
               {
                 cell->set_refine_flag();
@@ -877,11 +931,10 @@ namespace slidewave
                 changes = true;
               }
           }
-      changes = dealii::Utilities::MPI::logical_or(changes, MPI_COMM_WORLD);
-      const bool rebalance =
-        !changes && prm.adaptivity.imbalance_threshold > 0. &&
-        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 &&
-        load_imbalance() > prm.adaptivity.imbalance_threshold;
+      changes              = dealii::Utilities::MPI::logical_or(changes, MPI_COMM_WORLD);
+      const bool rebalance = !changes && prm.adaptivity.imbalance_threshold > 0.
+                             && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
+                             && load_imbalance() > prm.adaptivity.imbalance_threshold;
       if (!changes && !rebalance)
         return;
       // Points travel with their cells through refinement, coarsening and repartitioning.
@@ -900,7 +953,7 @@ namespace slidewave
     void
     MaterialPointSolver::build_cell_patches()
     {
-      const auto &partitioner = nodal_mass.get_partitioner();
+      const auto &partitioner     = nodal_mass.get_partitioner();
       const auto &vertex_to_cells = vertex_cells;
       patch_start.assign(tria.n_active_cells() + 1, 0);
       own_cell.assign(tria.n_active_cells(), PatchCell{});
@@ -930,8 +983,8 @@ namespace slidewave
           std::vector<dealii::Triangulation<2>::active_cell_iterator> neighbours;
           for (const unsigned int v : cell->vertex_indices())
             for (const auto &other : vertex_to_cells[cell->vertex_index(v)])
-              if (other != cell && std::find(neighbours.begin(), neighbours.end(), other) ==
-                                     neighbours.end())
+              if (other != cell
+                  && std::find(neighbours.begin(), neighbours.end(), other) == neighbours.end())
                 neighbours.push_back(other);
           std::sort(neighbours.begin(), neighbours.end());
           for (const auto &other : neighbours)
@@ -954,7 +1007,7 @@ namespace slidewave
       const double tolerance   = 1e-6 * prm.cell_size;
       for (const auto &wall : prm.walls)
         {
-          WallNodes   held;
+          WallNodes                 held;
           std::vector<unsigned int> on_wall;
           held.release_time = wall.release_time;
           for (const auto &cell : dofs.active_cell_iterators())
@@ -984,10 +1037,10 @@ namespace slidewave
       // lattice): a histogram of mass over strips and rows, summed over all ranks, then
       // summed from the top down.
       const double       spacing = prm.cell_size / prm.particles_per_direction;
-      const unsigned int n_x     = static_cast<unsigned int>(
-        std::round((prm.upper_right[0] - prm.lower_left[0]) / spacing));
-      const unsigned int n_y = static_cast<unsigned int>(
-        std::round((prm.upper_right[1] - prm.lower_left[1]) / spacing));
+      const unsigned int n_x
+        = static_cast<unsigned int>(std::round((prm.upper_right[0] - prm.lower_left[0]) / spacing));
+      const unsigned int n_y
+        = static_cast<unsigned int>(std::round((prm.upper_right[1] - prm.lower_left[1]) / spacing));
       const auto bin = [&](const dealii::Point<2> &x, const unsigned int d, const unsigned int n) {
         const int i = static_cast<int>(std::floor((x[d] - prm.lower_left[d]) / spacing));
         return static_cast<unsigned int>(std::clamp(i, 0, static_cast<int>(n) - 1));
@@ -998,27 +1051,29 @@ namespace slidewave
       for (const auto &particle : particle_handler)
         {
           const auto p = particle.get_properties();
-          mass[static_cast<std::size_t>(bin(particle.get_location(), 0, n_x)) * n_y +
-               bin(particle.get_location(), 1, n_y)] +=
-            p[property::mass] - (prm.point_forces && g > 0. ? p[property::point_force_y] / g : 0.);
+          mass[static_cast<std::size_t>(bin(particle.get_location(), 0, n_x)) * n_y
+               + bin(particle.get_location(), 1, n_y)]
+            += p[property::mass]
+               - (prm.point_forces && g > 0. ? p[property::point_force_y] / g : 0.);
         }
       dealii::Utilities::MPI::sum(mass, MPI_COMM_WORLD, mass);
       // Weight above the bottom of each bin.
       for (unsigned int i = 0; i < n_x; ++i)
         for (int j = static_cast<int>(n_y) - 2; j >= 0; --j)
-          mass[static_cast<std::size_t>(i) * n_y + j] += mass[static_cast<std::size_t>(i) * n_y + j + 1];
+          mass[static_cast<std::size_t>(i) * n_y + j]
+            += mass[static_cast<std::size_t>(i) * n_y + j + 1];
 
       for (auto &particle : particle_handler)
         {
-          auto               p    = particle.get_properties();
-          const unsigned int i    = bin(particle.get_location(), 0, n_x);
-          const unsigned int j    = bin(particle.get_location(), 1, n_y);
-          const double       own  = p[property::mass] -
-                               (prm.point_forces && g > 0. ? p[property::point_force_y] / g : 0.);
-          const double       above = (j + 1 < n_y ? mass[static_cast<std::size_t>(i) * n_y + j + 1] : 0.);
-          const double       sigma_v = -g * (above + 0.5 * own) / spacing;
+          auto               p   = particle.get_properties();
+          const unsigned int i   = bin(particle.get_location(), 0, n_x);
+          const unsigned int j   = bin(particle.get_location(), 1, n_y);
+          const double       own = p[property::mass]
+                             - (prm.point_forces && g > 0. ? p[property::point_force_y] / g : 0.);
+          const double above = (j + 1 < n_y ? mass[static_cast<std::size_t>(i) * n_y + j + 1] : 0.);
+          const double sigma_v = -g * (above + 0.5 * own) / spacing;
           const auto &material = prm.materials[static_cast<unsigned int>(p[property::material_id])];
-          double k0 = prm.lateral_stress_ratio;
+          double      k0       = prm.lateral_stress_ratio;
           if (k0 < 0.)
             k0 = material.model == materials::MaterialModel::drucker_prager ?
                    1. - std::sin(material.friction_angle * M_PI / 180.) :
@@ -1039,7 +1094,7 @@ namespace slidewave
       double       t     = 0.;
       damping            = prm.gravity_loading_damping;
       loading_gravity    = true; // every wall holds
-      const double end = prm.gravity_loading_time;
+      const double end   = prm.gravity_loading_time;
       while (t < end * (1. - 1e-12))
         {
           const double dt = std::min(stable_time_step(), end - t);
@@ -1051,7 +1106,7 @@ namespace slidewave
       loading_gravity = false;
       for (auto &particle : particle_handler)
         {
-          auto p = particle.get_properties();
+          auto p                  = particle.get_properties();
           p[property::velocity_x] = 0.;
           p[property::velocity_y] = 0.;
           p[property::initial_x]  = particle.get_location()[0];
@@ -1136,7 +1191,7 @@ namespace slidewave
     void
     MaterialPointSolver::create_particles()
     {
-      const unsigned int n      = prm.particles_per_direction;
+      const unsigned int  n = prm.particles_per_direction;
       std::vector<double> properties(particle_handler.n_properties_per_particle(), 0.);
       for (const auto &cell : tria.active_cell_iterators())
         {
@@ -1145,30 +1200,33 @@ namespace slidewave
           const double hx = cell->vertex(1)[0] - cell->vertex(0)[0];
           const double hy = cell->vertex(2)[1] - cell->vertex(0)[1];
           for_each_point_to_create(
-            cell, n,
-            [&](const dealii::Point<2> &position, const dealii::Point<2> &reference,
-                const unsigned int region_index, const unsigned int lattice_index) {
-                const MaterialRegion &region = prm.regions[region_index];
-                const unsigned int    m      = region.material_index;
-                const double volume = hx * hy / (n * n);
-                std::fill(properties.begin(), properties.end(), 0.);
-                properties[property::mass]           = prm.materials[m].density * volume;
-                properties[property::volume]         = volume;
-                properties[property::initial_volume] = volume;
-                const dealii::Tensor<1, 2> v         = region.initial_velocity(position);
-                properties[property::velocity_x]     = v[0];
-                properties[property::velocity_y]     = v[1];
-                properties[property::initial_x]      = position[0];
-                properties[property::initial_y]      = position[1];
-                properties[property::material_id]    = m;
-                properties[property::domain_half_x]  = 0.5 * hx / n;
-                properties[property::domain_half_y]  = 0.5 * hy / n;
-                // Identifiers that do not depend on the partition: the global index of the
-                // cell and the position in it.
-                const dealii::types::particle_index id =
-                  cell->global_active_cell_index() * n * n + lattice_index;
-                particle_handler.insert_particle(position, reference, id, cell,
-                                                 dealii::make_array_view(properties));
+            cell,
+            n,
+            [&](const dealii::Point<2> &position,
+                const dealii::Point<2> &reference,
+                const unsigned int      region_index,
+                const unsigned int      lattice_index) {
+              const MaterialRegion &region = prm.regions[region_index];
+              const unsigned int    m      = region.material_index;
+              const double          volume = hx * hy / (n * n);
+              std::fill(properties.begin(), properties.end(), 0.);
+              properties[property::mass]           = prm.materials[m].density * volume;
+              properties[property::volume]         = volume;
+              properties[property::initial_volume] = volume;
+              const dealii::Tensor<1, 2> v         = region.initial_velocity(position);
+              properties[property::velocity_x]     = v[0];
+              properties[property::velocity_y]     = v[1];
+              properties[property::initial_x]      = position[0];
+              properties[property::initial_y]      = position[1];
+              properties[property::material_id]    = m;
+              properties[property::domain_half_x]  = 0.5 * hx / n;
+              properties[property::domain_half_y]  = 0.5 * hy / n;
+              // Identifiers that do not depend on the partition: the global index of the
+              // cell and the position in it.
+              const dealii::types::particle_index id
+                = cell->global_active_cell_index() * n * n + lattice_index;
+              particle_handler.insert_particle(
+                position, reference, id, cell, dealii::make_array_view(properties));
             });
         }
       particle_handler.update_cached_numbers();
@@ -1184,13 +1242,12 @@ namespace slidewave
         {
           const auto   p       = particle.get_properties();
           const double density = p[property::mass] / p[property::volume];
-          const double c =
-            std::sqrt(materials[static_cast<unsigned int>(p[property::material_id])]
-                        .p_wave_modulus() /
-                      density);
-          const double v = std::sqrt(p[property::velocity_x] * p[property::velocity_x] +
-                                     p[property::velocity_y] * p[property::velocity_y]);
-          max_speed = std::max(max_speed, c + v);
+          const double c       = std::sqrt(
+            materials[static_cast<unsigned int>(p[property::material_id])].p_wave_modulus()
+            / density);
+          const double v = std::sqrt(p[property::velocity_x] * p[property::velocity_x]
+                                     + p[property::velocity_y] * p[property::velocity_y]);
+          max_speed      = std::max(max_speed, c + v);
         }
       max_speed = dealii::Utilities::MPI::max(max_speed, MPI_COMM_WORLD);
       return max_speed > 0. ? prm.cell_size / max_speed : std::numeric_limits<double>::infinity();
@@ -1223,11 +1280,11 @@ namespace slidewave
       else
         {
           const PatchCell       *begin = patch_cells.data() + patch_start[cell_index];
-          const PatchCell       *end = patch_cells.data() + patch_start[cell_index + 1];
-          const dealii::Point<2> x   = particle.get_location();
-          const auto             p   = particle.get_properties();
-          gimp_weights(begin, end, x[0], x[1], p[property::domain_half_x],
-                       p[property::domain_half_y], w);
+          const PatchCell       *end   = patch_cells.data() + patch_start[cell_index + 1];
+          const dealii::Point<2> x     = particle.get_location();
+          const auto             p     = particle.get_properties();
+          gimp_weights(
+            begin, end, x[0], x[1], p[property::domain_half_x], p[property::domain_half_y], w);
         }
     }
 
@@ -1276,40 +1333,38 @@ namespace slidewave
       // Q1 talks to the nodes of the point's cell, GIMP to those of the cell's patch.
       const bool whole_patch = prm.shape_function != ShapeFunction::q1;
       for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
-          const unsigned int cell_index = cell->active_cell_index();
-          if (whole_patch)
-            for (unsigned int e = patch_start[cell_index]; e < patch_start[cell_index + 1]; ++e)
-              for (const unsigned int i : patch_cells[e].node)
-                mark_active(i);
-          else
-            for (const unsigned int i : own_cell[cell_index].node)
+        const unsigned int cell_index = cell->active_cell_index();
+        if (whole_patch)
+          for (unsigned int e = patch_start[cell_index]; e < patch_start[cell_index + 1]; ++e)
+            for (const unsigned int i : patch_cells[e].node)
               mark_active(i);
-          for (const auto &particle : particles_in_cell)
-            {
-              shape_weights(particle, cell_index, w);
-              const auto   p  = particle.get_properties();
-              const double m  = p[property::mass];
-              const double V  = p[property::volume];
-              const double vx = p[property::velocity_x], vy = p[property::velocity_y];
-              const double sxx = p[property::stress_xx], syy = p[property::stress_yy],
-                           sxy = p[property::stress_xy];
-              const double fx = point_forces ? p[property::point_force_x] : 0.;
-              const double fy = point_forces ? p[property::point_force_y] : 0.;
-              for (unsigned int k = 0; k < w.n; ++k)
-                {
-                  double      *sums = node_sums.data() + 5 * w.node[k];
-                  const double mk   = w.value[k] * m;
-                  sums[0] += mk;
-                  sums[1] += mk * vx;
-                  sums[2] += mk * vy;
-                  // Internal force -V sigma grad S (Eq. 16) plus gravity and the point
-                  // force (Eq. 15).
-                  sums[3] +=
-                    -V * (sxx * w.grad_x[k] + sxy * w.grad_y[k]) + mk * gx + w.value[k] * fx;
-                  sums[4] +=
-                    -V * (sxy * w.grad_x[k] + syy * w.grad_y[k]) + mk * gy + w.value[k] * fy;
-                }
-            }
+        else
+          for (const unsigned int i : own_cell[cell_index].node)
+            mark_active(i);
+        for (const auto &particle : particles_in_cell)
+          {
+            shape_weights(particle, cell_index, w);
+            const auto   p  = particle.get_properties();
+            const double m  = p[property::mass];
+            const double V  = p[property::volume];
+            const double vx = p[property::velocity_x], vy = p[property::velocity_y];
+            const double sxx = p[property::stress_xx], syy = p[property::stress_yy],
+                         sxy = p[property::stress_xy];
+            const double fx  = point_forces ? p[property::point_force_x] : 0.;
+            const double fy  = point_forces ? p[property::point_force_y] : 0.;
+            for (unsigned int k = 0; k < w.n; ++k)
+              {
+                double      *sums = node_sums.data() + 5 * w.node[k];
+                const double mk   = w.value[k] * m;
+                sums[0] += mk;
+                sums[1] += mk * vx;
+                sums[2] += mk * vy;
+                // Internal force -V sigma grad S (Eq. 16) plus gravity and the point
+                // force (Eq. 15).
+                sums[3] += -V * (sxx * w.grad_x[k] + sxy * w.grad_y[k]) + mk * gx + w.value[k] * fx;
+                sums[4] += -V * (sxy * w.grad_x[k] + syy * w.grad_y[k]) + mk * gy + w.value[k] * fy;
+              }
+          }
       });
       // Into the distributed vectors (the scratch is left zero for the next step).
       for (const unsigned int i : active_nodes)
@@ -1463,16 +1518,17 @@ namespace slidewave
       // on nodes without mass, as in the dynamic update).
       const double   tiny  = empty_node_mass();
       const unsigned n_own = nodal_mass.locally_owned_size();
-      for (const auto &[when, target] : {std::pair<double, std::array<Vector, 2> *>{time, &velocity_old},
-                                         {time + dt, &velocity}})
+      for (const auto &[when, target] :
+           {std::pair<double, std::array<Vector, 2> *>{time, &velocity_old},
+            {time + dt, &velocity}})
         {
           prm.prescribed_velocity->set_time(when);
           for (unsigned int i = 0; i < n_own; ++i)
             for (unsigned int d = 0; d < 2; ++d)
-              (*target)[d].local_element(i) =
-                nodal_mass.local_element(i) > tiny ?
-                  prm.prescribed_velocity->value(node_positions[i], d) :
-                  0.;
+              (*target)[d].local_element(i)
+                = nodal_mass.local_element(i) > tiny ?
+                    prm.prescribed_velocity->value(node_positions[i], d) :
+                    0.;
         }
     }
 
@@ -1500,19 +1556,19 @@ namespace slidewave
           momentum[d].local_element(i) = 0.;
       NodeWeights w;
       for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
-          const unsigned int cell_index = cell->active_cell_index();
-          for (const auto &particle : particles_in_cell)
-            {
-              shape_weights(particle, cell_index, w);
-              const auto   p  = particle.get_properties();
-              const double px = p[property::mass] * p[property::velocity_x];
-              const double py = p[property::mass] * p[property::velocity_y];
-              for (unsigned int k = 0; k < w.n; ++k)
-                {
-                  momentum[0].local_element(w.node[k]) += w.value[k] * px;
-                  momentum[1].local_element(w.node[k]) += w.value[k] * py;
-                }
-            }
+        const unsigned int cell_index = cell->active_cell_index();
+        for (const auto &particle : particles_in_cell)
+          {
+            shape_weights(particle, cell_index, w);
+            const auto   p  = particle.get_properties();
+            const double px = p[property::mass] * p[property::velocity_x];
+            const double py = p[property::mass] * p[property::velocity_y];
+            for (unsigned int k = 0; k < w.n; ++k)
+              {
+                momentum[0].local_element(w.node[k]) += w.value[k] * px;
+                momentum[1].local_element(w.node[k]) += w.value[k] * py;
+              }
+          }
       });
       for (unsigned int d = 0; d < 2; ++d)
         {
@@ -1546,41 +1602,41 @@ namespace slidewave
       NodeWeights  w;
       const double flip = prm.flip_fraction;
       for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
-          const unsigned int cell_index = cell->active_cell_index();
-          if (with_stresses)
-            cell_gradients.resize(particle_handler.n_particles_in_cell(cell));
-          unsigned int k = 0;
-          for (auto &particle : particles_in_cell)
-            {
-              shape_weights(particle, cell_index, w);
-              double v_new[2] = {0., 0.}, dv[2] = {0., 0.};
-              dealii::Tensor<2, 2> L;
-              for (unsigned int e = 0; e < w.n; ++e)
-                {
-                  const double *v  = node_velocities.data() + 4 * w.node[e];
-                  const double  vx = v[0];
-                  const double  vy = v[1];
-                  v_new[0] += w.value[e] * vx;
-                  v_new[1] += w.value[e] * vy;
-                  dv[0] += w.value[e] * v[2];
-                  dv[1] += w.value[e] * v[3];
-                  L[0][0] += vx * w.grad_x[e];
-                  L[0][1] += vx * w.grad_y[e];
-                  L[1][0] += vy * w.grad_x[e];
-                  L[1][1] += vy * w.grad_y[e];
-                }
-              auto p = particle.get_properties();
-              p[property::velocity_x] =
-                flip * (p[property::velocity_x] + dv[0]) + (1. - flip) * v_new[0];
-              p[property::velocity_y] =
-                flip * (p[property::velocity_y] + dv[1]) + (1. - flip) * v_new[1];
-              new_positions[particle.get_local_index()] =
-                particle.get_location() + dt * dealii::Tensor<1, 2>({v_new[0], v_new[1]});
-              if (with_stresses)
-                cell_gradients[k++] = L;
-            }
-          if (with_stresses)
-            update_cell_stresses(particles_in_cell, dt);
+        const unsigned int cell_index = cell->active_cell_index();
+        if (with_stresses)
+          cell_gradients.resize(particle_handler.n_particles_in_cell(cell));
+        unsigned int k = 0;
+        for (auto &particle : particles_in_cell)
+          {
+            shape_weights(particle, cell_index, w);
+            double               v_new[2] = {0., 0.}, dv[2] = {0., 0.};
+            dealii::Tensor<2, 2> L;
+            for (unsigned int e = 0; e < w.n; ++e)
+              {
+                const double *v  = node_velocities.data() + 4 * w.node[e];
+                const double  vx = v[0];
+                const double  vy = v[1];
+                v_new[0] += w.value[e] * vx;
+                v_new[1] += w.value[e] * vy;
+                dv[0] += w.value[e] * v[2];
+                dv[1] += w.value[e] * v[3];
+                L[0][0] += vx * w.grad_x[e];
+                L[0][1] += vx * w.grad_y[e];
+                L[1][0] += vy * w.grad_x[e];
+                L[1][1] += vy * w.grad_y[e];
+              }
+            auto p = particle.get_properties();
+            p[property::velocity_x]
+              = flip * (p[property::velocity_x] + dv[0]) + (1. - flip) * v_new[0];
+            p[property::velocity_y]
+              = flip * (p[property::velocity_y] + dv[1]) + (1. - flip) * v_new[1];
+            new_positions[particle.get_local_index()]
+              = particle.get_location() + dt * dealii::Tensor<1, 2>({v_new[0], v_new[1]});
+            if (with_stresses)
+              cell_gradients[k++] = L;
+          }
+        if (with_stresses)
+          update_cell_stresses(particles_in_cell, dt);
       });
     }
 
@@ -1591,25 +1647,25 @@ namespace slidewave
     {
       NodeWeights w;
       for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
-          const unsigned int cell_index = cell->active_cell_index();
-          cell_gradients.resize(particle_handler.n_particles_in_cell(cell));
-          unsigned int k = 0;
-          for (const auto &particle : particles_in_cell)
-            {
-              shape_weights(particle, cell_index, w);
-              dealii::Tensor<2, 2> L;
-              for (unsigned int e = 0; e < w.n; ++e)
-                {
-                  const double vx = velocity[0].local_element(w.node[e]);
-                  const double vy = velocity[1].local_element(w.node[e]);
-                  L[0][0] += vx * w.grad_x[e];
-                  L[0][1] += vx * w.grad_y[e];
-                  L[1][0] += vy * w.grad_x[e];
-                  L[1][1] += vy * w.grad_y[e];
-                }
-              cell_gradients[k++] = L;
-            }
-          update_cell_stresses(particles_in_cell, dt);
+        const unsigned int cell_index = cell->active_cell_index();
+        cell_gradients.resize(particle_handler.n_particles_in_cell(cell));
+        unsigned int k = 0;
+        for (const auto &particle : particles_in_cell)
+          {
+            shape_weights(particle, cell_index, w);
+            dealii::Tensor<2, 2> L;
+            for (unsigned int e = 0; e < w.n; ++e)
+              {
+                const double vx = velocity[0].local_element(w.node[e]);
+                const double vy = velocity[1].local_element(w.node[e]);
+                L[0][0] += vx * w.grad_x[e];
+                L[0][1] += vx * w.grad_y[e];
+                L[1][0] += vy * w.grad_x[e];
+                L[1][1] += vy * w.grad_y[e];
+              }
+            cell_gradients[k++] = L;
+          }
+        update_cell_stresses(particles_in_cell, dt);
       });
     }
 
@@ -1630,7 +1686,7 @@ namespace slidewave
           for (const auto &particle : particles_in_cell)
             {
               const dealii::Tensor<2, 2> &L = cell_gradients[k++];
-              const double V = particle.get_properties()[property::volume];
+              const double                V = particle.get_properties()[property::volume];
               volume_sum += V;
               volumetric_sum += V * (L[0][0] + L[1][1]);
             }
@@ -1657,10 +1713,10 @@ namespace slidewave
 
           auto                          p = particle.get_properties();
           dealii::SymmetricTensor<2, 3> stress;
-          stress[0][0] = p[property::stress_xx];
-          stress[1][1] = p[property::stress_yy];
-          stress[0][1] = p[property::stress_xy];
-          stress[2][2] = p[property::stress_zz];
+          stress[0][0]   = p[property::stress_xx];
+          stress[1][1]   = p[property::stress_yy];
+          stress[0][1]   = p[property::stress_xy];
+          stress[2][2]   = p[property::stress_zz];
           double plastic = p[property::equivalent_plastic_strain];
           materials[static_cast<unsigned int>(p[property::material_id])].update_stress(
             stress, strain_increment, spin_xy, plastic);
@@ -1674,10 +1730,10 @@ namespace slidewave
             {
               // cpGIMP: the domain follows the stretch of the point along the axes
               // (kept within half a cell so it stays inside the patch of cells).
-              p[property::domain_half_x] =
-                std::min(max_half, p[property::domain_half_x] * (1. + L[0][0] * dt));
-              p[property::domain_half_y] =
-                std::min(max_half, p[property::domain_half_y] * (1. + L[1][1] * dt));
+              p[property::domain_half_x]
+                = std::min(max_half, p[property::domain_half_x] * (1. + L[0][0] * dt));
+              p[property::domain_half_y]
+                = std::min(max_half, p[property::domain_half_y] * (1. + L[1][1] * dt));
             }
         }
     }
@@ -1767,13 +1823,13 @@ namespace slidewave
       // The reference coordinates exactly as deal.II's MappingCartesian computes them,
       // and its test for a point inside the unit cell, so that this path and the full
       // sort put every point in the same cell at the same reference coordinates.
-      const auto locate = [](const PatchCell &c, const dealii::Point<2> &x,
-                             dealii::Point<2> &reference) {
-        reference[0] = (x[0] - c.x0) / c.hx;
-        reference[1] = (x[1] - c.y0) / c.hy;
-        return reference[0] >= 0. && reference[0] <= 1. && reference[1] >= 0. &&
-               reference[1] <= 1.;
-      };
+      const auto locate
+        = [](const PatchCell &c, const dealii::Point<2> &x, dealii::Point<2> &reference) {
+            reference[0] = (x[0] - c.x0) / c.hx;
+            reference[1] = (x[1] - c.y0) / c.hy;
+            return reference[0] >= 0. && reference[0] <= 1. && reference[1] >= 0.
+                   && reference[1] <= 1.;
+          };
       moving_particles.clear();
       moving_data.clear();
       const unsigned int n_properties = particle_handler.n_properties_per_particle();
@@ -1814,12 +1870,12 @@ namespace slidewave
           }
       });
       // Collective: one reduction decides for all ranks.
-      const unsigned int local[2]  = {leaves_patch ? 1u : 0u,
-                                      moving_particles.empty() ? 0u : 1u};
+      const unsigned int local[2]  = {leaves_patch ? 1u : 0u, moving_particles.empty() ? 0u : 1u};
       unsigned int       global[2] = {0, 0};
       lap(StepTimeline::relocation);
       dealii::Utilities::MPI::max(dealii::ArrayView<const unsigned int>(local, 2),
-                                  MPI_COMM_WORLD, dealii::ArrayView<unsigned int>(global, 2));
+                                  MPI_COMM_WORLD,
+                                  dealii::ArrayView<unsigned int>(global, 2));
       lap(StepTimeline::relocation_reduction);
       if (global[0] != 0)
         return false; // the full sort takes over (the locations are set)
@@ -1835,9 +1891,11 @@ namespace slidewave
         {
           const MovingParticle &moving = moving_particles[k];
           particle_handler.insert_particle(
-            moving.location, moving.reference, moving.id, moving.cell,
-            dealii::ArrayView<const double>(moving_data.data() + k * n_properties,
-                                            n_properties));
+            moving.location,
+            moving.reference,
+            moving.id,
+            moving.cell,
+            dealii::ArrayView<const double>(moving_data.data() + k * n_properties, n_properties));
         }
       for (auto moving = moving_particles.rbegin(); moving != moving_particles.rend(); ++moving)
         particle_handler.remove_particle(moving->particle);
@@ -1863,12 +1921,13 @@ namespace slidewave
             {
               std::ostringstream out;
               out << "material point " << particle.get_id() << " at (" << particle.get_location()
-                  << ") has " << (std::isfinite(p[property::volume]) && p[property::volume] <= 0. ?
-                                    "a non-positive volume" :
-                                    "non-finite values")
+                  << ") has "
+                  << (std::isfinite(p[property::volume]) && p[property::volume] <= 0. ?
+                        "a non-positive volume" :
+                        "non-finite values")
                   << " (velocity " << p[property::velocity_x] << ", " << p[property::velocity_y]
-                  << "; stress " << p[property::stress_xx] << ", " << p[property::stress_yy]
-                  << ", " << p[property::stress_xy] << ")";
+                  << "; stress " << p[property::stress_xx] << ", " << p[property::stress_yy] << ", "
+                  << p[property::stress_xy] << ")";
               problem = out.str();
               break;
             }
@@ -1896,19 +1955,22 @@ namespace slidewave
           const double m  = p[property::mass];
           const double vx = p[property::velocity_x], vy = p[property::velocity_y];
           sums[0] += 0.5 * m * (vx * vx + vy * vy);
-          const auto  &elastic =
-            materials[static_cast<unsigned int>(p[property::material_id])].elasticity();
+          const auto &elastic
+            = materials[static_cast<unsigned int>(p[property::material_id])].elasticity();
           const double sxx = p[property::stress_xx], syy = p[property::stress_yy],
                        szz = p[property::stress_zz], sxy = p[property::stress_xy];
           const double mean = (sxx + syy + szz) / 3.;
-          const double dev2 = (sxx - mean) * (sxx - mean) + (syy - mean) * (syy - mean) +
-                              (szz - mean) * (szz - mean) + 2. * sxy * sxy;
-          sums[1] += p[property::volume] * (0.5 * mean * mean / elastic.bulk_modulus() +
-                                            0.25 * dev2 / elastic.shear_modulus());
-          sums[2] += m * (prm.gravity[0] * (particle.get_location()[0] - p[property::initial_x]) +
-                          prm.gravity[1] * (particle.get_location()[1] - p[property::initial_y]));
+          const double dev2 = (sxx - mean) * (sxx - mean) + (syy - mean) * (syy - mean)
+                              + (szz - mean) * (szz - mean) + 2. * sxy * sxy;
+          sums[1] += p[property::volume]
+                     * (0.5 * mean * mean / elastic.bulk_modulus()
+                        + 0.25 * dev2 / elastic.shear_modulus());
+          sums[2] += m
+                     * (prm.gravity[0] * (particle.get_location()[0] - p[property::initial_x])
+                        + prm.gravity[1] * (particle.get_location()[1] - p[property::initial_y]));
         }
-      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 3), MPI_COMM_WORLD,
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 3),
+                                  MPI_COMM_WORLD,
                                   dealii::ArrayView<double>(sums, 3));
       return {sums[0], sums[1], sums[2]};
     }
@@ -1918,13 +1980,13 @@ namespace slidewave
     std::string
     MaterialPointSolver::describe_fastest_particle() const
     {
-      double                          fastest = -1.;
+      double             fastest = -1.;
       std::ostringstream out;
       for (const auto &particle : particle_handler)
         {
           const auto   p     = particle.get_properties();
-          const double speed = std::sqrt(p[property::velocity_x] * p[property::velocity_x] +
-                                         p[property::velocity_y] * p[property::velocity_y]);
+          const double speed = std::sqrt(p[property::velocity_x] * p[property::velocity_x]
+                                         + p[property::velocity_y] * p[property::velocity_y]);
           if (speed > fastest)
             {
               fastest = speed;
@@ -1934,9 +1996,9 @@ namespace slidewave
             }
         }
       // The rank with the fastest point tells everybody.
-      const auto   my_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-      const double global  = dealii::Utilities::MPI::max(fastest, MPI_COMM_WORLD);
-      const unsigned int owner = dealii::Utilities::MPI::min(
+      const auto         my_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+      const double       global  = dealii::Utilities::MPI::max(fastest, MPI_COMM_WORLD);
+      const unsigned int owner   = dealii::Utilities::MPI::min(
         fastest == global ? my_rank : dealii::numbers::invalid_unsigned_int, MPI_COMM_WORLD);
       return dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, out.str(), owner);
     }
@@ -1948,8 +2010,8 @@ namespace slidewave
     {
       Integrals result;
       double    sums[4] = {0., 0., 0., 0.};
-      double    maxima[3] = {0., -std::numeric_limits<double>::infinity(),
-                          -std::numeric_limits<double>::infinity()};
+      double    maxima[3]
+        = {0., -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
       for (const auto &particle : particle_handler)
         {
           const auto   p  = particle.get_properties();
@@ -1963,9 +2025,11 @@ namespace slidewave
           maxima[1] = std::max(maxima[1], particle.get_location()[0]);
           maxima[2] = std::max(maxima[2], particle.get_location()[1]);
         }
-      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 4), MPI_COMM_WORLD,
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 4),
+                                  MPI_COMM_WORLD,
                                   dealii::ArrayView<double>(sums, 4));
-      dealii::Utilities::MPI::max(dealii::ArrayView<const double>(maxima, 3), MPI_COMM_WORLD,
+      dealii::Utilities::MPI::max(dealii::ArrayView<const double>(maxima, 3),
+                                  MPI_COMM_WORLD,
                                   dealii::ArrayView<double>(maxima, 3));
       result.mass           = sums[0];
       result.momentum_x     = sums[1];

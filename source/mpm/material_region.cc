@@ -1,10 +1,8 @@
+#include <cmath>
 #include <deal.II/base/utilities.h>
-
+#include <iostream>
 #include <slidewave/core/input_error.h>
 #include <slidewave/mpm/material_region.h>
-
-#include <cmath>
-#include <iostream>
 #include <sstream>
 
 namespace slidewave
@@ -22,14 +20,19 @@ namespace slidewave
                         "'polygon': 'Polygon'. Regions may overlap: a point (placed at the "
                         "sub-cell centres) belongs to the lowest-numbered region containing "
                         "it, so a later region fills only what earlier ones left.");
-      prm.declare_entry("Rectangle", "0, 0, 1, 1", Anything(),
-                        "x_min, y_min, x_max, y_max [m].");
-      prm.declare_entry("Polygon", "", Anything(),
+      prm.declare_entry("Rectangle", "0, 0, 1, 1", Anything(), "x_min, y_min, x_max, y_max [m].");
+      prm.declare_entry("Polygon",
+                        "",
+                        Anything(),
                         "Vertices 'x1, y1; x2, y2; ...' [m], at least three, in order "
                         "around the polygon.");
-      prm.declare_entry("Material", "", Anything(),
+      prm.declare_entry("Material",
+                        "",
+                        Anything(),
                         "Name of the material filling the region (a 'Material N/Name').");
-      prm.declare_entry("Initial velocity", "0; 0", Anything(),
+      prm.declare_entry("Initial velocity",
+                        "0; 0",
+                        Anything(),
                         "Initial velocity of the region's material points [m/s]: two "
                         "expressions of x and y separated by ';', e.g. '0.1*sin(pi*x/50); 0'.");
     }
@@ -44,23 +47,28 @@ namespace slidewave
         return false;
       if (shape == "rectangle")
         {
-          const auto r = parse_number_list(path + "/Rectangle", prm.get("Rectangle"),
-                                       "four numbers x_min, y_min, x_max, y_max");
+          const auto r = parse_number_list(path + "/Rectangle",
+                                           prm.get("Rectangle"),
+                                           "four numbers x_min, y_min, x_max, y_max");
           if (r.size() != 4 || !(r[2] > r[0]) || !(r[3] > r[1]))
-            throw InputError(path + "/Rectangle", prm.get("Rectangle"),
+            throw InputError(path + "/Rectangle",
+                             prm.get("Rectangle"),
                              "four numbers x_min, y_min, x_max, y_max with x_min < x_max "
                              "and y_min < y_max");
-          polygon = {dealii::Point<2>(r[0], r[1]), dealii::Point<2>(r[2], r[1]),
-                     dealii::Point<2>(r[2], r[3]), dealii::Point<2>(r[0], r[3])};
+          polygon = {dealii::Point<2>(r[0], r[1]),
+                     dealii::Point<2>(r[2], r[1]),
+                     dealii::Point<2>(r[2], r[3]),
+                     dealii::Point<2>(r[0], r[3])};
         }
       else
         {
           for (const auto &vertex : dealii::Utilities::split_string_list(prm.get("Polygon"), ';'))
             {
-              const auto v = parse_number_list(path + "/Polygon", vertex,
-                                           "vertices 'x1, y1; x2, y2; ...'");
+              const auto v
+                = parse_number_list(path + "/Polygon", vertex, "vertices 'x1, y1; x2, y2; ...'");
               if (v.size() != 2)
-                throw InputError(path + "/Polygon", prm.get("Polygon"),
+                throw InputError(path + "/Polygon",
+                                 prm.get("Polygon"),
                                  "vertices 'x1, y1; x2, y2; ...' (two numbers each)");
               polygon.emplace_back(v[0], v[1]);
             }
@@ -88,7 +96,8 @@ namespace slidewave
       catch (...)
         {
           std::cerr.rdbuf(cerr_buffer);
-          throw InputError(path + "/Initial velocity", velocity,
+          throw InputError(path + "/Initial velocity",
+                           velocity,
                            "two expressions of x and y separated by ';' (muparser syntax)");
         }
       return true;
@@ -108,12 +117,12 @@ namespace slidewave
           const auto &b = polygon[j];
           // On the edge a-b?
           const double cross = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
-          if (std::abs(cross) <= 1e-12 * (a.distance(b) + 1.) &&
-              p[0] >= std::min(a[0], b[0]) - 1e-12 && p[0] <= std::max(a[0], b[0]) + 1e-12 &&
-              p[1] >= std::min(a[1], b[1]) - 1e-12 && p[1] <= std::max(a[1], b[1]) + 1e-12)
+          if (std::abs(cross) <= 1e-12 * (a.distance(b) + 1.)
+              && p[0] >= std::min(a[0], b[0]) - 1e-12 && p[0] <= std::max(a[0], b[0]) + 1e-12
+              && p[1] >= std::min(a[1], b[1]) - 1e-12 && p[1] <= std::max(a[1], b[1]) + 1e-12)
             return true;
-          if ((a[1] > p[1]) != (b[1] > p[1]) &&
-              p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
+          if ((a[1] > p[1]) != (b[1] > p[1])
+              && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
             inside = !inside;
         }
       return inside;

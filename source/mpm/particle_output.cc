@@ -1,11 +1,9 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/particles/data_out.h>
-
+#include <fstream>
 #include <slidewave/mpm/particle_output.h>
 #include <slidewave/mpm/particle_properties.h>
-
-#include <fstream>
 
 namespace slidewave
 {
@@ -13,7 +11,8 @@ namespace slidewave
   {
     ParticleOutput::ParticleOutput(std::string output_directory)
       : directory(std::move(output_directory))
-    {}
+    {
+    }
 
 
 

@@ -1,10 +1,8 @@
-#include <deal.II/base/utilities.h>
-
-#include <slidewave/core/input_error.h>
-#include <slidewave/mpm/rigid_wall.h>
-
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/utilities.h>
+#include <slidewave/core/input_error.h>
+#include <slidewave/mpm/rigid_wall.h>
 
 namespace slidewave
 {
@@ -26,14 +24,20 @@ namespace slidewave
     RigidWall::declare_parameters(dealii::ParameterHandler &prm)
     {
       using namespace dealii::Patterns;
-      prm.declare_entry("Type", "none", Selection("none|roller|fixed"),
+      prm.declare_entry("Type",
+                        "none",
+                        Selection("none|roller|fixed"),
                         "'none': this wall is not used. 'roller': the nodes on the wall keep "
                         "zero normal velocity (free slip). 'fixed': zero velocity (no slip).");
-      prm.declare_entry("From", "0, 0", Anything(),
+      prm.declare_entry("From",
+                        "0, 0",
+                        Anything(),
                         "One end 'x, y' of the wall [m]; the wall is horizontal or vertical "
                         "and lies on grid lines.");
       prm.declare_entry("To", "0, 1", Anything(), "The other end 'x, y' [m].");
-      prm.declare_entry("Release time", "never", Anything(),
+      prm.declare_entry("Release time",
+                        "never",
+                        Anything(),
                         "'never' for a permanent wall, or the time [s] at which this "
                         "support is removed (it holds while t < release time; it also holds "
                         "during gravity loading).");
@@ -51,7 +55,8 @@ namespace slidewave
       start     = parse_point(path + "/From", prm.get("From"));
       end       = parse_point(path + "/To", prm.get("To"));
       if (start.distance(end) == 0. || (start[0] != end[0] && start[1] != end[1]))
-        throw InputError(path + "/To", prm.get("To"),
+        throw InputError(path + "/To",
+                         prm.get("To"),
                          "a point other than 'From' on the same vertical or horizontal "
                          "line (walls are axis-aligned)");
       const std::string release = dealii::Utilities::trim(prm.get("Release time"));
@@ -82,9 +87,9 @@ namespace slidewave
     RigidWall::contains(const dealii::Point<2> &x, const double tolerance) const
     {
       const unsigned int n = normal_component(), t = 1 - n;
-      return std::abs(x[n] - start[n]) <= tolerance &&
-             x[t] >= std::min(start[t], end[t]) - tolerance &&
-             x[t] <= std::max(start[t], end[t]) + tolerance;
+      return std::abs(x[n] - start[n]) <= tolerance
+             && x[t] >= std::min(start[t], end[t]) - tolerance
+             && x[t] <= std::max(start[t], end[t]) + tolerance;
     }
   } // namespace mpm
 } // namespace slidewave

@@ -1,12 +1,9 @@
-#include <deal.II/base/mpi.h>
-
-#include <slidewave/mpm/step_timeline.h>
-
-#include <mpi.h>
-
 #include <cmath>
+#include <deal.II/base/mpi.h>
 #include <fstream>
 #include <iomanip>
+#include <mpi.h>
+#include <slidewave/mpm/step_timeline.h>
 #include <stdexcept>
 
 namespace slidewave
@@ -16,9 +13,16 @@ namespace slidewave
     const std::array<const char *, StepTimeline::n_parts> &
     StepTimeline::part_names()
     {
-      static const std::array<const char *, n_parts> names{
-        {"grid_changes", "scatter", "exchange_sums", "grid_update", "exchange_velocities",
-         "gather", "musl_remap", "relocation", "relocation_reduction", "full_sort"}};
+      static const std::array<const char *, n_parts> names{{"grid_changes",
+                                                            "scatter",
+                                                            "exchange_sums",
+                                                            "grid_update",
+                                                            "exchange_velocities",
+                                                            "gather",
+                                                            "musl_remap",
+                                                            "relocation",
+                                                            "relocation_reduction",
+                                                            "full_sort"}};
       return names;
     }
 
@@ -58,7 +62,7 @@ namespace slidewave
           local.insert(local.end(), row.seconds.begin(), row.seconds.end());
         }
       const auto all = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, local, 0);
-      Written written;
+      Written    written;
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
         return written;
       std::ofstream out(filename);

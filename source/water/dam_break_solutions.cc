@@ -1,6 +1,5 @@
-#include <slidewave/water/dam_break_solutions.h>
-
 #include <cmath>
+#include <slidewave/water/dam_break_solutions.h>
 
 namespace slidewave
 {
@@ -26,8 +25,8 @@ namespace slidewave
       // Middle depth: root of the rarefaction-shock matching condition, monotone on
       // (h_r, h_l); bisection to round-off.
       const auto f = [&](const double hm) {
-        return 2. * (c_l - std::sqrt(g * hm)) -
-               (hm - h_r) * std::sqrt(0.5 * g * (hm + h_r) / (hm * h_r));
+        return 2. * (c_l - std::sqrt(g * hm))
+               - (hm - h_r) * std::sqrt(0.5 * g * (hm + h_r) / (hm * h_r));
       };
       double a = h_r, b = h_l;
       for (unsigned int k = 0; k < 200 && b - a > 1e-16 * h_l; ++k)
@@ -93,15 +92,13 @@ namespace slidewave
       , l(half_width)
       , a(amplitude)
       , omega(std::sqrt(2. * gravity * d0) / half_width)
-    {}
+    {
+    }
 
 
 
     void
-    ThackerSolution::evaluate(const double x,
-                              const double t,
-                              double      &depth,
-                              double      &velocity) const
+    ThackerSolution::evaluate(const double x, const double t, double &depth, double &velocity) const
     {
       const double shift = a * std::cos(omega * t);
       const double r     = (x - shift) / l;

@@ -1,11 +1,9 @@
+#include <cmath>
 #include <deal.II/base/exceptions.h>
-
+#include <limits>
 #include <slidewave/core/input_error.h>
 #include <slidewave/water/numerical_flux.h>
 #include <slidewave/water/shallow_water_1d.h>
-
-#include <cmath>
-#include <limits>
 
 namespace slidewave
 {
@@ -74,17 +72,16 @@ namespace slidewave
       film_depth          = prm.get_double("Film depth");
       courant_number      = prm.get_double("Courant number");
       manning_coefficient = prm.get_double("Manning coefficient");
-      flux = prm.get("Numerical flux") == "roe" ? NumericalFlux::roe : NumericalFlux::hll;
-      reconstruction = prm.get("Reconstruction") == "first order" ?
-                         Reconstruction::first_order :
-                         Reconstruction::second_order;
+      flux           = prm.get("Numerical flux") == "roe" ? NumericalFlux::roe : NumericalFlux::hll;
+      reconstruction = prm.get("Reconstruction") == "first order" ? Reconstruction::first_order :
+                                                                    Reconstruction::second_order;
       const std::string limiter_name = prm.get("Limiter");
-      limiter         = limiter_name == "minmod"   ? Limiter::minmod :
-                        limiter_name == "van leer" ? Limiter::van_leer :
-                                                     Limiter::superbee;
-      time_integrator = prm.get("Time integrator") == "forward euler" ?
-                          TimeIntegrator::forward_euler :
-                          TimeIntegrator::ssp_rk2;
+      limiter                        = limiter_name == "minmod"   ? Limiter::minmod :
+                                       limiter_name == "van leer" ? Limiter::van_leer :
+                                                                    Limiter::superbee;
+      time_integrator                = prm.get("Time integrator") == "forward euler" ?
+                                         TimeIntegrator::forward_euler :
+                                         TimeIntegrator::ssp_rk2;
 
       require_positive(path + "/Gravity", gravity);
       require_positive(path + "/Dry depth", dry_depth);
@@ -94,11 +91,11 @@ namespace slidewave
       if (!(courant_number > 0.) || !(courant_number <= limit))
         throw InputError(path + "/Courant number",
                          to_string(courant_number),
-                         "a number in (0, " + to_string(limit) + "]: the stability limit of "
-                           "the " +
-                           (reconstruction == Reconstruction::first_order ? "first" :
-                                                                             "second") +
-                           "-order scheme");
+                         "a number in (0, " + to_string(limit)
+                           + "]: the stability limit of "
+                             "the "
+                           + (reconstruction == Reconstruction::first_order ? "first" : "second")
+                           + "-order scheme");
     }
 
 
@@ -131,9 +128,19 @@ namespace slidewave
         }
       for (unsigned int i = 0; i + 1 < n; ++i)
         inverse_spacing[i] = 1. / (center[i + 1] - center[i]);
-      for (auto *v : {&h, &hu, &bed_elevation, &h_stage, &hu_stage, &rate_h, &rate_hu,
-                      &h_left_face, &h_right_face, &u_left_face, &u_right_face,
-                      &bed_left_face, &bed_right_face})
+      for (auto *v : {&h,
+                      &hu,
+                      &bed_elevation,
+                      &h_stage,
+                      &hu_stage,
+                      &rate_h,
+                      &rate_hu,
+                      &h_left_face,
+                      &h_right_face,
+                      &u_left_face,
+                      &u_right_face,
+                      &bed_left_face,
+                      &bed_right_face})
         v->assign(n, 0.);
     }
 
@@ -170,7 +177,7 @@ namespace slidewave
         if (h[i] > prm.dry_depth)
           {
             const double speed = std::abs(hu[i] / h[i]) + std::sqrt(g * h[i]);
-            min_dt = std::min(min_dt, water_mesh.width(i) / speed);
+            min_dt             = std::min(min_dt, water_mesh.width(i) / speed);
           }
       return prm.courant_number * min_dt;
     }
@@ -232,23 +239,23 @@ namespace slidewave
             h_l[i] = h_r[i] = h[i];
             u_l[i] = u_r[i] = u_i;
             b_l[i] = b_r[i] = bed[i];
-            if (i == 0 || i == n - 1 || h[i] <= dry_depth || h[i - 1] <= dry_depth ||
-                h[i + 1] <= dry_depth)
+            if (i == 0 || i == n - 1 || h[i] <= dry_depth || h[i - 1] <= dry_depth
+                || h[i + 1] <= dry_depth)
               continue;
 
             const double inv_dx_l   = inverse_spacing[i - 1];
             const double inv_dx_r   = inverse_spacing[i];
             const double half_width = 0.5 / inverse_width[i];
 
-            const double slope_h = limited_slope<limiter>((h[i] - h[i - 1]) * inv_dx_l,
-                                                          (h[i + 1] - h[i]) * inv_dx_r);
+            const double slope_h
+              = limited_slope<limiter>((h[i] - h[i - 1]) * inv_dx_l, (h[i + 1] - h[i]) * inv_dx_r);
             const double eta_m = h[i - 1] + bed[i - 1];
             const double eta_i = h[i] + bed[i];
             const double eta_p = h[i + 1] + bed[i + 1];
-            const double slope_eta =
-              limited_slope<limiter>((eta_i - eta_m) * inv_dx_l, (eta_p - eta_i) * inv_dx_r);
-            const double slope_u = limited_slope<limiter>((u_i - u_left) * inv_dx_l,
-                                                          (u_l[i + 1] - u_i) * inv_dx_r);
+            const double slope_eta
+              = limited_slope<limiter>((eta_i - eta_m) * inv_dx_l, (eta_p - eta_i) * inv_dx_r);
+            const double slope_u
+              = limited_slope<limiter>((u_i - u_left) * inv_dx_l, (u_l[i + 1] - u_i) * inv_dx_r);
 
             double dh = slope_h * half_width;
             if (h[i] - std::abs(dh) < 0.)
@@ -326,13 +333,13 @@ namespace slidewave
             // Left state: right face of cell j-1; right state: left face of cell j.
             const double hl = h_r[j - 1], hr = h_l[j];
             const double bl = b_r[j - 1], br = b_l[j];
-            const double b_star = std::max(bl, br);
+            const double b_star  = std::max(bl, br);
             const double hl_star = std::max(0., hl + bl - b_star);
             const double hr_star = std::max(0., hr + br - b_star);
 
             double fh, fq;
-            interface_flux<flux_type>(hl_star, hl_star * u_r[j - 1], hr_star,
-                                      hr_star * u_l[j], g, dry_depth, fh, fq);
+            interface_flux<flux_type>(
+              hl_star, hl_star * u_r[j - 1], hr_star, hr_star * u_l[j], g, dry_depth, fh, fq);
 
             const double correction_l = 0.5 * g * (hl - hl_star) * (hl + hl_star);
             const double correction_r = 0.5 * g * (hr - hr_star) * (hr + hr_star);
@@ -374,8 +381,8 @@ namespace slidewave
           for (unsigned int i = 0; i < n; ++i)
             {
               h_left_face[i] = h_right_face[i] = depth[i];
-              u_left_face[i] = u_right_face[i] =
-                depth[i] > prm.dry_depth ? discharge[i] / depth[i] : 0.;
+              u_left_face[i]                   = u_right_face[i]
+                = depth[i] > prm.dry_depth ? discharge[i] / depth[i] : 0.;
               bed_left_face[i] = bed_right_face[i] = bed_elevation[i];
             }
           return;
@@ -383,22 +390,52 @@ namespace slidewave
       switch (prm.limiter)
         {
           case Limiter::minmod:
-            reconstruct_second_order<Limiter::minmod>(
-              depth, discharge, bed_elevation, inverse_spacing, inverse_width, prm.dry_depth,
-              prm.gravity, half_step, h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
-              bed_right_face);
+            reconstruct_second_order<Limiter::minmod>(depth,
+                                                      discharge,
+                                                      bed_elevation,
+                                                      inverse_spacing,
+                                                      inverse_width,
+                                                      prm.dry_depth,
+                                                      prm.gravity,
+                                                      half_step,
+                                                      h_left_face,
+                                                      h_right_face,
+                                                      u_left_face,
+                                                      u_right_face,
+                                                      bed_left_face,
+                                                      bed_right_face);
             break;
           case Limiter::van_leer:
-            reconstruct_second_order<Limiter::van_leer>(
-              depth, discharge, bed_elevation, inverse_spacing, inverse_width, prm.dry_depth,
-              prm.gravity, half_step, h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
-              bed_right_face);
+            reconstruct_second_order<Limiter::van_leer>(depth,
+                                                        discharge,
+                                                        bed_elevation,
+                                                        inverse_spacing,
+                                                        inverse_width,
+                                                        prm.dry_depth,
+                                                        prm.gravity,
+                                                        half_step,
+                                                        h_left_face,
+                                                        h_right_face,
+                                                        u_left_face,
+                                                        u_right_face,
+                                                        bed_left_face,
+                                                        bed_right_face);
             break;
           case Limiter::superbee:
-            reconstruct_second_order<Limiter::superbee>(
-              depth, discharge, bed_elevation, inverse_spacing, inverse_width, prm.dry_depth,
-              prm.gravity, half_step, h_left_face, h_right_face, u_left_face, u_right_face, bed_left_face,
-              bed_right_face);
+            reconstruct_second_order<Limiter::superbee>(depth,
+                                                        discharge,
+                                                        bed_elevation,
+                                                        inverse_spacing,
+                                                        inverse_width,
+                                                        prm.dry_depth,
+                                                        prm.gravity,
+                                                        half_step,
+                                                        h_left_face,
+                                                        h_right_face,
+                                                        u_left_face,
+                                                        u_right_face,
+                                                        bed_left_face,
+                                                        bed_right_face);
             break;
         }
     }
@@ -424,20 +461,36 @@ namespace slidewave
       for (unsigned int i = 0; i < n; ++i)
         {
           r_h[i]  = 0.;
-          r_hu[i] = -g * 0.5 * (h_left_face[i] + h_right_face[i]) *
-                    (bed_right_face[i] - bed_left_face[i]) * inverse_width[i];
+          r_hu[i] = -g * 0.5 * (h_left_face[i] + h_right_face[i])
+                    * (bed_right_face[i] - bed_left_face[i]) * inverse_width[i];
         }
 
       if (prm.flux == NumericalFlux::roe)
-        add_interface_fluxes<NumericalFlux::roe>(n, h_left_face, h_right_face, u_left_face,
-                                                 u_right_face, bed_left_face,
-                                                 bed_right_face, inverse_width, g,
-                                                 dry_depth, r_h, r_hu);
+        add_interface_fluxes<NumericalFlux::roe>(n,
+                                                 h_left_face,
+                                                 h_right_face,
+                                                 u_left_face,
+                                                 u_right_face,
+                                                 bed_left_face,
+                                                 bed_right_face,
+                                                 inverse_width,
+                                                 g,
+                                                 dry_depth,
+                                                 r_h,
+                                                 r_hu);
       else
-        add_interface_fluxes<NumericalFlux::hll>(n, h_left_face, h_right_face, u_left_face,
-                                                 u_right_face, bed_left_face,
-                                                 bed_right_face, inverse_width, g,
-                                                 dry_depth, r_h, r_hu);
+        add_interface_fluxes<NumericalFlux::hll>(n,
+                                                 h_left_face,
+                                                 h_right_face,
+                                                 u_left_face,
+                                                 u_right_face,
+                                                 bed_left_face,
+                                                 bed_right_face,
+                                                 inverse_width,
+                                                 g,
+                                                 dry_depth,
+                                                 r_h,
+                                                 r_hu);
 
       // The two ends: Riemann problem between the inner face state and the ghost state of
       // the boundary condition. Behind a wall the bed is mirrored (flat); behind an open end
@@ -458,29 +511,27 @@ namespace slidewave
           if (!is_wall && n > 1)
             {
               const unsigned int k = left_end ? 1 : n - 2;
-              b_ghost = bed_elevation[i] + (bed_elevation[i] - bed_elevation[k]) /
-                                             std::abs(center[i] - center[k]) /
-                                             inverse_width[i];
+              b_ghost              = bed_elevation[i]
+                        + (bed_elevation[i] - bed_elevation[k]) / std::abs(center[i] - center[k])
+                            / inverse_width[i];
             }
           double h_ghost, u_ghost;
-          boundary.ghost_state(h_inside, u_inside, t, g, dry_depth, left_end, h_ghost,
-                               u_ghost);
+          boundary.ghost_state(h_inside, u_inside, t, g, dry_depth, left_end, h_ghost, u_ghost);
 
           const double b_star       = std::max(b_inside, b_ghost);
           const double h_in_star    = std::max(0., h_inside + b_inside - b_star);
           const double h_ghost_star = std::max(0., h_ghost + b_ghost - b_star);
-          const double correction =
-            0.5 * g * (h_inside - h_in_star) * (h_inside + h_in_star);
+          const double correction   = 0.5 * g * (h_inside - h_in_star) * (h_inside + h_in_star);
 
-          double fh, fq;
+          double       fh, fq;
           const double q_in    = h_in_star * u_inside;
           const double q_ghost = h_ghost_star * u_ghost;
           if (left_end)
-            interface_flux_dispatch(prm.flux, h_ghost_star, q_ghost, h_in_star, q_in, g,
-                                    dry_depth, fh, fq);
+            interface_flux_dispatch(
+              prm.flux, h_ghost_star, q_ghost, h_in_star, q_in, g, dry_depth, fh, fq);
           else
-            interface_flux_dispatch(prm.flux, h_in_star, q_in, h_ghost_star, q_ghost, g,
-                                    dry_depth, fh, fq);
+            interface_flux_dispatch(
+              prm.flux, h_in_star, q_in, h_ghost_star, q_ghost, g, dry_depth, fh, fq);
           // A wall lets no water through: make that exact, not just round-off close.
           if (is_wall)
             fh = 0.;
@@ -586,9 +637,9 @@ namespace slidewave
     ShallowWater1D::describe_invalid_cell(const unsigned int i) const
     {
       return std::string(std::isfinite(h[i]) && std::isfinite(hu[i]) ? "negative water depth" :
-                                                                       "non-finite water state") +
-             " in water cell " + std::to_string(i) + " (x = " + to_string(water_mesh.center(i)) +
-             " m): h = " + to_string(h[i]) + ", hu = " + to_string(hu[i]);
+                                                                       "non-finite water state")
+             + " in water cell " + std::to_string(i) + " (x = " + to_string(water_mesh.center(i))
+             + " m): h = " + to_string(h[i]) + ", hu = " + to_string(hu[i]);
     }
 
 

@@ -1,7 +1,6 @@
+#include <cmath>
 #include <slidewave/core/input_error.h>
 #include <slidewave/water/water_boundary.h>
-
-#include <cmath>
 
 namespace slidewave
 {
@@ -35,7 +34,8 @@ namespace slidewave
 
     WaterBoundary::WaterBoundary(const Type type)
       : boundary_type(type)
-    {}
+    {
+    }
 
 
 
@@ -58,8 +58,8 @@ namespace slidewave
         {
           const std::string file = prm.get("Time series file");
           if (!file.empty())
-            series = std::make_shared<Table1D>(path + "/Time series file",
-                                               scene.resolve_path(file));
+            series
+              = std::make_shared<Table1D>(path + "/Time series file", scene.resolve_path(file));
           else
             expression = std::make_shared<ParsedExpression>(path + "/Value", prm.get("Value"));
           if (boundary_type == Type::depth && prescribed_value(0.) < 0.)
@@ -97,17 +97,13 @@ namespace slidewave
             h_ghost = h_inside;
             u_ghost = u_inside;
             return;
-          case Type::discharge:
-            {
+            case Type::discharge: {
               const double q = prescribed_value(t);
-              h_ghost        = h_inside > dry_depth ?
-                                 h_inside :
-                                 std::cbrt(q * q / gravity);
+              h_ghost        = h_inside > dry_depth ? h_inside : std::cbrt(q * q / gravity);
               u_ghost        = h_ghost > dry_depth ? q / h_ghost : 0.;
               return;
             }
-          case Type::depth:
-            {
+            case Type::depth: {
               h_ghost = std::max(prescribed_value(t), 0.);
               if (h_inside <= dry_depth)
                 {
@@ -116,9 +112,8 @@ namespace slidewave
                 }
               // The characteristic leaving the domain carries u - 2c (left end) or
               // u + 2c (right end) unchanged to the ghost state.
-              const double dc =
-                std::sqrt(gravity * h_ghost) - std::sqrt(gravity * h_inside);
-              u_ghost = left_end ? u_inside + 2. * dc : u_inside - 2. * dc;
+              const double dc = std::sqrt(gravity * h_ghost) - std::sqrt(gravity * h_inside);
+              u_ghost         = left_end ? u_inside + 2. * dc : u_inside - 2. * dc;
               return;
             }
         }

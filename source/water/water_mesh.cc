@@ -1,10 +1,8 @@
-#include <deal.II/base/utilities.h>
-
-#include <slidewave/core/input_error.h>
-#include <slidewave/water/water_mesh.h>
-
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/utilities.h>
+#include <slidewave/core/input_error.h>
+#include <slidewave/water/water_mesh.h>
 
 namespace slidewave
 {
@@ -35,7 +33,9 @@ namespace slidewave
                         "'Refined bands' in finer cells.");
       prm.declare_entry("Left end", "0", Double(), "Left end of the water domain [m].");
       prm.declare_entry("Right end", "1", Double(), "Right end of the water domain [m].");
-      prm.declare_entry("Number of cells", "100", Integer(1, 10000000),
+      prm.declare_entry("Number of cells",
+                        "100",
+                        Integer(1, 10000000),
                         "Cells of a uniform mesh (at most 10^7: the 1D solver lives on one "
                         "rank).");
       prm.declare_entry("Cell widths",
@@ -84,7 +84,7 @@ namespace slidewave
       if (type == "cell widths")
         {
           const std::string parameter = path + "/Cell widths";
-          const auto widths = parse_double_list(parameter, prm.get("Cell widths"));
+          const auto        widths    = parse_double_list(parameter, prm.get("Cell widths"));
           if (widths.empty())
             throw InputError(parameter, "", "at least one cell width");
           std::vector<double> interfaces{left};
@@ -97,9 +97,8 @@ namespace slidewave
           if (std::abs(interfaces.back() - right) > 1e-9 * (right - left))
             throw InputError(parameter,
                              prm.get("Cell widths"),
-                             "widths adding up to Right end - Left end = " +
-                               to_string(right - left) + " (they add up to " +
-                               to_string(interfaces.back() - left) + ")");
+                             "widths adding up to Right end - Left end = " + to_string(right - left)
+                               + " (they add up to " + to_string(interfaces.back() - left) + ")");
           interfaces.back() = right;
           return WaterMesh(interfaces, parameter);
         }
@@ -117,7 +116,7 @@ namespace slidewave
       for (const std::string &item :
            dealii::Utilities::split_string_list(prm.get("Refined bands"), ';'))
         {
-          const auto numbers = dealii::Utilities::split_string_list(item, ':');
+          const auto          numbers = dealii::Utilities::split_string_list(item, ':');
           std::vector<double> values;
           try
             {
@@ -128,8 +127,8 @@ namespace slidewave
             {
               values.clear();
             }
-          if (values.size() != 3 || !(values[1] > values[0]) || !(values[2] > 0.) ||
-              values[0] < left || values[1] > right)
+          if (values.size() != 3 || !(values[1] > values[0]) || !(values[2] > 0.)
+              || values[0] < left || values[1] > right)
             throw InputError(parameter,
                              prm.get("Refined bands"),
                              "bands 'from:to:width' separated by ';', with Left end <= from "
@@ -173,8 +172,8 @@ namespace slidewave
         if (!(interface_positions[i] > interface_positions[i - 1]))
           throw InputError(parameter,
                            to_string(interface_positions[i]),
-                           "strictly increasing interface positions (this one follows " +
-                             to_string(interface_positions[i - 1]) + ")");
+                           "strictly increasing interface positions (this one follows "
+                             + to_string(interface_positions[i - 1]) + ")");
     }
 
 
@@ -194,8 +193,8 @@ namespace slidewave
     unsigned int
     WaterMesh::cell_containing(const double x) const
     {
-      const auto upper =
-        std::upper_bound(interface_positions.begin(), interface_positions.end(), x);
+      const auto upper
+        = std::upper_bound(interface_positions.begin(), interface_positions.end(), x);
       if (upper == interface_positions.begin())
         return 0;
       return std::min<unsigned int>(upper - interface_positions.begin() - 1, n_cells() - 1);

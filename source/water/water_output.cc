@@ -1,10 +1,8 @@
-#include <slidewave/core/input_error.h>
-#include <slidewave/water/water_output.h>
-
 #include <deal.II/base/utilities.h>
-
 #include <exception>
 #include <fstream>
+#include <slidewave/core/input_error.h>
+#include <slidewave/water/water_output.h>
 #include <stdexcept>
 
 namespace slidewave
@@ -51,9 +49,10 @@ namespace slidewave
               throw InputError(parameter, text, "a comma-separated list of positions");
             }
           if (x < left || x > right)
-            throw InputError(parameter, item,
-                             "positions inside the water domain [" + to_string(left) + ", " +
-                               to_string(right) + "]");
+            throw InputError(parameter,
+                             item,
+                             "positions inside the water domain [" + to_string(left) + ", "
+                               + to_string(right) + "]");
           gauge_positions.push_back(x);
         }
     }

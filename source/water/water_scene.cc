@@ -1,23 +1,21 @@
+#include <cmath>
+#include <cstdio>
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
-
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
 #include <slidewave/core/format.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/core/progress_reporter.h>
-#include <slidewave/core/timed_run.h>
 #include <slidewave/core/statistics.h>
+#include <slidewave/core/timed_run.h>
 #include <slidewave/water/water_output.h>
 #include <slidewave/water/water_scene.h>
-
-#include <cmath>
-#include <exception>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
 #include <utility>
 
 namespace slidewave
@@ -79,19 +77,27 @@ namespace slidewave
                             "gives over the current bed, (V + sum B dx) / L, everywhere wet "
                             "(the quasi-static limit under a slowly moving bed).");
           prm.declare_entry("Left depth", "1", Double(0.), "Dam break: depth left of the dam [m].");
-          prm.declare_entry("Right depth", "0.5", Double(0.),
+          prm.declare_entry("Right depth",
+                            "0.5",
+                            Double(0.),
                             "Dam break: depth right of the dam [m]; 0 for a dry bed.");
           prm.declare_entry("Dam position", "0.5", Double(), "Dam break: position of the dam [m].");
           prm.declare_entry("Bowl depth", "4", Double(0.), "Thacker: D0 [m].");
           prm.declare_entry("Bowl half width", "10", Double(0.), "Thacker: L [m].");
           prm.declare_entry("Amplitude", "2", Double(0.), "Thacker: A [m].");
-          prm.declare_entry("Tolerance on L1 depth error", "0", Double(0.),
+          prm.declare_entry("Tolerance on L1 depth error",
+                            "0",
+                            Double(0.),
                             "If > 0, the run fails (exit status 3) when the L1 depth error "
                             "exceeds it.");
-          prm.declare_entry("Tolerance on maximum errors", "0", Double(0.),
+          prm.declare_entry("Tolerance on maximum errors",
+                            "0",
+                            Double(0.),
                             "If > 0, the run fails (exit status 3) when the maximum error of "
                             "the free surface or of the discharge exceeds it.");
-          prm.declare_entry("Tolerance on volume balance", "0", Double(0.),
+          prm.declare_entry("Tolerance on volume balance",
+                            "0",
+                            Double(0.),
                             "If > 0, the run fails (exit status 3) when, at any step, the "
                             "water volume differs from the initial volume plus the boundary "
                             "inflow by more than this fraction of the initial volume.");
@@ -103,8 +109,7 @@ namespace slidewave
 
 
 
-    WaterScene::WaterScene(const SceneParameters &scene_parameters,
-                           dealii::ParameterHandler &prm)
+    WaterScene::WaterScene(const SceneParameters &scene_parameters, dealii::ParameterHandler &prm)
       : scene(scene_parameters)
       , is_writer(dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     {
@@ -126,8 +131,8 @@ namespace slidewave
           prm.leave_subsection();
         }
 
-      water = std::make_unique<ShallowWater1D>(mesh, solver_parameters, boundaries[0],
-                                               boundaries[1]);
+      water
+        = std::make_unique<ShallowWater1D>(mesh, solver_parameters, boundaries[0], boundaries[1]);
       const unsigned int n = mesh.n_cells();
 
       // The bed, sampled at cell centres.
@@ -157,8 +162,10 @@ namespace slidewave
       initial_discharge = water->discharge();
 
       prm.enter_subsection("Gauges");
-      gauges.parse_positions(section + "/Gauges/Positions", prm.get("Positions"),
-                             mesh.left_end(), mesh.right_end());
+      gauges.parse_positions(section + "/Gauges/Positions",
+                             prm.get("Positions"),
+                             mesh.left_end(),
+                             mesh.right_end());
       prm.leave_subsection();
 
       prm.enter_subsection("Verification");
@@ -170,11 +177,12 @@ namespace slidewave
         tolerance_linf         = prm.get_double("Tolerance on maximum errors");
         if (type == "dam break")
           {
-            exact_solution = ExactSolution::dam_break;
+            exact_solution   = ExactSolution::dam_break;
             const double h_l = prm.get_double("Left depth");
             const double h_r = prm.get_double("Right depth");
             if (!(h_l > h_r))
-              throw InputError(section + "/Verification/Right depth", to_string(h_r),
+              throw InputError(section + "/Verification/Right depth",
+                               to_string(h_r),
                                "a depth smaller than 'Left depth' = " + to_string(h_l));
             dam_break.emplace(h_l, h_r, prm.get_double("Dam position"), g);
           }
@@ -185,8 +193,10 @@ namespace slidewave
         else if (type == "thacker")
           {
             exact_solution = ExactSolution::thacker;
-            thacker.emplace(prm.get_double("Bowl depth"), prm.get_double("Bowl half width"),
-                            prm.get_double("Amplitude"), g);
+            thacker.emplace(prm.get_double("Bowl depth"),
+                            prm.get_double("Bowl half width"),
+                            prm.get_double("Amplitude"),
+                            g);
           }
       }
       prm.leave_subsection();
@@ -212,8 +222,7 @@ namespace slidewave
           case ExactSolution::thacker:
             thacker->evaluate(x, time, depth, velocity);
             break;
-          default:
-            {
+            default: {
               const unsigned int i = water->mesh().cell_containing(x);
               depth                = initial_depth[i];
               velocity             = depth > 0. ? initial_discharge[i] / depth : 0.;
@@ -238,8 +247,8 @@ namespace slidewave
           double bed_volume = 0.;
           for (unsigned int i = 0; i < mesh.n_cells(); ++i)
             bed_volume += bed[i] * mesh.width(i);
-          still_level = (water->water_volume() + bed_volume) /
-                        (mesh.interfaces().back() - mesh.interfaces().front());
+          still_level = (water->water_volume() + bed_volume)
+                        / (mesh.interfaces().back() - mesh.interfaces().front());
         }
       double l1_depth = 0., l1_velocity = 0., linf_eta = 0., linf_discharge = 0.;
       for (unsigned int i = 0; i < mesh.n_cells(); ++i)
@@ -269,8 +278,7 @@ namespace slidewave
               << "  L1 error depth          = " << format("%.8e", l1_depth) << " m^2\n"
               << "  L1 error velocity       = " << format("%.8e", l1_velocity) << " m^2/s\n"
               << "  max error free surface  = " << format("%.3e", linf_eta) << " m\n"
-              << "  max error discharge     = " << format("%.3e", linf_discharge)
-              << " m^2/s\n";
+              << "  max error discharge     = " << format("%.3e", linf_discharge) << " m^2/s\n";
           std::ofstream csv(water_directory + "/errors.csv");
           csv.precision(12);
           csv << "time,cells,l1_depth,l1_velocity,max_free_surface,max_discharge\n"
@@ -313,9 +321,8 @@ namespace slidewave
     bool
     WaterScene::run()
     {
-      return run_with_timer(scene.test_mode, [this](dealii::TimerOutput &timer) {
-        return run_time_loop(timer);
-      });
+      return run_with_timer(scene.test_mode,
+                            [this](dealii::TimerOutput &timer) { return run_time_loop(timer); });
     }
 
 
@@ -324,38 +331,38 @@ namespace slidewave
     WaterScene::run_time_loop(dealii::TimerOutput &timer)
     {
       using dealii::TimerOutput;
-      const bool         test_mode = scene.test_mode;
+      const bool                 test_mode = scene.test_mode;
       dealii::ConditionalOStream pcout(std::cout, is_writer && !test_mode);
 
       water_directory = scene.output_directory + "/water";
       if (is_writer)
         std::filesystem::create_directories(water_directory);
 
-      pcout << "Shallow water: " << water->n_cells() << " cells on ["
-            << water->mesh().left_end() << ", " << water->mesh().right_end()
-            << "] m, widths " << water->mesh().min_width() << " to "
-            << water->mesh().max_width() << " m; output in " << scene.output_directory
+      pcout << "Shallow water: " << water->n_cells() << " cells on [" << water->mesh().left_end()
+            << ", " << water->mesh().right_end() << "] m, widths " << water->mesh().min_width()
+            << " to " << water->mesh().max_width() << " m; output in " << scene.output_directory
             << std::endl;
 
       Statistics statistics;
-      statistics.open(scene.output_directory + "/statistics.csv", is_writer,
+      statistics.open(scene.output_directory + "/statistics.csv",
+                      is_writer,
                       is_writer && test_mode ? &std::cout : nullptr);
 
       gauges.open(water_directory + "/gauges.csv", is_writer);
 
       ProgressReporter progress(is_writer && !test_mode ? &std::cout : nullptr,
-                                scene.start_time, scene.end_time);
+                                scene.start_time,
+                                scene.end_time);
 
-      double       time         = scene.start_time;
-      unsigned int step         = 0;
-      unsigned int output_index = 0;
-      double       dt           = 0.;
-      const double end_time     = scene.end_time;
-      const double time_tolerance = 1e-12 * (end_time - scene.start_time);
+      double       time               = scene.start_time;
+      unsigned int step               = 0;
+      unsigned int output_index       = 0;
+      double       dt                 = 0.;
+      const double end_time           = scene.end_time;
+      const double time_tolerance     = 1e-12 * (end_time - scene.start_time);
       double       max_volume_balance = 0.;
-      double       next_output = scene.output_interval > 0. ?
-                                   scene.start_time + scene.output_interval :
-                                   end_time;
+      double       next_output
+        = scene.output_interval > 0. ? scene.start_time + scene.output_interval : end_time;
 
       write_profile(output_index++, time);
       gauges.record(time, *water);
@@ -380,15 +387,16 @@ namespace slidewave
           if (moving_bed)
             {
               TimerOutput::Scope scope(timer, "water: bed update");
-              const double t_new = reaches_target ? target : time + dt;
+              const double       t_new = reaches_target ? target : time + dt;
               for (unsigned int i = 0; i < bed_work.size(); ++i)
                 {
                   bed_work[i] = moving_bed->value(water->mesh().center(i), t_new);
                   if (!std::isfinite(bed_work[i]))
-                    throw RunFailure("at step " + std::to_string(step + 1) + ", t = " +
-                                     to_string(t_new) + " s: the moving bed B(x, t) is not "
-                                     "finite at x = " + to_string(water->mesh().center(i)) +
-                                     " m");
+                    throw RunFailure("at step " + std::to_string(step + 1)
+                                     + ", t = " + to_string(t_new)
+                                     + " s: the moving bed B(x, t) is not "
+                                       "finite at x = "
+                                     + to_string(water->mesh().center(i)) + " m");
                 }
               water->set_bed(bed_work);
             }
@@ -401,15 +409,14 @@ namespace slidewave
 
           const unsigned int bad = water->find_invalid_cell();
           if (bad < water->n_cells())
-            throw RunFailure("at step " + std::to_string(step) + ", t = " + to_string(time) +
-                             " s: " + water->describe_invalid_cell(bad));
+            throw RunFailure("at step " + std::to_string(step) + ", t = " + to_string(time)
+                             + " s: " + water->describe_invalid_cell(bad));
 
           if (tolerance_volume > 0.)
-            max_volume_balance =
-              std::max(max_volume_balance,
-                       std::abs(water->water_volume() - initial_volume -
-                                water->net_boundary_inflow()) /
-                         initial_volume);
+            max_volume_balance = std::max(max_volume_balance,
+                                          std::abs(water->water_volume() - initial_volume
+                                                   - water->net_boundary_inflow())
+                                            / initial_volume);
 
           {
             TimerOutput::Scope scope(timer, "water: output");
@@ -438,8 +445,8 @@ namespace slidewave
 
       if (is_writer && !test_mode)
         std::cout << "Finished " << step << " steps; water volume changed by "
-                  << format("%.3e", water->water_volume() - initial_volume -
-                                      water->net_boundary_inflow())
+                  << format("%.3e",
+                            water->water_volume() - initial_volume - water->net_boundary_inflow())
                   << " m^2 beyond the boundary inflow." << std::endl;
       bool within = report_errors(time);
       if (tolerance_volume > 0.)
@@ -448,8 +455,8 @@ namespace slidewave
           within        = within && ok;
           if (is_writer)
             std::cout << "Largest relative water volume balance error = "
-                      << format("%.3e", max_volume_balance) << " <= "
-                      << format("%.3e", tolerance_volume) << ": " << (ok ? "yes" : "no")
+                      << format("%.3e", max_volume_balance)
+                      << " <= " << format("%.3e", tolerance_volume) << ": " << (ok ? "yes" : "no")
                       << '\n';
         }
       return within;

@@ -1,7 +1,6 @@
+#include <cmath>
 #include <slidewave/core/input_error.h>
 #include <slidewave/water/water_state_parameters.h>
-
-#include <cmath>
 
 namespace slidewave
 {
@@ -18,18 +17,26 @@ namespace slidewave
                         "CSV file 'Table file' (x,B), interpolated linearly. In a coupled "
                         "scene this is the fixed terrain; the bed is the higher of it and "
                         "the soil surface.");
-      prm.declare_entry("Function expression", "0", Anything(),
+      prm.declare_entry("Function expression",
+                        "0",
+                        Anything(),
                         "Bed elevation B(x) [m], an expression of x (and of t with "
                         "'Time dependent').");
-      prm.declare_entry("Time dependent", "false", Bool(),
+      prm.declare_entry("Time dependent",
+                        "false",
+                        Bool(),
                         "For 'function': the bed moves, B(x, t), re-sampled at the cell "
                         "centres before every step at the step's end time. The water "
                         "depth is kept, so the volume is unchanged and the free surface "
                         "moves with the bed (as under a sliding mass in the coupled "
                         "scenes). Not in coupled scenes, where the soil moves the bed.");
-      prm.declare_entry("Function constants", "", Anything(),
+      prm.declare_entry("Function constants",
+                        "",
+                        Anything(),
                         "Constants used in the expression, e.g. 'a=0.2, b=0.05'.");
-      prm.declare_entry("Table file", "", Anything(),
+      prm.declare_entry("Table file",
+                        "",
+                        Anything(),
                         "CSV file x,B for 'table' (relative to the scene file).");
     }
 
@@ -45,7 +52,8 @@ namespace slidewave
       if (prm.get("Type") == "table")
         {
           if (is_time_dependent)
-            throw InputError(path + "/Time dependent", "true",
+            throw InputError(path + "/Time dependent",
+                             "true",
                              "false with 'Type = table' (a moving bed is a function B(x, t))");
           table = std::make_unique<Table1D>(path + "/Table file",
                                             scene.resolve_path(prm.get("Table file")));
@@ -74,7 +82,8 @@ namespace slidewave
         {
           bed[i] = value(mesh.center(i), t);
           if (!std::isfinite(bed[i]))
-            throw InputError(path, "B(" + to_string(mesh.center(i)) + ")",
+            throw InputError(path,
+                             "B(" + to_string(mesh.center(i)) + ")",
                              "a bed elevation that is finite everywhere");
         }
       return bed;
@@ -91,11 +100,17 @@ namespace slidewave
                         Selection("water depth|free surface"),
                         "Whether 'Function expression' gives the water depth h or the "
                         "free-surface elevation eta = h + B (then h = max(eta - B, 0)).");
-      prm.declare_entry("Function expression", "1", Anything(),
+      prm.declare_entry("Function expression",
+                        "1",
+                        Anything(),
                         "Initial h(x) or eta(x) [m], an expression of x.");
-      prm.declare_entry("Velocity expression", "0", Anything(),
+      prm.declare_entry("Velocity expression",
+                        "0",
+                        Anything(),
                         "Initial velocity u(x) [m/s], an expression of x.");
-      prm.declare_entry("Function constants", "", Anything(),
+      prm.declare_entry("Function constants",
+                        "",
+                        Anything(),
                         "Constants used in both expressions, e.g. 'x0=0.5'.");
     }
 
@@ -108,10 +123,11 @@ namespace slidewave
       path                        = condition_path;
       level_text                  = prm.get("Function expression");
       const std::string constants = prm.get("Function constants");
-      level    = std::make_unique<ParsedExpression>(path + "/Function expression", level_text,
-                                                 constants);
-      velocity = std::make_unique<ParsedExpression>(path + "/Velocity expression",
-                                                    prm.get("Velocity expression"), constants);
+      level
+        = std::make_unique<ParsedExpression>(path + "/Function expression", level_text, constants);
+      velocity        = std::make_unique<ParsedExpression>(path + "/Velocity expression",
+                                                    prm.get("Velocity expression"),
+                                                    constants);
       is_free_surface = prm.get("Variable") == "free surface";
     }
 
@@ -133,14 +149,16 @@ namespace slidewave
           const double v = level->value(x, t);
           const double u = velocity->value(x, t);
           if (!std::isfinite(v) || !std::isfinite(u))
-            throw InputError(path + "/Function expression", level_text,
-                             "expressions giving finite values everywhere (not at x = " +
-                               to_string(x) + ")");
+            throw InputError(path + "/Function expression",
+                             level_text,
+                             "expressions giving finite values everywhere (not at x = "
+                               + to_string(x) + ")");
           depth[i] = is_free_surface ? std::max(v - bed[i], 0.) : v;
           if (depth[i] < 0.)
-            throw InputError(path + "/Function expression", level_text,
-                             "a water depth >= 0 everywhere (it is " + to_string(v) +
-                               " at x = " + to_string(x) + ")");
+            throw InputError(path + "/Function expression",
+                             level_text,
+                             "a water depth >= 0 everywhere (it is " + to_string(v)
+                               + " at x = " + to_string(x) + ")");
           discharge[i] = depth[i] * u;
         }
     }

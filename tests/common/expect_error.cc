@@ -5,29 +5,27 @@
 // test harness then compares the printed message and status with the expected output, so a
 // scene that is accepted fails at the run stage and a changed message fails at the diff.
 #include <deal.II/base/mpi.h>
-
-#include <slidewave/core/application.h>
-
 #include <filesystem>
 #include <iostream>
+#include <slidewave/core/application.h>
 #include <sstream>
 
 int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::vector<std::string> arguments(argv + 1, argv + argc);
+  const std::vector<std::string>           arguments(argv + 1, argv + argc);
 
   std::ostringstream out, err;
-  const int status = slidewave::run_application(arguments, out, err);
+  const int          status = slidewave::run_application(arguments, out, err);
 
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     {
       std::string message = err.str();
       for (const auto &argument : arguments)
         {
-          const std::string directory =
-            std::filesystem::path(argument).parent_path().string() + "/";
+          const std::string directory
+            = std::filesystem::path(argument).parent_path().string() + "/";
           if (directory.size() > 1)
             for (auto at = message.find(directory); at != std::string::npos;
                  at      = message.find(directory))

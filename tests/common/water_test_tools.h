@@ -3,12 +3,11 @@
 #ifndef slidewave_tests_water_test_tools_h
 #define slidewave_tests_water_test_tools_h
 
-#include <slidewave/water/dam_break_solutions.h>
-#include <slidewave/water/shallow_water_1d.h>
-
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <slidewave/water/dam_break_solutions.h>
+#include <slidewave/water/shallow_water_1d.h>
 #include <string>
 #include <vector>
 
@@ -87,7 +86,7 @@ namespace slidewave_tests
 
   /** Sets h and u from functions of x at the cell centres. */
   inline void
-  set_state(ShallowWater1D                       &water,
+  set_state(ShallowWater1D                      &water,
             const std::function<double(double)> &depth,
             const std::function<double(double)> &velocity)
   {

@@ -12,11 +12,10 @@
 //     shoulder or dip below the toe (an unlimited cubic through a step overshoots by
 //     several per cent of the step);
 //  4. constant beyond the ends.
-#include <slidewave/coupling/monotone_cubic.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <slidewave/coupling/monotone_cubic.h>
 #include <vector>
 
 using slidewave::coupling::MonotoneCubic;
@@ -33,8 +32,10 @@ namespace
   }
 
   void
-  check_data(const char *name, const std::vector<double> &x, const std::vector<double> &y,
-             const bool monotone_pieces)
+  check_data(const char                *name,
+             const std::vector<double> &x,
+             const std::vector<double> &y,
+             const bool                 monotone_pieces)
   {
     std::printf("%s (%zu samples)\n", name, x.size());
     MonotoneCubic f;
@@ -48,10 +49,10 @@ namespace
             // Second-order one-sided differences: their error is f''' d^2 ~ 1e-9 here,
             // the round-off 1e-16 / d ~ 1e-9.
             const double d = 1e-6 * (x[k + 1] - x[k - 1]);
-            const double left =
-              (3. * f.value(x[k]) - 4. * f.value(x[k] - d) + f.value(x[k] - 2. * d)) / (2. * d);
-            const double right =
-              (-3. * f.value(x[k]) + 4. * f.value(x[k] + d) - f.value(x[k] + 2. * d)) / (2. * d);
+            const double left
+              = (3. * f.value(x[k]) - 4. * f.value(x[k] - d) + f.value(x[k] - 2. * d)) / (2. * d);
+            const double right
+              = (-3. * f.value(x[k]) + 4. * f.value(x[k] + d) - f.value(x[k] + 2. * d)) / (2. * d);
             kink = std::max(kink, std::abs(left - right));
           }
         if (k + 1 < x.size())

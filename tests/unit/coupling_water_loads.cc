@@ -19,17 +19,15 @@
 // The sums run over a few hundred points: checked to 1e-10 relative (round-off). The
 // interface's own total (load_on_soil) and the sum of the point forces agree. On 1 and 2
 // ranks (same numbers: the points of a column may sit on different ranks).
+#include <cmath>
+#include <cstdio>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-
+#include <limits>
 #include <slidewave/coupling/soil_water_interface.h>
 #include <slidewave/mpm/material_point_solver.h>
 #include <slidewave/mpm/particle_properties.h>
 #include <slidewave/water/shallow_water_1d.h>
-
-#include <cmath>
-#include <cstdio>
-#include <limits>
 #include <vector>
 
 using namespace slidewave;
@@ -85,22 +83,25 @@ end
   }
 
   void
-  check_still_water(mpm::MaterialPointSolver &soil, const double level,
-                    const double exact_x, const double exact_y,
+  check_still_water(mpm::MaterialPointSolver   &soil,
+                    const double                level,
+                    const double                exact_x,
+                    const double                exact_y,
                     const coupling::SoilSurface surface)
   {
-    const water::WaterMesh         mesh = water::WaterMesh::uniform(0., 2., 20);
-    water::ShallowWater1D          water(mesh, water::SolverParameters());
-    const std::vector<double>      terrain(20, 0.);
-    coupling::SoilWaterInterface   interface(mesh.interfaces(), mesh, terrain, terrain, 1000.,
-                                           surface, 0.);
+    const water::WaterMesh       mesh = water::WaterMesh::uniform(0., 2., 20);
+    water::ShallowWater1D        water(mesh, water::SolverParameters());
+    const std::vector<double>    terrain(20, 0.);
+    coupling::SoilWaterInterface interface(
+      mesh.interfaces(), mesh, terrain, terrain, 1000., surface, 0.);
     interface.update_surface(soil);
-    const std::vector<double> &bed = interface.bed();
+    const std::vector<double> &bed       = interface.bed();
     double                     bed_error = 0.;
     for (unsigned int i = 0; i < 20; ++i)
       bed_error = std::max(bed_error, std::abs(bed[i] - (mesh.center(i) < 1. ? 1. : 0.)));
     if (root)
-      std::printf("still water at eta = %.1f m, soil surface = %s\n", level,
+      std::printf("still water at eta = %.1f m, soil surface = %s\n",
+                  level,
                   surface == coupling::SoilSurface::top ? "top" : "envelope");
     check(bed_error < 1e-14, "bed = block top (1 m) over the block, floor beside it");
     water.set_bed(bed);
@@ -129,16 +130,19 @@ end
     share_min = dealii::Utilities::MPI::min(share_min, MPI_COMM_WORLD);
     share_max = dealii::Utilities::MPI::max(share_max, MPI_COMM_WORLD);
     if (root)
-      std::printf("  load on the soil: (%.6f, %.6f) N/m, exact (%.6f, %.6f)\n", total[0],
-                  total[1], exact_x, exact_y);
+      std::printf("  load on the soil: (%.6f, %.6f) N/m, exact (%.6f, %.6f)\n",
+                  total[0],
+                  total[1],
+                  exact_x,
+                  exact_y);
     const double scale = std::abs(exact_x) + std::abs(exact_y);
     check(std::abs(total[0] - exact_x) < 1e-10 * scale, "thrust on the face = hydrostatic");
     check(std::abs(total[1] - exact_y) < 1e-10 * scale, "vertical load = water's weight");
     check((own - total).norm() < 1e-10 * scale, "interface total = sum of point forces");
     check(stray < 1e-10 * scale, "no horizontal force away from the face");
     if (exact_y != 0.)
-      check(std::abs(share_min - share_max) < 1e-10 * scale &&
-              std::abs(share_min - exact_y / 20.) < 1e-10 * scale,
+      check(std::abs(share_min - share_max) < 1e-10 * scale
+              && std::abs(share_min - exact_y / 20.) < 1e-10 * scale,
             "weight shared equally by the 20 surface points");
   }
 } // namespace
@@ -154,8 +158,7 @@ main(int argc, char **argv)
     const double rho_g = 1000. * 9.81;
     for (const auto surface : {coupling::SoilSurface::top, coupling::SoilSurface::envelope})
       {
-        check_still_water(soil, 1.5, -rho_g * (1.5 * 1.5 - 0.5 * 0.5) / 2., -rho_g * 0.5,
-                          surface);
+        check_still_water(soil, 1.5, -rho_g * (1.5 * 1.5 - 0.5 * 0.5) / 2., -rho_g * 0.5, surface);
         check_still_water(soil, 1.0, -rho_g * 0.5, 0., surface);
       }
   }

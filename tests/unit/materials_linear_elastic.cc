@@ -65,8 +65,7 @@ namespace
     R[1][0] = std::sin(theta);
     R[1][1] = std::cos(theta);
     R[2][2] = 1.;
-    return dealii::symmetrize(R * dealii::Tensor<2, 3>(sigma)
-                              * dealii::transpose(R));
+    return dealii::symmetrize(R * dealii::Tensor<2, 3>(sigma) * dealii::transpose(R));
   }
 
   /** The angle [rad] in [0, pi) of the major principal direction in the xy
@@ -74,8 +73,7 @@ namespace
   double
   principal_angle(const SymmetricTensor<2, 3> &sigma)
   {
-    const double angle
-      = 0.5 * std::atan2(2. * sigma[0][1], sigma[0][0] - sigma[1][1]);
+    const double angle = 0.5 * std::atan2(2. * sigma[0][1], sigma[0][0] - sigma[1][1]);
     return angle < 0. ? angle + M_PI : angle;
   }
 } // namespace
@@ -87,25 +85,20 @@ main()
   const double        K      = elastic.bulk_modulus();
   const double        G      = elastic.shear_modulus();
   const double        lambda = elastic.lame_lambda();
-  std::printf("K = %.6f  G = %.6f  lambda = %.6f  K + 4G/3 = %.6f\n",
-              K,
-              G,
-              lambda,
-              elastic.p_wave_modulus());
+  std::printf(
+    "K = %.6f  G = %.6f  lambda = %.6f  K + 4G/3 = %.6f\n", K, G, lambda, elastic.p_wave_modulus());
 
   std::printf("\n* Uniaxial strain eps_xx = 1e-3\n");
   SymmetricTensor<2, 3> strain;
   strain[0][0]                         = 1e-3;
   const SymmetricTensor<2, 3> uniaxial = elastic.stress_increment(strain);
   print("stress", uniaxial);
-  std::printf(
-    "expected: xx = (lambda + 2G) eps = %.6f  yy = zz = lambda eps = %.6f\n",
-    (lambda + 2. * G) * 1e-3,
-    lambda * 1e-3);
+  std::printf("expected: xx = (lambda + 2G) eps = %.6f  yy = zz = lambda eps = %.6f\n",
+              (lambda + 2. * G) * 1e-3,
+              lambda * 1e-3);
   check(std::abs(uniaxial[0][0] - (lambda + 2. * G) * 1e-3) < 1e-9
           && std::abs(uniaxial[1][1] - lambda * 1e-3) < 1e-9
-          && std::abs(uniaxial[2][2] - lambda * 1e-3) < 1e-9
-          && uniaxial[0][1] == 0.,
+          && std::abs(uniaxial[2][2] - lambda * 1e-3) < 1e-9 && uniaxial[0][1] == 0.,
         "uniaxial strain stress matches Hooke's law within 1e-9 Pa");
 
   std::printf("\n* Pure shear eps_xy = 1e-3 (engineering shear strain 2e-3)\n");
@@ -113,10 +106,9 @@ main()
   strain[0][1]                      = 1e-3;
   const SymmetricTensor<2, 3> shear = elastic.stress_increment(strain);
   print("stress", shear);
-  std::printf("expected: xy = 2 G eps_xy = %.6f, no normal stress\n",
-              2. * G * 1e-3);
-  check(std::abs(shear[0][1] - 2. * G * 1e-3) < 1e-9 && shear[0][0] == 0.
-          && shear[1][1] == 0. && shear[2][2] == 0.,
+  std::printf("expected: xy = 2 G eps_xy = %.6f, no normal stress\n", 2. * G * 1e-3);
+  check(std::abs(shear[0][1] - 2. * G * 1e-3) < 1e-9 && shear[0][0] == 0. && shear[1][1] == 0.
+          && shear[2][2] == 0.,
         "pure shear gives shear stress only, within 1e-9 Pa");
 
   std::printf("\n* Plane strain eps_xx = 1e-3, eps_yy = -4e-4, eps_xy = 2e-4, "
@@ -127,10 +119,8 @@ main()
   strain[0][1]                      = 2e-4;
   const SymmetricTensor<2, 3> plane = elastic.stress_increment(strain);
   print("stress", plane);
-  std::printf("nu (sigma_xx + sigma_yy) = %.6f\n",
-              0.3 * (plane[0][0] + plane[1][1]));
-  check(std::abs(plane[2][2] - 0.3 * (plane[0][0] + plane[1][1]))
-          < 1e-12 * max_abs(plane),
+  std::printf("nu (sigma_xx + sigma_yy) = %.6f\n", 0.3 * (plane[0][0] + plane[1][1]));
+  check(std::abs(plane[2][2] - 0.3 * (plane[0][0] + plane[1][1])) < 1e-12 * max_abs(plane),
         "sigma_zz = nu (sigma_xx + sigma_yy) within 1e-12 relative");
   check(max_abs(elastic.strain_increment(plane) - strain) < 1e-15,
         "strain_increment() inverts stress_increment() within 1e-15");
@@ -144,23 +134,17 @@ main()
       // increment W_xy = 1/2 (dv_x/dy - dv_y/dx) dt = -Omega dt = -theta.
       SymmetricTensor<2, 3> turned = sigma;
       apply_jaumann_rotation(turned, -theta);
-      std::printf("theta = %.1e counterclockwise (W_xy = %.1e)\n",
-                  theta,
-                  -theta);
+      std::printf("theta = %.1e counterclockwise (W_xy = %.1e)\n", theta, -theta);
       print("  rotated stress", turned);
       print("  exact R sigma R^T", rotated(sigma, theta));
-      std::printf("  principal direction / theta = %.6f\n",
-                  principal_angle(turned) / theta);
-      std::printf(
-        "  max |difference to R sigma R^T| / (theta^2 |sigma|) = %.6f\n",
-        max_abs(turned - rotated(sigma, theta)) / (theta * theta * 1e5));
+      std::printf("  principal direction / theta = %.6f\n", principal_angle(turned) / theta);
+      std::printf("  max |difference to R sigma R^T| / (theta^2 |sigma|) = %.6f\n",
+                  max_abs(turned - rotated(sigma, theta)) / (theta * theta * 1e5));
       check(std::abs(principal_angle(turned) / theta - 1.) < 1e-5,
             "  turned counterclockwise by theta within 1e-5 relative");
-      check(max_abs(turned - rotated(sigma, theta))
-              < 1.01 * theta * theta * 1e5,
+      check(max_abs(turned - rotated(sigma, theta)) < 1.01 * theta * theta * 1e5,
             "  first-order accurate: |difference| <= 1.01 theta^2 |sigma|");
-      check(dealii::trace(turned) == dealii::trace(sigma),
-            "  I1 unchanged exactly");
+      check(dealii::trace(turned) == dealii::trace(sigma), "  I1 unchanged exactly");
       std::printf("  (J2 after - J2 before) / (J2 theta^2) = %.6f\n",
                   (j2(turned) - j2(sigma)) / (j2(sigma) * theta * theta));
     }
@@ -172,14 +156,12 @@ main()
     apply_jaumann_rotation(turned, -M_PI / 2000.);
   std::printf("principal direction after the steps = %.6f degrees\n",
               principal_angle(turned) * 180. / M_PI);
-  std::printf(
-    "relative drift of J2 (first-order integration, ~3 pi^2/4000) = %.6f\n",
-    j2(turned) / j2(sigma) - 1.);
+  std::printf("relative drift of J2 (first-order integration, ~3 pi^2/4000) = %.6f\n",
+              j2(turned) / j2(sigma) - 1.);
   check(std::abs(principal_angle(turned) - M_PI / 2.) < 1e-5,
         "principal direction at 90 degrees within 1e-5 rad");
 
-  std::printf(
-    "\n* A linear elastic Material: rotation of the old stress, then Hooke\n");
+  std::printf("\n* A linear elastic Material: rotation of the old stress, then Hooke\n");
   dealii::ParameterHandler prm;
   MaterialParameters::declare_parameters(prm);
   prm.set("Name", "rock");
@@ -190,9 +172,7 @@ main()
   MaterialParameters parameters;
   parameters.parse_parameters(prm, "Material");
   const Material material(parameters);
-  std::printf("density = %.6f  K + 4G/3 = %.6f\n",
-              material.density(),
-              material.p_wave_modulus());
+  std::printf("density = %.6f  K + 4G/3 = %.6f\n", material.density(), material.p_wave_modulus());
   SymmetricTensor<2, 3> updated        = sigma;
   double                plastic_strain = 0.;
   const double          spin_increment = -1e-3;
@@ -204,7 +184,6 @@ main()
   check(max_abs(updated - expected) == 0. && plastic_strain == 0.,
         "update_stress = rotation then Hooke, no plastic strain");
 
-  std::printf("\n%s\n",
-              all_passed ? "all checks passed" : "SOME CHECKS FAILED");
+  std::printf("\n%s\n", all_passed ? "all checks passed" : "SOME CHECKS FAILED");
   return all_passed ? 0 : 1;
 }

@@ -24,8 +24,7 @@ namespace
    * the outcome; @p should_pass says whether the values are valid.
    */
   void
-  try_values(const std::vector<std::pair<std::string, std::string>> &values,
-             const bool should_pass)
+  try_values(const std::vector<std::pair<std::string, std::string>> &values, const bool should_pass)
   {
     dealii::ParameterHandler prm;
     prm.enter_subsection("Materials");
@@ -36,8 +35,7 @@ namespace
 
     std::string description;
     for (const auto &[entry, value] : values)
-      description
-        += (description.empty() ? "" : ", ") + entry + " = '" + value + "'";
+      description += (description.empty() ? "" : ", ") + entry + " = '" + value + "'";
     std::printf("%s\n", description.empty() ? "defaults" : description.c_str());
 
     MaterialParameters parameters;
@@ -94,16 +92,12 @@ main()
   try_values({{"Name", "clay"}, {"Poisson ratio", "-1"}}, false);
   try_values({{"Name", "clay"}, {"Friction angle", "95"}}, false);
   try_values({{"Name", "clay"}, {"Friction angle", "-5"}}, false);
-  try_values({{"Name", "clay"},
-              {"Friction angle", "25"},
-              {"Dilatancy angle", "30"}},
-             false);
+  try_values({{"Name", "clay"}, {"Friction angle", "25"}, {"Dilatancy angle", "30"}}, false);
   try_values({{"Name", "clay"}, {"Dilatancy angle", "-1"}}, false);
   try_values({{"Name", "clay"}, {"Cohesion", "-10"}}, false);
   try_values({{"Name", "clay"}, {"Tension cutoff", "-1"}}, false);
   try_values({{"Name", "  "}}, false);
 
-  std::printf("\n%s\n",
-              all_passed ? "all checks passed" : "SOME CHECKS FAILED");
+  std::printf("\n%s\n", all_passed ? "all checks passed" : "SOME CHECKS FAILED");
   return all_passed ? 0 : 1;
 }

@@ -13,12 +13,10 @@
 // 5. --resume with no checkpoint at all is refused (exit status 1).
 // The mpirun=2 variant does all of this on two ranks.
 #include <deal.II/base/mpi.h>
-
-#include <slidewave/core/application.h>
-
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <slidewave/core/application.h>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -37,7 +35,7 @@ namespace
   run(const std::vector<std::string> &arguments)
   {
     std::ostringstream captured, out, err;
-    std::streambuf    *old = std::cout.rdbuf(captured.rdbuf());
+    std::streambuf    *old    = std::cout.rdbuf(captured.rdbuf());
     const int          status = slidewave::run_application(arguments, out, err);
     std::cout.rdbuf(old);
     Result             result{status, {}, err.str()};
@@ -68,8 +66,9 @@ namespace
 
   /** Rows of @p full after step @p after, compared with @p resumed. */
   bool
-  same_tail(const std::vector<std::string> &full, const std::vector<std::string> &resumed,
-            const unsigned int after)
+  same_tail(const std::vector<std::string> &full,
+            const std::vector<std::string> &resumed,
+            const unsigned int              after)
   {
     std::vector<std::string> tail;
     for (const auto &row : full)
@@ -85,15 +84,15 @@ int
 main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool   writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  const std::string scene = SOURCE_DIR "/../common/restart_column.prm";
+  const bool        writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const std::string scene  = SOURCE_DIR "/../common/restart_column.prm";
   const std::string output = "output-restart";
   if (writer)
     std::filesystem::remove_all(output);
   MPI_Barrier(MPI_COMM_WORLD);
   const std::string directory = "Output directory=" + output;
 
-  const Result full = run({"--set", directory, scene});
+  const Result full    = run({"--set", directory, scene});
   const Result resumed = run({"--set", directory, "--resume", scene});
 
   // A run killed while writing its newest checkpoint: only the previous one is intact.
@@ -104,23 +103,20 @@ main(int argc, char *argv[])
   MPI_Barrier(MPI_COMM_WORLD);
   const Result from_previous = run({"--set", directory, "--resume", scene});
 
-  const Result other_grid =
-    run({"--set", directory, "--set", "Material points/Grid/Cell size=0.02", "--resume", scene});
-  const Result nothing =
-    run({"--set", "Output directory=output-restart-empty", "--resume", scene});
+  const Result other_grid
+    = run({"--set", directory, "--set", "Material points/Grid/Cell size=0.02", "--resume", scene});
+  const Result nothing = run({"--set", "Output directory=output-restart-empty", "--resume", scene});
 
   if (writer)
     {
       std::cout << "uninterrupted run: status " << full.status << ", " << full.rows.size()
                 << " rows, last at step " << step_of(full.rows.back()) << std::endl;
-      std::cout << "resumed from step 300: status " << resumed.status << ", "
-                << resumed.rows.size() << " rows, equal to the uninterrupted ones: "
-                << (same_tail(full.rows, resumed.rows, 300) ? "yes" : "no") << std::endl;
-      std::cout << "resumed from checkpoint.previous (step 150): status "
-                << from_previous.status << ", " << from_previous.rows.size()
+      std::cout << "resumed from step 300: status " << resumed.status << ", " << resumed.rows.size()
                 << " rows, equal to the uninterrupted ones: "
-                << (same_tail(full.rows, from_previous.rows, 150) ? "yes" : "no")
-                << std::endl;
+                << (same_tail(full.rows, resumed.rows, 300) ? "yes" : "no") << std::endl;
+      std::cout << "resumed from checkpoint.previous (step 150): status " << from_previous.status
+                << ", " << from_previous.rows.size() << " rows, equal to the uninterrupted ones: "
+                << (same_tail(full.rows, from_previous.rows, 150) ? "yes" : "no") << std::endl;
       std::cout << "another grid: status " << other_grid.status << std::endl
                 << without_path(other_grid.error);
       std::cout << "no checkpoint: status " << nothing.status << std::endl

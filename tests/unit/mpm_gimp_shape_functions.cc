@@ -23,11 +23,10 @@
 // over h) computed in a few dozen floating point operations: the tolerance 1e-13 is
 // round-off (a wrong formula or a missing cell gives errors of order 1e-3 or more).
 // Exits non-zero on failure.
-#include <slidewave/mpm/shape_functions.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <slidewave/mpm/shape_functions.h>
 #include <vector>
 
 using namespace slidewave::mpm;
@@ -99,8 +98,8 @@ namespace
         for (int di = -1; di <= 1; ++di)
           {
             const int a = static_cast<int>(i) + di, b = static_cast<int>(j) + dj;
-            if ((di != 0 || dj != 0) && a >= 0 && b >= 0 && a < static_cast<int>(nx) &&
-                b < static_cast<int>(ny))
+            if ((di != 0 || dj != 0) && a >= 0 && b >= 0 && a < static_cast<int>(nx)
+                && b < static_cast<int>(ny))
               cells.push_back(cell(a, b));
           }
       return cells;
@@ -130,8 +129,11 @@ namespace
   }
 
   Merged
-  gimp(const Grid &grid, const std::vector<PatchCell> &patch, const double x, const double y,
-       const double lp)
+  gimp(const Grid                   &grid,
+       const std::vector<PatchCell> &patch,
+       const double                  x,
+       const double                  y,
+       const double                  lp)
   {
     NodeWeights w;
     gimp_weights(patch.data(), patch.data() + patch.size(), x, y, lp, lp, w);
@@ -142,9 +144,9 @@ namespace
   struct Moments
   {
     double sum = 0., sum_gx = 0., sum_gy = 0.;
-    double sx = 0., sy = 0.;             // sum S_i x_i, sum S_i y_i
-    double gx_x = 0., gy_x = 0.;         // sum grad S_i x_i
-    double gx_y = 0., gy_y = 0.;         // sum grad S_i y_i
+    double sx = 0., sy = 0.;     // sum S_i x_i, sum S_i y_i
+    double gx_x = 0., gy_x = 0.; // sum grad S_i x_i
+    double gx_y = 0., gy_y = 0.; // sum grad S_i y_i
   };
 
   Moments
@@ -178,20 +180,24 @@ namespace
     {
       unity        = std::max(unity, std::abs(r.sum - 1.));
       gradient_sum = std::max(gradient_sum, h * std::max(std::abs(r.sum_gx), std::abs(r.sum_gy)));
-      completeness =
-        std::max(completeness, std::max(std::abs(r.sx - x), std::abs(r.sy - y)) / h);
-      gradient_completeness =
-        std::max({gradient_completeness, std::abs(r.gx_x - 1.), std::abs(r.gy_x),
-                  std::abs(r.gx_y), std::abs(r.gy_y - 1.)});
+      completeness = std::max(completeness, std::max(std::abs(r.sx - x), std::abs(r.sy - y)) / h);
+      gradient_completeness = std::max({gradient_completeness,
+                                        std::abs(r.gx_x - 1.),
+                                        std::abs(r.gy_x),
+                                        std::abs(r.gx_y),
+                                        std::abs(r.gy_y - 1.)});
     }
 
     void
     report(const char *name) const
     {
-      std::printf("  %s: max |sum S - 1| = %.1e  max h |sum grad S| = %.1e\n", name,
-                  unity, gradient_sum);
+      std::printf("  %s: max |sum S - 1| = %.1e  max h |sum grad S| = %.1e\n",
+                  name,
+                  unity,
+                  gradient_sum);
       std::printf("  %s: max |sum S x_i - x_p| / h = %.1e  max |sum grad S x_i - I| = %.1e\n",
-                  name, completeness,
+                  name,
+                  completeness,
                   gradient_completeness);
       char what[200];
       std::snprintf(what, sizeof(what), "%s partition of unity and sum of gradients zero", name);
@@ -223,7 +229,13 @@ main()
   const Grid   grid{3, 3, -0.75, 1.25, h};
   std::printf("grid: 3 x 3 cells of h = %.2f from (%.2f, %.2f), particles in the centre cell "
               "[%.2f, %.2f] x [%.2f, %.2f]\n",
-              h, grid.x0, grid.y0, grid.x0 + h, grid.x0 + 2 * h, grid.y0 + h, grid.y0 + 2 * h);
+              h,
+              grid.x0,
+              grid.y0,
+              grid.x0 + h,
+              grid.x0 + 2 * h,
+              grid.y0 + h,
+              grid.y0 + 2 * h);
   const std::vector<PatchCell> centre_patch = grid.patch(1, 1);
   std::printf("centre cell patch: %u cells\n", static_cast<unsigned int>(centre_patch.size()));
 
@@ -232,20 +244,20 @@ main()
     {
       const double lp = h / (2. * per_cell);
       std::printf("GIMP, lp = h/%u = %.6f:\n", 2 * per_cell, lp);
-      const std::vector<double> f = fractions(lp / h);
-      double       value_error = 0., gradient_error = 0.;
+      const std::vector<double> f           = fractions(lp / h);
+      double                    value_error = 0., gradient_error = 0.;
       unsigned int n_points = 0, max_entries = 0, n_straddle_face = 0, n_straddle_corner = 0;
       Deviations   deviations;
       for (const double fx : f)
         for (const double fy : f)
           {
-            const double x  = grid.x0 + h + fx * h;
-            const double y  = grid.y0 + h + fy * h;
+            const double x = grid.x0 + h + fx * h;
+            const double y = grid.y0 + h + fy * h;
             NodeWeights  w;
-            gimp_weights(centre_patch.data(), centre_patch.data() + centre_patch.size(), x, y,
-                         lp, lp, w);
-            max_entries       = std::max(max_entries, w.n);
-            const Merged m    = merge(w, grid);
+            gimp_weights(
+              centre_patch.data(), centre_patch.data() + centre_patch.size(), x, y, lp, lp, w);
+            max_entries        = std::max(max_entries, w.n);
+            const Merged m     = merge(w, grid);
             const bool   out_x = fx * h < lp || fx * h > h - lp;
             const bool   out_y = fy * h < lp || fy * h > h - lp;
             n_straddle_face += out_x != out_y;
@@ -255,17 +267,20 @@ main()
                 double sx, dsx, sy, dsy;
                 gimp_1d(x, grid.node_x(n), h, lp, sx, dsx);
                 gimp_1d(y, grid.node_y(n), h, lp, sy, dsy);
-                value_error = std::max(value_error, std::abs(m.value[n] - sx * sy));
-                gradient_error =
-                  std::max({gradient_error, h * std::abs(m.grad_x[n] - dsx * sy),
-                            h * std::abs(m.grad_y[n] - sx * dsy)});
+                value_error    = std::max(value_error, std::abs(m.value[n] - sx * sy));
+                gradient_error = std::max({gradient_error,
+                                           h * std::abs(m.grad_x[n] - dsx * sy),
+                                           h * std::abs(m.grad_y[n] - sx * dsy)});
               }
             deviations.add(moments(m, grid), x, y, h);
             ++n_points;
           }
       std::printf("  %u positions (%u with the domain across one face, %u across a corner), "
                   "at most %u entries\n",
-                  n_points, n_straddle_face, n_straddle_corner, max_entries);
+                  n_points,
+                  n_straddle_face,
+                  n_straddle_corner,
+                  max_entries);
       std::printf("  max |S - S_Eq.11| = %.1e  max h |grad S - grad S_Eq.11| = %.1e\n",
                   value_error,
                   gradient_error);
@@ -277,8 +292,10 @@ main()
       // hat 1 - |x - x_i|/h = 1/2, so S = 1/4 at each of the cell's own four nodes.
       const Merged centred = gimp(grid, centre_patch, grid.x0 + 1.5 * h, grid.y0 + 1.5 * h, lp);
       std::printf("  centred point: S at the cell's nodes %.15f %.15f %.15f %.15f\n",
-                  centred.value[grid.node(1, 1)], centred.value[grid.node(2, 1)],
-                  centred.value[grid.node(1, 2)], centred.value[grid.node(2, 2)]);
+                  centred.value[grid.node(1, 1)],
+                  centred.value[grid.node(2, 1)],
+                  centred.value[grid.node(1, 2)],
+                  centred.value[grid.node(2, 2)]);
     }
 
   // 2 for Q1.
@@ -291,8 +308,10 @@ main()
         {
           NodeWeights w;
           q1_weights(centre_patch[0], fx, fy, w);
-          deviations.add(moments(merge(w, grid), grid), grid.x0 + h + fx * h,
-                         grid.y0 + h + fy * h, h);
+          deviations.add(moments(merge(w, grid), grid),
+                         grid.x0 + h + fx * h,
+                         grid.y0 + h + fy * h,
+                         h);
         }
     deviations.report("Q1");
   }
@@ -301,34 +320,42 @@ main()
   {
     const std::vector<PatchCell> patch = grid.patch(1, 0);
     std::printf("grid boundary: cell (1, 0), patch of %u cells (none below y = %.2f):\n",
-                static_cast<unsigned int>(patch.size()), grid.y0);
+                static_cast<unsigned int>(patch.size()),
+                grid.y0);
     double unity = 0., gradient_sum = 0., centroid = 0., gradient_completeness = 0.;
     for (const double lp : {h / 4., h / 6.})
       for (const double fx : fractions(lp / h))
         for (const double fy : {0., 1e-9, 0.05, 0.1, lp / (2. * h), lp / h - 1e-9})
           {
-            const double x = grid.x0 + h + fx * h, y = grid.y0 + fy * h;
+            const double  x = grid.x0 + h + fx * h, y = grid.y0 + fy * h;
             const Moments r = moments(gimp(grid, patch, x, y, lp), grid);
             // Centroid of [y - lp, y + lp] cut at the grid's lower side.
             const double bottom = std::max(y - lp, grid.y0), top = y + lp;
-            unity        = std::max(unity, std::abs(r.sum - 1.));
-            gradient_sum = std::max(gradient_sum,
-                                    h * std::max(std::abs(r.sum_gx), std::abs(r.sum_gy)));
-            centroid = std::max(centroid, std::max(std::abs(r.sx - x),
-                                                   std::abs(r.sy - 0.5 * (bottom + top))) / h);
-            gradient_completeness =
-              std::max({gradient_completeness, std::abs(r.gx_x - 1.), std::abs(r.gy_x),
-                        std::abs(r.gx_y), std::abs(r.gy_y - 1.)});
+            unity = std::max(unity, std::abs(r.sum - 1.));
+            gradient_sum
+              = std::max(gradient_sum, h * std::max(std::abs(r.sum_gx), std::abs(r.sum_gy)));
+            centroid
+              = std::max(centroid,
+                         std::max(std::abs(r.sx - x), std::abs(r.sy - 0.5 * (bottom + top))) / h);
+            gradient_completeness = std::max({gradient_completeness,
+                                              std::abs(r.gx_x - 1.),
+                                              std::abs(r.gy_x),
+                                              std::abs(r.gx_y),
+                                              std::abs(r.gy_y - 1.)});
           }
-    const Moments r = moments(gimp(grid, patch, grid.x0 + 1.3 * h, grid.y0 + 0.05 * h, h / 4.),
-                              grid);
+    const Moments r
+      = moments(gimp(grid, patch, grid.x0 + 1.3 * h, grid.y0 + 0.05 * h, h / 4.), grid);
     std::printf("  point (%.4f, %.4f), lp = h/4: sum S = %.15f  sum S y_i = %.15f "
                 "(centroid of the domain on the grid %.15f)\n",
-                grid.x0 + 1.3 * h, grid.y0 + 0.05 * h, r.sum, r.sy,
+                grid.x0 + 1.3 * h,
+                grid.y0 + 0.05 * h,
+                r.sum,
+                r.sy,
                 0.5 * (grid.y0 + grid.y0 + 0.05 * h + h / 4.));
     std::printf("  max |sum S - 1| = %.1e  max h |sum grad S| = %.1e  max |centroid error| / h "
                 "= %.1e  max |sum grad S x_i - I| = %.1e\n",
-                unity, gradient_sum,
+                unity,
+                gradient_sum,
                 centroid,
                 gradient_completeness);
     check(unity < tolerance && gradient_sum < tolerance,
@@ -341,24 +368,30 @@ main()
   {
     const Grid   wide{4, 3, grid.x0, grid.y0, h};
     const double x_face = wide.x0 + 2. * h, eps = 1e-9 * h, eta = 0.3;
-    const double y      = wide.y0 + (1. + eta) * h;
+    const double y = wide.y0 + (1. + eta) * h;
     std::printf("crossing the face x = %.2f at y = %.2f (eta = %.1f), x = x_face -+ %.0e h:\n",
-                x_face, y, eta, eps / h);
+                x_face,
+                y,
+                eta,
+                eps / h);
     const std::vector<PatchCell> left = wide.patch(1, 1), right = wide.patch(2, 1);
     for (const double lp : {h / 4., h / 6.})
       {
-        const Merged a = gimp(wide, left, x_face - eps, y, lp);
-        const Merged b = gimp(wide, right, x_face + eps, y, lp);
+        const Merged a          = gimp(wide, left, x_face - eps, y, lp);
+        const Merged b          = gimp(wide, right, x_face + eps, y, lp);
         double       value_jump = 0., gradient_jump = 0.;
         for (unsigned int n = 0; n < wide.n_nodes(); ++n)
           {
-            value_jump = std::max(value_jump, std::abs(a.value[n] - b.value[n]));
-            gradient_jump = std::max({gradient_jump, h * std::abs(a.grad_x[n] - b.grad_x[n]),
+            value_jump    = std::max(value_jump, std::abs(a.value[n] - b.value[n]));
+            gradient_jump = std::max({gradient_jump,
+                                      h * std::abs(a.grad_x[n] - b.grad_x[n]),
                                       h * std::abs(a.grad_y[n] - b.grad_y[n])});
           }
         std::printf("  GIMP lp = h/%.0f: max |jump of S| = %.1e  max h |jump of grad S| = "
                     "%.1e\n",
-                    h / lp, value_jump, gradient_jump);
+                    h / lp,
+                    value_jump,
+                    gradient_jump);
         check(value_jump < 1e-6 && gradient_jump < 1e-6,
               "GIMP values and gradients continuous across the face");
       }
@@ -370,12 +403,15 @@ main()
     for (unsigned int n = 0; n < wide.n_nodes(); ++n)
       {
         value_jump    = std::max(value_jump, std::abs(a.value[n] - b.value[n]));
-        gradient_jump = std::max({gradient_jump, h * std::abs(a.grad_x[n] - b.grad_x[n]),
+        gradient_jump = std::max({gradient_jump,
+                                  h * std::abs(a.grad_x[n] - b.grad_x[n]),
                                   h * std::abs(a.grad_y[n] - b.grad_y[n])});
       }
     std::printf("  Q1: max |jump of S| = %.1e  max h |jump of grad S| = %.6f (2 (1 - eta) = "
                 "%.6f)\n",
-                value_jump, gradient_jump, 2. * (1. - eta));
+                value_jump,
+                gradient_jump,
+                2. * (1. - eta));
     check(value_jump < 1e-6 && std::abs(gradient_jump - 2. * (1. - eta)) < 1e-6,
           "Q1 values continuous, gradients jump by 2 (1 - eta) / h");
   }

@@ -23,15 +23,13 @@
 // instability of small nodal masses, which GIMP and MUSL avoid.) Run on 1 and 2 MPI
 // ranks; the totals are printed with 10 significant digits and agree (the ranks only
 // change the order of the sums). Prints on rank 0 only; exits non-zero on failure.
+#include <cmath>
+#include <cstdio>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
-
 #include <slidewave/mpm/material_point_solver.h>
 #include <slidewave/mpm/particle_properties.h>
-
-#include <cmath>
-#include <cstdio>
 #include <string>
 
 using namespace slidewave::mpm;
@@ -96,8 +94,7 @@ end
     prm.enter_subsection("Material points");
     SolverParameters::declare_parameters(prm);
     prm.leave_subsection();
-    prm.parse_input_from_string("subsection Material points\n" + scene(shape_functions) +
-                                "end\n");
+    prm.parse_input_from_string("subsection Material points\n" + scene(shape_functions) + "end\n");
     SolverParameters result;
     prm.enter_subsection("Material points");
     result.parse_parameters(prm, "Material points");
@@ -114,8 +111,8 @@ end
       {
         const auto p = particle.get_properties();
         const auto x = particle.get_location();
-        n += std::floor(x[0] / h) != std::floor(p[property::initial_x] / h) ||
-             std::floor(x[1] / h) != std::floor(p[property::initial_y] / h);
+        n += std::floor(x[0] / h) != std::floor(p[property::initial_x] / h)
+             || std::floor(x[1] / h) != std::floor(p[property::initial_y] / h);
       }
     return dealii::Utilities::MPI::sum(n, MPI_COMM_WORLD);
   }
@@ -131,8 +128,8 @@ end
         const auto   p  = particle.get_properties();
         const auto   x  = particle.get_location();
         const double lx = p[property::domain_half_x], ly = p[property::domain_half_y];
-        n += x[0] - lx < -1e-12 || x[0] + lx > 1. + 1e-12 || x[1] - ly < -1e-12 ||
-             x[1] + ly > 1. + 1e-12;
+        n += x[0] - lx < -1e-12 || x[0] + lx > 1. + 1e-12 || x[1] - ly < -1e-12
+             || x[1] + ly > 1. + 1e-12;
       }
     return dealii::Utilities::MPI::sum(n, MPI_COMM_WORLD);
   }
@@ -140,8 +137,8 @@ end
   void
   compare(MaterialPointSolver &solver)
   {
-    const auto totals = solver.nodal_totals();
-    const auto sums   = solver.integrals();
+    const auto   totals         = solver.nodal_totals();
+    const auto   sums           = solver.integrals();
     const double momentum_scale = std::sqrt(2. * sums.mass * sums.kinetic_energy);
     const double mass_error     = std::abs(totals[0] - sums.mass) / sums.mass;
     const double px_error       = std::abs(totals[1] - sums.momentum_x) / momentum_scale;
@@ -150,12 +147,16 @@ end
       {
         std::printf("  %u points, lost mass %.10g kg/m\n", sums.n_particles, sums.lost_mass);
         std::printf("  mass        nodes %.10g  points %.10g  kg/m\n", totals[0], sums.mass);
-        std::printf("  momentum x  nodes %.10g  points %.10g  kg/s per m\n", totals[1],
+        std::printf("  momentum x  nodes %.10g  points %.10g  kg/s per m\n",
+                    totals[1],
                     sums.momentum_x);
-        std::printf("  momentum y  nodes %.10g  points %.10g  kg/s per m\n", totals[2],
+        std::printf("  momentum y  nodes %.10g  points %.10g  kg/s per m\n",
+                    totals[2],
                     sums.momentum_y);
         std::printf("  relative differences: mass %.1e  momentum x %.1e  momentum y %.1e\n",
-                    mass_error, px_error, py_error);
+                    mass_error,
+                    px_error,
+                    py_error);
       }
     check(mass_error < 1e-13, "nodal mass = particle mass");
     check(px_error < 1e-13 && py_error < 1e-13, "nodal momentum = particle momentum");
@@ -191,7 +192,10 @@ main(int argc, char **argv)
       if (root)
         {
           std::printf("%s, after %u steps (t = %.6f s), %u points off their initial cell",
-                      shape.c_str(), n_steps, time, moved);
+                      shape.c_str(),
+                      n_steps,
+                      time,
+                      moved);
           if (shape != "q1")
             std::printf(", %u domains reaching out of the grid", out);
           std::printf(":\n");

@@ -24,13 +24,25 @@ main()
 {
   const std::vector<unsigned int> resolutions{100, 200, 400, 800, 1600};
   const std::vector<Scheme>       schemes{
-    {NumericalFlux::roe, Reconstruction::first_order, Limiter::minmod, TimeIntegrator::forward_euler},
-    {NumericalFlux::hll, Reconstruction::first_order, Limiter::minmod, TimeIntegrator::forward_euler},
+    {NumericalFlux::roe,
+           Reconstruction::first_order,
+           Limiter::minmod,
+           TimeIntegrator::forward_euler},
+    {NumericalFlux::hll,
+           Reconstruction::first_order,
+           Limiter::minmod,
+           TimeIntegrator::forward_euler},
     {NumericalFlux::roe, Reconstruction::second_order, Limiter::minmod, TimeIntegrator::ssp_rk2},
     {NumericalFlux::roe, Reconstruction::second_order, Limiter::van_leer, TimeIntegrator::ssp_rk2},
     {NumericalFlux::roe, Reconstruction::second_order, Limiter::superbee, TimeIntegrator::ssp_rk2},
-    {NumericalFlux::roe, Reconstruction::second_order, Limiter::minmod, TimeIntegrator::forward_euler},
-    {NumericalFlux::hll, Reconstruction::second_order, Limiter::van_leer, TimeIntegrator::forward_euler}};
+    {NumericalFlux::roe,
+           Reconstruction::second_order,
+           Limiter::minmod,
+           TimeIntegrator::forward_euler},
+    {NumericalFlux::hll,
+           Reconstruction::second_order,
+           Limiter::van_leer,
+           TimeIntegrator::forward_euler}};
 
   bool all_ok = true;
   for (const double h_right : {0.5, 0.})
@@ -38,7 +50,8 @@ main()
       const double           end_time = h_right > 0. ? 0.1 : 0.05;
       const DamBreakSolution exact(1., h_right, 0.5, 9.81);
       std::printf("%s dam break, t = %.2f s: L1 depth error [m^2]\n",
-                  h_right > 0. ? "Stoker" : "Ritter", end_time);
+                  h_right > 0. ? "Stoker" : "Ritter",
+                  end_time);
       std::vector<double> first_order_errors;
       for (const Scheme &scheme : schemes)
         {
@@ -53,9 +66,8 @@ main()
               const double volume0 = water.water_volume();
               run_until(water, end_time);
               errors.push_back(l1_depth_error(water, exact, end_time));
-              positive = positive && water.find_invalid_cell() == water.n_cells();
-              conserved =
-                conserved && std::abs(water.water_volume() - volume0) <= 1e-13 * volume0;
+              positive  = positive && water.find_invalid_cell() == water.n_cells();
+              conserved = conserved && std::abs(water.water_volume() - volume0) <= 1e-13 * volume0;
               std::printf(" %.3e", errors.back());
             }
           const double rate     = std::log2(errors[errors.size() - 2] / errors.back());

@@ -44,8 +44,10 @@ int
 main()
 {
   const WaterMesh mesh = random_mesh(200, 25.);
-  std::printf("mesh: %u cells, widths from %.4f to %.4f m\n", mesh.n_cells(),
-              mesh.min_width(), mesh.max_width());
+  std::printf("mesh: %u cells, widths from %.4f to %.4f m\n",
+              mesh.n_cells(),
+              mesh.min_width(),
+              mesh.max_width());
 
   bool all_ok = true;
   for (const bool emerging : {false, true})
@@ -84,21 +86,24 @@ main()
           double eta_error = 0., discharge_error = 0.;
           for (unsigned int i = 0; i < mesh.n_cells(); ++i)
             {
-              eta_error =
-                std::max(eta_error, std::abs(water.depth()[i] + bed[i] - eta0[i]));
+              eta_error       = std::max(eta_error, std::abs(water.depth()[i] + bed[i] - eta0[i]));
               discharge_error = std::max(discharge_error, std::abs(water.discharge()[i]));
             }
           const double volume_error = std::abs(water.water_volume() - volume0) / volume0;
-          const bool   ok =
-            eta_error <= 1e-12 && discharge_error <= 1e-12 && volume_error <= 1e-12;
-          all_ok = all_ok && ok;
+          const bool   ok = eta_error <= 1e-12 && discharge_error <= 1e-12 && volume_error <= 1e-12;
+          all_ok          = all_ok && ok;
           std::printf("  %-24s dry cells %3u  |eta - eta0| <= 1e-12: %s  |hu| <= 1e-12: %s  "
                       "volume: %s\n",
-                      scheme.name().c_str(), dry, yes_no(eta_error <= 1e-12),
-                      yes_no(discharge_error <= 1e-12), yes_no(volume_error <= 1e-12));
+                      scheme.name().c_str(),
+                      dry,
+                      yes_no(eta_error <= 1e-12),
+                      yes_no(discharge_error <= 1e-12),
+                      yes_no(volume_error <= 1e-12));
           if (!ok)
-            std::printf("    errors: eta %.3e, hu %.3e, volume %.3e\n", eta_error,
-                        discharge_error, volume_error);
+            std::printf("    errors: eta %.3e, hu %.3e, volume %.3e\n",
+                        eta_error,
+                        discharge_error,
+                        volume_error);
         }
     }
   std::printf("all well-balanced: %s\n", yes_no(all_ok));

@@ -17,16 +17,24 @@ int
 main()
 {
   const auto bed_function = [](const double x) { return 0.1 * std::exp(-(x - 3.) * (x - 3.)); };
-  const auto eta_function = [](const double x) {
-    return 1. + 0.05 * std::exp(-2. * (x - 5.) * (x - 5.));
-  };
+  const auto eta_function
+    = [](const double x) { return 1. + 0.05 * std::exp(-2. * (x - 5.) * (x - 5.)); };
 
   const std::vector<Scheme> schemes{
-    {NumericalFlux::roe, Reconstruction::first_order, Limiter::minmod, TimeIntegrator::forward_euler},
+    {NumericalFlux::roe,
+     Reconstruction::first_order,
+     Limiter::minmod,
+     TimeIntegrator::forward_euler},
     {NumericalFlux::roe, Reconstruction::second_order, Limiter::minmod, TimeIntegrator::ssp_rk2},
     {NumericalFlux::roe, Reconstruction::second_order, Limiter::van_leer, TimeIntegrator::ssp_rk2},
-    {NumericalFlux::roe, Reconstruction::second_order, Limiter::van_leer, TimeIntegrator::forward_euler},
-    {NumericalFlux::hll, Reconstruction::second_order, Limiter::minmod, TimeIntegrator::forward_euler}};
+    {NumericalFlux::roe,
+     Reconstruction::second_order,
+     Limiter::van_leer,
+     TimeIntegrator::forward_euler},
+    {NumericalFlux::hll,
+     Reconstruction::second_order,
+     Limiter::minmod,
+     TimeIntegrator::forward_euler}};
 
   bool   all_ok            = true;
   double first_order_error = 0.;

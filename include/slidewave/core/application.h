@@ -2,7 +2,6 @@
 #define slidewave_core_application_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <ostream>
 #include <string>
 #include <vector>
@@ -29,9 +28,7 @@ namespace slidewave
    * Returns an ExitStatus.
    */
   int
-  run_application(const std::vector<std::string> &arguments,
-                  std::ostream                   &out,
-                  std::ostream                   &err);
+  run_application(const std::vector<std::string> &arguments, std::ostream &out, std::ostream &err);
 } // namespace slidewave
 
 #endif

@@ -19,9 +19,7 @@ namespace slidewave
   class InputError : public std::runtime_error
   {
   public:
-    InputError(const std::string &parameter,
-               const std::string &value,
-               const std::string &allowed);
+    InputError(const std::string &parameter, const std::string &value, const std::string &allowed);
 
     /** The full path of the offending parameter, subsections separated by '/'. */
     const std::string parameter;

@@ -2,7 +2,6 @@
 #define slidewave_core_parameter_documentation_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <ostream>
 
 namespace slidewave

@@ -2,7 +2,6 @@
 #define slidewave_core_parsed_expression_h
 
 #include <deal.II/base/function_parser.h>
-
 #include <memory>
 #include <string>
 

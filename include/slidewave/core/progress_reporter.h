@@ -15,19 +15,21 @@ namespace slidewave
   {
   public:
     /** @p out null disables reporting (other ranks, test mode). */
-    ProgressReporter(std::ostream *out, double start_time, double end_time,
-                     double seconds_between_lines = 2.);
+    ProgressReporter(std::ostream *out,
+                     double        start_time,
+                     double        end_time,
+                     double        seconds_between_lines = 2.);
 
     void
     report(unsigned int step, double time, double dt, bool force = false);
 
   private:
-    std::ostream                                      *out;
-    double                                             start_time;
-    double                                             end_time;
-    double                                             seconds_between_lines;
-    std::chrono::steady_clock::time_point              wall_start;
-    std::chrono::steady_clock::time_point              last_line;
+    std::ostream                         *out;
+    double                                start_time;
+    double                                end_time;
+    double                                seconds_between_lines;
+    std::chrono::steady_clock::time_point wall_start;
+    std::chrono::steady_clock::time_point last_line;
   };
 } // namespace slidewave
 

@@ -2,7 +2,6 @@
 #define slidewave_core_scene_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <string>
 
 namespace slidewave

@@ -45,11 +45,11 @@ namespace slidewave
     last_value(const std::string &column) const;
 
   private:
-    std::vector<std::string>                     columns;
-    std::vector<std::pair<std::string, double>>  current_row;
-    std::vector<double>                          last_row;
-    std::ofstream                                file;
-    std::ostream                                *echo = nullptr;
+    std::vector<std::string>                    columns;
+    std::vector<std::pair<std::string, double>> current_row;
+    std::vector<double>                         last_row;
+    std::ofstream                               file;
+    std::ostream                               *echo = nullptr;
     /** Appending to an existing file: its header is there already. */
     bool appending = false;
   };

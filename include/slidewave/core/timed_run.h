@@ -2,7 +2,6 @@
 #define slidewave_core_timed_run_h
 
 #include <deal.II/base/timer.h>
-
 #include <functional>
 
 namespace slidewave

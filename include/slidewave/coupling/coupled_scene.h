@@ -3,7 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-
+#include <memory>
+#include <optional>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/coupling/soil_water_interface.h>
@@ -12,9 +13,6 @@
 #include <slidewave/water/shallow_water_1d.h>
 #include <slidewave/water/water_output.h>
 #include <slidewave/water/water_state_parameters.h>
-
-#include <memory>
-#include <optional>
 #include <string>
 
 namespace slidewave
@@ -37,16 +35,16 @@ namespace slidewave
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      double       water_density   = 1000.;
-      WaterCells   water_cells     = WaterCells::grid_columns;
-      SoilSurface  soil_surface    = SoilSurface::envelope;
-      bool         loads_on_soil   = true;
+      double       water_density    = 1000.;
+      WaterCells   water_cells      = WaterCells::grid_columns;
+      SoilSurface  soil_surface     = SoilSurface::envelope;
+      bool         loads_on_soil    = true;
       unsigned int maximum_substeps = 1;
 
       /** Verification: if > 0, the run fails (exit status 3) beyond these. */
-      double tolerance_volume        = 0.;
-      double tolerance_free_surface  = 0.;
-      double tolerance_soil_speed    = 0.;
+      double tolerance_volume       = 0.;
+      double tolerance_free_surface = 0.;
+      double tolerance_soil_speed   = 0.;
     };
 
 
@@ -98,8 +96,12 @@ namespace slidewave
       check_state(unsigned int step, double time, bool check_soil) const;
 
       void
-      add_statistics(Statistics &statistics, unsigned int step, double time, double dt,
-                     unsigned int soil_steps, unsigned int water_steps) const;
+      add_statistics(Statistics  &statistics,
+                     unsigned int step,
+                     double       time,
+                     double       dt,
+                     unsigned int soil_steps,
+                     unsigned int water_steps) const;
 
       void
       write_output(unsigned int index, double time);
@@ -108,22 +110,22 @@ namespace slidewave
       double
       free_surface_deviation() const;
 
-      const SceneParameters                   &scene;
-      CouplingParameters                       coupling;
-      mpm::SolverParameters                    soil_parameters;
-      water::SolverParameters                  water_parameters;
-      std::optional<water::WaterMesh>          configured_mesh;
-      water::WaterBoundary                     boundaries[2];
-      water::BedElevation                      terrain;
-      water::InitialCondition                  initial_condition;
-      std::string                              gauge_text;
-      unsigned int                             check_interval = 10;
+      const SceneParameters          &scene;
+      CouplingParameters              coupling;
+      mpm::SolverParameters           soil_parameters;
+      water::SolverParameters         water_parameters;
+      std::optional<water::WaterMesh> configured_mesh;
+      water::WaterBoundary            boundaries[2];
+      water::BedElevation             terrain;
+      water::InitialCondition         initial_condition;
+      std::string                     gauge_text;
+      unsigned int                    check_interval = 10;
 
-      std::unique_ptr<mpm::MaterialPointSolver>  soil;
-      std::unique_ptr<water::ShallowWater1D>     water;
-      std::unique_ptr<SoilWaterInterface>        interface;
-      water::GaugeRecorder                       gauges;
-      mpm::ParticleOutput                        particle_output;
+      std::unique_ptr<mpm::MaterialPointSolver> soil;
+      std::unique_ptr<water::ShallowWater1D>    water;
+      std::unique_ptr<SoilWaterInterface>       interface;
+      water::GaugeRecorder                      gauges;
+      mpm::ParticleOutput                       particle_output;
 
       double initial_volume = 0., initial_toe = 0.;
     };

@@ -2,11 +2,9 @@
 #define slidewave_coupling_soil_water_interface_h
 
 #include <deal.II/base/tensor.h>
-
 #include <slidewave/coupling/monotone_cubic.h>
 #include <slidewave/mpm/material_point_solver.h>
 #include <slidewave/water/shallow_water_1d.h>
-
 #include <vector>
 
 namespace slidewave
@@ -46,8 +44,8 @@ namespace slidewave
      *   the material points within half a point spacing of the surface, the thrust by the
      *   points in the wet band of the face in proportion to the water pressure at their
      *   height, as point forces; a point acts on (and takes loads from) every column its
-     *   domain overlaps, in proportion to the overlap. Dry cells load nothing; what falls on a column without
-     *   soil rests on the rigid floor.
+     *   domain overlaps, in proportion to the overlap. Dry cells load nothing; what falls on a
+     * column without soil rests on the rigid floor.
      *
      * The water mesh and the columns are fixed at construction; per step the class
      * allocates nothing.
@@ -82,7 +80,7 @@ namespace slidewave
        * column has in one step). Collective.
        */
       void
-      apply_water_loads(mpm::MaterialPointSolver     &soil,
+      apply_water_loads(mpm::MaterialPointSolver    &soil,
                         const water::ShallowWater1D &water,
                         double                       dt);
 
@@ -112,7 +110,7 @@ namespace slidewave
 
       std::vector<double> columns, column_centers, cell_centers;
       /** The width of the columns if they are all equal, else 0. */
-      double uniform_width = 0.;
+      double              uniform_width = 0.;
       std::vector<double> terrain_at_columns, terrain_at_cells;
       double              water_density;
       SoilSurface         surface_definition;
@@ -131,14 +129,14 @@ namespace slidewave
       std::vector<double> surface_height, soil_height, envelope, samples, bed_elevation;
       /** The part of each column's width that is soil (1 or 0 with SoilSurface::top). */
       std::vector<double> coverage;
-      std::vector<double>               column_load_x, column_load_y, cell_load_x, cell_load_y;
+      std::vector<double> column_load_x, column_load_y, cell_load_x, cell_load_y;
       /** Thrust on the faces of the bed and the wet band [bottom, water level] of the
        *  face, per water cell and per column. */
-      std::vector<double> cell_thrust, cell_band_bottom, cell_band_level;
-      std::vector<double> column_thrust, band_bottom, band_level, face_weights;
-      std::vector<double> surface_weights;
-      MonotoneCubic                     reconstruction;
-      dealii::Tensor<1, 2>              total_load;
+      std::vector<double>  cell_thrust, cell_band_bottom, cell_band_level;
+      std::vector<double>  column_thrust, band_bottom, band_level, face_weights;
+      std::vector<double>  surface_weights;
+      MonotoneCubic        reconstruction;
+      dealii::Tensor<1, 2> total_load;
     };
   } // namespace coupling
 } // namespace slidewave

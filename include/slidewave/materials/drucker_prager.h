@@ -152,7 +152,7 @@ namespace slidewave
       PlasticCorrection
       update_stress(dealii::SymmetricTensor<2, 3>       &stress,
                     const dealii::SymmetricTensor<2, 3> &strain_increment,
-                    double &equivalent_plastic_strain) const;
+                    double                              &equivalent_plastic_strain) const;
 
       /**
        * Returns the trial stress @p stress [Pa] to the admissible domain

@@ -34,8 +34,7 @@ namespace slidewave
 
       /** The stress increment [Pa] produced by @p strain_increment. */
       dealii::SymmetricTensor<2, 3>
-      stress_increment(
-        const dealii::SymmetricTensor<2, 3> &strain_increment) const;
+      stress_increment(const dealii::SymmetricTensor<2, 3> &strain_increment) const;
 
       /**
        * The strain that @p stress_increment produces: the inverse of
@@ -43,8 +42,7 @@ namespace slidewave
        * plastic correction of the stress as a plastic strain.
        */
       dealii::SymmetricTensor<2, 3>
-      strain_increment(
-        const dealii::SymmetricTensor<2, 3> &stress_increment) const;
+      strain_increment(const dealii::SymmetricTensor<2, 3> &stress_increment) const;
 
       /** Bulk modulus K = E / (3 (1 - 2ν)) [Pa]. */
       double

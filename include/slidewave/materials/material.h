@@ -72,8 +72,7 @@ namespace slidewave
      * order ω^2 per step.
      */
     void
-    apply_jaumann_rotation(dealii::SymmetricTensor<2, 3> &stress,
-                           double                         spin_increment_xy);
+    apply_jaumann_rotation(dealii::SymmetricTensor<2, 3> &stress, double spin_increment_xy);
 
 
 
@@ -102,7 +101,7 @@ namespace slidewave
       update_stress(dealii::SymmetricTensor<2, 3>       &stress,
                     const dealii::SymmetricTensor<2, 3> &strain_increment,
                     double                               spin_increment_xy,
-                    double &equivalent_plastic_strain) const;
+                    double                              &equivalent_plastic_strain) const;
 
       /**
        * K + 4G/3 [Pa], which sets the speed of compression waves and thereby

@@ -3,13 +3,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-
+#include <memory>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/mpm/material_point_solver.h>
 #include <slidewave/mpm/particle_output.h>
-
-#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -94,15 +92,15 @@ namespace slidewave
       double           rotation_rate = 1.;
       dealii::Point<2> rotation_centre;
 
-      const SceneParameters                 &scene;
-      ExactSolution exact_solution = ExactSolution::none;
-      double        bar_length = 25., bar_amplitude = 0.1, column_height = 1.;
-      double        tolerance = 0.;
-      SolverParameters                       parameters;
-      std::unique_ptr<MaterialPointSolver>   solver;
+      const SceneParameters &scene;
+      ExactSolution          exact_solution = ExactSolution::none;
+      double                 bar_length = 25., bar_amplitude = 0.1, column_height = 1.;
+      double                 tolerance = 0.;
+      SolverParameters       parameters;
+      std::unique_ptr<MaterialPointSolver>        solver;
       ParticleOutput                              particle_output;
       std::vector<std::pair<double, std::string>> grid_files;
-      bool                                        write_grid = false;
+      bool                                        write_grid     = false;
       unsigned int                                check_interval = 10;
       /** Kinetic + elastic energy at the start, and the total mass (for the guards). */
       double initial_energy = 0., total_mass = 0.;

@@ -1,6 +1,7 @@
 #ifndef slidewave_mpm_material_point_solver_h
 #define slidewave_mpm_material_point_solver_h
 
+#include <array>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -10,17 +11,14 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/particles/particle_handler.h>
-
+#include <functional>
+#include <memory>
+#include <set>
 #include <slidewave/materials/material.h>
 #include <slidewave/mpm/material_region.h>
 #include <slidewave/mpm/rigid_wall.h>
 #include <slidewave/mpm/shape_functions.h>
 #include <slidewave/mpm/step_timeline.h>
-
-#include <array>
-#include <memory>
-#include <functional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -77,34 +75,34 @@ namespace slidewave
       void
       parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
 
-      dealii::Point<2>     lower_left, upper_right;
-      double               cell_size              = 0.01;
-      unsigned int         particles_per_direction = 2;
-      ShapeFunction        shape_function         = ShapeFunction::q1;
-      UpdateScheme         update_scheme          = UpdateScheme::usl;
-      double               flip_fraction          = 0.99;
-      double               time_step_multiplier   = 0.5;
-      double               fixed_time_step        = 0.;
-      bool                 b_bar                  = true;
-      bool                 detailed_timing        = false;
-      bool                 step_timeline          = false;
+      dealii::Point<2> lower_left, upper_right;
+      double           cell_size               = 0.01;
+      unsigned int     particles_per_direction = 2;
+      ShapeFunction    shape_function          = ShapeFunction::q1;
+      UpdateScheme     update_scheme           = UpdateScheme::usl;
+      double           flip_fraction           = 0.99;
+      double           time_step_multiplier    = 0.5;
+      double           fixed_time_step         = 0.;
+      bool             b_bar                   = true;
+      bool             detailed_timing         = false;
+      bool             step_timeline           = false;
       /** 'Particle relocation = full sort': deal.II's sort every step. */
-      bool                 full_sort_every_step   = false;
+      bool                 full_sort_every_step = false;
       dealii::Tensor<1, 2> gravity;
-      double               damping                = 0.;
+      double               damping = 0.;
       /** Boundary conditions on the left, right, bottom and top sides (ids 0-3). */
-      std::array<GridBoundary, 4> boundaries{{GridBoundary::roller, GridBoundary::roller,
-                                              GridBoundary::fixed, GridBoundary::free}};
+      std::array<GridBoundary, 4> boundaries{
+        {GridBoundary::roller, GridBoundary::roller, GridBoundary::fixed, GridBoundary::free}};
 
       std::vector<RigidWall> walls;
 
       /** Subsection "Adaptive grid". */
       struct Adaptivity
       {
-        bool         enabled             = false;
-        unsigned int levels              = 2;
-        unsigned int buffer_cells        = 2;
-        unsigned int interval            = 50;
+        bool         enabled      = false;
+        unsigned int levels       = 2;
+        unsigned int buffer_cells = 2;
+        unsigned int interval     = 50;
         /** Subsection "Load balancing" (also without adaptivity). */
         unsigned int particle_weight     = 1000000;
         double       imbalance_threshold = 1.1;
@@ -249,7 +247,7 @@ namespace slidewave
       {
         double       mass = 0., momentum_x = 0., momentum_y = 0., kinetic_energy = 0.;
         double       max_speed = 0., runout = 0., max_height = 0.;
-        double       lost_mass = 0.;
+        double       lost_mass   = 0.;
         unsigned int n_particles = 0;
       };
 
@@ -366,8 +364,8 @@ namespace slidewave
       template <typename Function>
       void
       for_each_point_to_create(const dealii::Triangulation<2>::cell_iterator &cell,
-                               unsigned int                                  n,
-                               const Function                               &f) const;
+                               unsigned int                                   n,
+                               const Function                                &f) const;
 
       /** Dofs, vectors, hanging nodes, boundary nodes, patches, walls of the grid. */
       void
@@ -422,8 +420,9 @@ namespace slidewave
 
       template <typename ParticleAccessorType>
       void
-      shape_weights(const ParticleAccessorType &particle, unsigned int cell_index,
-                    NodeWeights &w) const;
+      shape_weights(const ParticleAccessorType &particle,
+                    unsigned int                cell_index,
+                    NodeWeights                &w) const;
 
       double
       empty_node_mass() const;
@@ -506,14 +505,14 @@ namespace slidewave
       void
       apply_boundary_conditions(Vector &vx, Vector &vy) const;
 
-      SolverParameters                        prm;
-      std::vector<materials::Material>        materials;
+      SolverParameters                                prm;
+      std::vector<materials::Material>                materials;
       dealii::parallel::distributed::Triangulation<2> tria;
-      dealii::FE_Q<2>                         fe;
-      dealii::DoFHandler<2>                   dofs;
-      dealii::Particles::ParticleHandler<2>   particle_handler;
+      dealii::FE_Q<2>                                 fe;
+      dealii::DoFHandler<2>                           dofs;
+      dealii::Particles::ParticleHandler<2>           particle_handler;
 
-      Vector nodal_mass;
+      Vector                nodal_mass;
       std::array<Vector, 2> momentum, force, velocity, velocity_old;
 
       /** The grid work of a step is over the nodes the points talk to, not the whole grid
@@ -554,7 +553,7 @@ namespace slidewave
       std::vector<unsigned int> patch_start;
       /** The active cells around each vertex (rebuilt when the grid changes). */
       std::vector<std::set<dealii::Triangulation<2>::active_cell_iterator>> vertex_cells;
-      std::vector<PatchCell>    patch_cells;
+      std::vector<PatchCell>                                                patch_cells;
       /** The cell of each entry of patch_cells. */
       std::vector<dealii::Triangulation<2>::active_cell_iterator> patch_cell_iterators;
 
@@ -598,9 +597,9 @@ namespace slidewave
       /** The first point of this rank that left through a side that is not free: points may
        *  only leave through free sides, one crossing a wall is a failed step. */
       std::string wall_crossing;
-      double time      = 0.;
+      double      time = 0.;
       /** Local damping in force now (heavier during gravity loading). */
-      double damping = 0.;
+      double damping         = 0.;
       bool   loading_gravity = false;
       /** Set-up, before the points exist: the cell weights count the points to come, so
        * that they are created on the ranks that keep them. */

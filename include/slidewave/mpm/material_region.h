@@ -1,12 +1,10 @@
 #ifndef slidewave_mpm_material_region_h
 #define slidewave_mpm_material_region_h
 
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
-
 #include <memory>
-
 #include <string>
 #include <vector>
 
@@ -43,9 +41,9 @@ namespace slidewave
       std::pair<dealii::Point<2>, dealii::Point<2>>
       bounding_box() const;
 
-      std::string                  material_name;
+      std::string material_name;
       /** Index of the material in SolverParameters::materials (set when parsed). */
-      unsigned int                 material_index = 0;
+      unsigned int material_index = 0;
       /** Initial velocity of a point at @p p. */
       dealii::Tensor<1, 2>
       initial_velocity(const dealii::Point<2> &p) const;

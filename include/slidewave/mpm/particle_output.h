@@ -2,9 +2,7 @@
 #define slidewave_mpm_particle_output_h
 
 #include <deal.II/base/data_out_base.h>
-
 #include <slidewave/mpm/material_point_solver.h>
-
 #include <string>
 #include <utility>
 #include <vector>

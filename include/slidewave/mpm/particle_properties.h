@@ -17,20 +17,20 @@ namespace slidewave
     {
       enum Index : unsigned int
       {
-        mass,                      ///< m_p [kg per m of thickness]
-        volume,                    ///< current V_p [m^2]
-        initial_volume,            ///< V_p at t = 0 [m^2]
-        velocity_x,                ///< v_p [m/s]
+        mass,           ///< m_p [kg per m of thickness]
+        volume,         ///< current V_p [m^2]
+        initial_volume, ///< V_p at t = 0 [m^2]
+        velocity_x,     ///< v_p [m/s]
         velocity_y,
-        stress_xx,                 ///< Cauchy stress, tension positive [Pa]
+        stress_xx, ///< Cauchy stress, tension positive [Pa]
         stress_yy,
         stress_xy,
         stress_zz,                 ///< out of plane (plane strain)
         equivalent_plastic_strain, ///< accumulated, dimensionless
         initial_x,                 ///< position at t = 0 [m]
         initial_y,
-        material_id,               ///< index of the material (stored as a double)
-        domain_half_x,             ///< GIMP: half-lengths of the point's domain [m]
+        material_id,   ///< index of the material (stored as a double)
+        domain_half_x, ///< GIMP: half-lengths of the point's domain [m]
         domain_half_y,
         n_properties
       };
@@ -42,8 +42,8 @@ namespace slidewave
        * surface loads (SolverParameters::point_forces); other scenes neither allocate nor
        * scatter it.
        */
-      constexpr unsigned int point_force_x              = n_properties;
-      constexpr unsigned int point_force_y              = n_properties + 1;
+      constexpr unsigned int point_force_x                  = n_properties;
+      constexpr unsigned int point_force_y                  = n_properties + 1;
       constexpr unsigned int n_properties_with_point_forces = n_properties + 2;
     } // namespace property
 

@@ -3,7 +3,6 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
-
 #include <limits>
 #include <string>
 

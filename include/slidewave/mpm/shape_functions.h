@@ -47,11 +47,11 @@ namespace slidewave
     q1_weights(const PatchCell &cell, const double xi, const double eta, NodeWeights &w)
     {
       const double inv_hx = 1. / cell.hx, inv_hy = 1. / cell.hy;
-      w.n        = 4;
-      w.value[0] = (1. - xi) * (1. - eta);
-      w.value[1] = xi * (1. - eta);
-      w.value[2] = (1. - xi) * eta;
-      w.value[3] = xi * eta;
+      w.n         = 4;
+      w.value[0]  = (1. - xi) * (1. - eta);
+      w.value[1]  = xi * (1. - eta);
+      w.value[2]  = (1. - xi) * eta;
+      w.value[3]  = xi * eta;
       w.grad_x[0] = -(1. - eta) * inv_hx;
       w.grad_x[1] = (1. - eta) * inv_hx;
       w.grad_x[2] = -eta * inv_hx;
@@ -70,7 +70,8 @@ namespace slidewave
      * of @p patch (the cells sharing a vertex with the point's cell) that the domain
      * overlaps:
      *
-     *   S_i = (1/|D|) sum_K int_{D cap K} N_i^K,   grad S_i = (1/|D|) sum_K int_{D cap K} grad N_i^K.
+     *   S_i = (1/|D|) sum_K int_{D cap K} N_i^K,   grad S_i = (1/|D|) sum_K int_{D cap K} grad
+     * N_i^K.
      *
      * On a uniform grid this is the uGIMP function of paper 000, Eq. 11 (Bardenhagen and
      * Kober 2004), C1 across cell faces. Built from whole cells, it stays right where the
@@ -79,10 +80,15 @@ namespace slidewave
      * pokes out of the grid.
      */
     inline void
-    gimp_weights(const PatchCell *patch_begin, const PatchCell *patch_end, const double x,
-                 const double y, const double lx, const double ly, NodeWeights &w)
+    gimp_weights(const PatchCell *patch_begin,
+                 const PatchCell *patch_end,
+                 const double     x,
+                 const double     y,
+                 const double     lx,
+                 const double     ly,
+                 NodeWeights     &w)
     {
-      w.n = 0;
+      w.n               = 0;
       const double left = x - lx, right = x + lx, bottom = y - ly, top = y + ly;
       double       area = 0.;
       for (const PatchCell *cell = patch_begin; cell != patch_end; ++cell)
@@ -100,19 +106,19 @@ namespace slidewave
           const double ix0 = (b - a) - ix1;
           const double dx1 = xb - xa; // (b - a) / hx
           const double ya = (c - cell->y0) / cell->hy, yb = (d - cell->y0) / cell->hy;
-          const double iy1 = 0.5 * cell->hy * (yb * yb - ya * ya);
-          const double iy0 = (d - c) - iy1;
-          const double dy1 = yb - ya;
+          const double iy1   = 0.5 * cell->hy * (yb * yb - ya * ya);
+          const double iy0   = (d - c) - iy1;
+          const double dy1   = yb - ya;
           const double ix[2] = {ix0, ix1}, iy[2] = {iy0, iy1};
           const double dx[2] = {-dx1, dx1}, dy[2] = {-dy1, dy1};
           for (unsigned int j = 0; j < 2; ++j)
             for (unsigned int i = 0; i < 2; ++i)
               {
                 const unsigned int k = w.n++;
-                w.node[k]   = cell->node[2 * j + i];
-                w.value[k]  = ix[i] * iy[j];
-                w.grad_x[k] = dx[i] * iy[j];
-                w.grad_y[k] = ix[i] * dy[j];
+                w.node[k]            = cell->node[2 * j + i];
+                w.value[k]           = ix[i] * iy[j];
+                w.grad_x[k]          = dx[i] * iy[j];
+                w.grad_y[k]          = ix[i] * dy[j];
               }
           area += (b - a) * (d - c);
         }
@@ -131,8 +137,12 @@ namespace slidewave
      * gimp_weights.
      */
     inline void
-    gimp_1d(const double x, const double xi, const double h, const double lp, double &value,
-            double &derivative)
+    gimp_1d(const double x,
+            const double xi,
+            const double h,
+            const double lp,
+            double      &value,
+            double      &derivative)
     {
       const double r = x - xi, s = r < 0. ? -1. : 1., ar = std::abs(r);
       if (ar < lp)

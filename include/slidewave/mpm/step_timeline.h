@@ -25,16 +25,16 @@ namespace slidewave
     public:
       enum Part : unsigned int
       {
-        grid_changes,        ///< adaptation or repartitioning, when due
-        scatter,             ///< particles to grid, up to the exchange
-        exchange_sums,       ///< nodal sums of the ghost nodes to their owners
-        grid_update,         ///< nodal velocities, boundary conditions
-        exchange_velocities, ///< nodal velocities from the owners to the ghost nodes
-        gather,              ///< grid to particles (with the stresses under USL)
-        musl_remap,          ///< MUSL: re-map and stress update (with its own exchanges)
-        relocation,          ///< points into their new cells
+        grid_changes,         ///< adaptation or repartitioning, when due
+        scatter,              ///< particles to grid, up to the exchange
+        exchange_sums,        ///< nodal sums of the ghost nodes to their owners
+        grid_update,          ///< nodal velocities, boundary conditions
+        exchange_velocities,  ///< nodal velocities from the owners to the ghost nodes
+        gather,               ///< grid to particles (with the stresses under USL)
+        musl_remap,           ///< MUSL: re-map and stress update (with its own exchanges)
+        relocation,           ///< points into their new cells
         relocation_reduction, ///< the ranks agree whether the patch relocation suffices
-        full_sort,           ///< deal.II's sort, when due or needed
+        full_sort,            ///< deal.II's sort, when due or needed
         n_parts
       };
 
@@ -74,7 +74,7 @@ namespace slidewave
     private:
       struct Row
       {
-        unsigned int                 step = 0;
+        unsigned int                step = 0;
         std::array<double, n_parts> seconds{};
       };
       std::vector<Row> rows;

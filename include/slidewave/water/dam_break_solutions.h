@@ -16,8 +16,7 @@ namespace slidewave
     class DamBreakSolution
     {
     public:
-      DamBreakSolution(double left_depth, double right_depth, double dam_position,
-                       double gravity);
+      DamBreakSolution(double left_depth, double right_depth, double dam_position, double gravity);
 
       /** Depth and velocity at (@p x, @p t). */
       void

@@ -59,10 +59,10 @@ namespace slidewave
           {
             const double sqrt_h_l = std::sqrt(h_l);
             const double sqrt_h_r = std::sqrt(h_r);
-            const double u_hat = (sqrt_h_l * u_l + sqrt_h_r * u_r) / (sqrt_h_l + sqrt_h_r);
-            const double c_hat = std::sqrt(0.5 * g * (h_l + h_r));
-            s_l                = std::min(u_l - c_l, u_hat - c_hat);
-            s_r                = std::max(u_r + c_r, u_hat + c_hat);
+            const double u_hat    = (sqrt_h_l * u_l + sqrt_h_r * u_r) / (sqrt_h_l + sqrt_h_r);
+            const double c_hat    = std::sqrt(0.5 * g * (h_l + h_r));
+            s_l                   = std::min(u_l - c_l, u_hat - c_hat);
+            s_r                   = std::max(u_r + c_r, u_hat + c_hat);
           }
 
         const double f_h_l = wet_l ? q_l : 0.;
@@ -83,8 +83,8 @@ namespace slidewave
         else
           {
             const double inv = 1. / (s_r - s_l);
-            flux_h = (s_r * f_h_l - s_l * f_h_r + s_l * s_r * (h_r - h_l)) * inv;
-            flux_q = (s_r * f_q_l - s_l * f_q_r + s_l * s_r * (q_r - q_l)) * inv;
+            flux_h           = (s_r * f_h_l - s_l * f_h_r + s_l * s_r * (h_r - h_l)) * inv;
+            flux_q           = (s_r * f_q_l - s_l * f_q_r + s_l * s_r * (q_r - q_l)) * inv;
           }
       }
 
@@ -137,8 +137,8 @@ namespace slidewave
         const double lambda_1 = u_hat - c_hat;
         const double lambda_2 = u_hat + c_hat;
 
-        const double c_l = sqrt_g * sqrt_h_l;
-        const double c_r = sqrt_g * sqrt_h_r;
+        const double c_l   = sqrt_g * sqrt_h_l;
+        const double c_r   = sqrt_g * sqrt_h_r;
         const double abs_1 = entropy_fixed_abs(lambda_1, u_l - c_l, u_r - c_r);
         const double abs_2 = entropy_fixed_abs(lambda_2, u_l + c_l, u_r + c_r);
 
@@ -152,8 +152,9 @@ namespace slidewave
         const double w_1 = abs_1 * alpha_1;
         const double w_2 = abs_2 * alpha_2;
         flux_h           = 0.5 * (q_l + q_r - w_1 - w_2);
-        flux_q = 0.5 * (q_l * u_l + q_r * u_r + 0.5 * g * (h_l * h_l + h_r * h_r) -
-                        w_1 * lambda_1 - w_2 * lambda_2);
+        flux_q           = 0.5
+                 * (q_l * u_l + q_r * u_r + 0.5 * g * (h_l * h_l + h_r * h_r) - w_1 * lambda_1
+                    - w_2 * lambda_2);
       }
     } // namespace numerical_flux
 
@@ -191,7 +192,7 @@ namespace slidewave
         return a > 0. ? m : -m;
       }
     } // namespace slope_limiter
-  } // namespace water
+  }   // namespace water
 } // namespace slidewave
 
 #endif

@@ -2,10 +2,8 @@
 #define slidewave_water_shallow_water_1d_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <slidewave/water/water_boundary.h>
 #include <slidewave/water/water_mesh.h>
-
 #include <string>
 #include <vector>
 

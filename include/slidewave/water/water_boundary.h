@@ -2,12 +2,10 @@
 #define slidewave_water_water_boundary_h
 
 #include <deal.II/base/parameter_handler.h>
-
+#include <memory>
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/table_1d.h>
-
-#include <memory>
 #include <string>
 
 namespace slidewave

@@ -2,7 +2,6 @@
 #define slidewave_water_water_mesh_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <string>
 #include <vector>
 

@@ -1,10 +1,9 @@
 #ifndef slidewave_water_water_output_h
 #define slidewave_water_water_output_h
 
-#include <slidewave/water/shallow_water_1d.h>
-
 #include <memory>
 #include <ostream>
+#include <slidewave/water/shallow_water_1d.h>
 #include <string>
 #include <vector>
 

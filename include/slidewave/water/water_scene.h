@@ -3,16 +3,14 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-
+#include <memory>
+#include <optional>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/water/dam_break_solutions.h>
 #include <slidewave/water/shallow_water_1d.h>
 #include <slidewave/water/water_output.h>
 #include <slidewave/water/water_state_parameters.h>
-
-#include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,7 +84,7 @@ namespace slidewave
       /** B(x, t) of a bed that moves in time ('Bed/Time dependent'); null for a fixed bed.
        *  Re-sampled before every step, as the coupled scenes replace the bed. */
       std::unique_ptr<BedElevation> moving_bed;
-      std::vector<double>               bed_work;
+      std::vector<double>           bed_work;
 
       GaugeRecorder gauges;
 
@@ -98,9 +96,9 @@ namespace slidewave
       double                          tolerance_linf     = 0.;
       double                          tolerance_volume   = 0.;
 
-      bool         is_writer = false;
-      std::string  water_directory;
-      double       initial_volume = 0.;
+      bool        is_writer = false;
+      std::string water_directory;
+      double      initial_volume = 0.;
     };
   } // namespace water
 } // namespace slidewave

@@ -2,13 +2,11 @@
 #define slidewave_water_water_state_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-
+#include <memory>
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/table_1d.h>
 #include <slidewave/water/water_mesh.h>
-
-#include <memory>
 #include <string>
 #include <vector>
 

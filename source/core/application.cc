@@ -295,12 +295,6 @@ namespace slidewave
         switch (scene.physics)
           {
               case Physics::shallow_water: {
-                if (scene.resume || scene.checkpoint_steps > 0 || scene.checkpoint_minutes > 0.
-                    || scene.checkpoint_at_end)
-                  throw InputError(scene.resume ? "Checkpoint/Resume" : "Checkpoint",
-                                   scene.resume ? "true" : "set",
-                                   "no checkpoint settings in a shallow-water scene "
-                                   "(checkpoints exist for material points only, for now)");
                 water::WaterScene water_scene(scene, prm);
                 if (validate_only)
                   {

@@ -8,9 +8,10 @@
 #include <limits>
 #include <slidewave/core/format.h>
 #include <slidewave/core/input_error.h>
-#include <slidewave/core/progress_reporter.h>
+#include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/coupling/coupled_scene.h>
+#include <sstream>
 
 namespace slidewave
 {
@@ -20,93 +21,6 @@ namespace slidewave
     {
       const std::string section = "Coupling";
     } // namespace
-
-
-
-    void
-    CouplingParameters::declare_parameters(dealii::ParameterHandler &prm)
-    {
-      using namespace dealii::Patterns;
-      prm.declare_entry("Water density",
-                        "1000",
-                        Double(0.),
-                        "rho_w [kg/m^3]: the water's pressure and bed shear on the soil "
-                        "(paper 000, Eq. 10).");
-      prm.declare_entry("Water cells",
-                        "grid columns",
-                        Selection("grid columns|water mesh"),
-                        "'grid columns': the water cells are the columns of the material "
-                        "points' grid at set-up (non-uniform where it is refined; the bed is "
-                        "the soil surface of each column, no interpolation between meshes). "
-                        "'water mesh': the cells of 'Shallow water/Mesh'; the bed is "
-                        "reconstructed on them by monotone cubic interpolation through the "
-                        "column surfaces.");
-      prm.declare_entry("Soil surface",
-                        "envelope",
-                        Selection("envelope|top"),
-                        "How the soil makes the water's bed in each grid column. 'top': the "
-                        "top of the highest point domain in the column, max (y_p + l_p); it "
-                        "jumps by the height of a face when the first point enters a column. "
-                        "'envelope': the mean across the column of the upper envelope of the "
-                        "point domains (8 samples per column; the grid's floor where there "
-                        "is no soil): the top where the soil fills the column, and growing "
-                        "continuously as a face moves into a column.");
-      prm.declare_entry("Water loads on soil",
-                        "true",
-                        Bool(),
-                        "Whether the water's pressure and bed shear act on the soil (false: "
-                        "one-way coupling, the soil moves the water only).");
-      prm.declare_entry("Maximum substeps",
-                        "1",
-                        Integer(1, 1000),
-                        "1: one step of both solvers per coupled step, the smaller of the two "
-                        "stable steps (Eq. 38). N > 1: the solver with the smaller stable step "
-                        "takes up to N steps inside one step of the other; bed and loads are "
-                        "exchanged once per coupled step.");
-      prm.enter_subsection("Verification");
-      {
-        prm.declare_entry("Tolerance on volume balance",
-                          "0",
-                          Double(0.),
-                          "If > 0, the run fails (exit status 3) when, at any step, the water "
-                          "volume differs from the initial volume plus the boundary inflow by "
-                          "more than this fraction of the initial volume.");
-        prm.declare_entry("Tolerance on free surface",
-                          "0",
-                          Double(0.),
-                          "If > 0, the run fails (exit status 3) when, at any step, the free "
-                          "surface over the wet cells is not flat to within this [m] (max eta "
-                          "- min eta): the coupled lake at rest.");
-        prm.declare_entry("Tolerance on soil speed",
-                          "0",
-                          Double(0.),
-                          "If > 0, the run fails (exit status 3) when a material point ever "
-                          "moves faster than this [m/s]: soil that must stay at rest.");
-      }
-      prm.leave_subsection();
-    }
-
-
-
-    void
-    CouplingParameters::parse_parameters(dealii::ParameterHandler &prm)
-    {
-      water_density = prm.get_double("Water density");
-      water_cells   = prm.get("Water cells") == "grid columns" ? WaterCells::grid_columns :
-                                                                 WaterCells::water_mesh;
-      soil_surface  = prm.get("Soil surface") == "top" ? SoilSurface::top : SoilSurface::envelope;
-      loads_on_soil = prm.get_bool("Water loads on soil");
-      maximum_substeps = prm.get_integer("Maximum substeps");
-      if (!(water_density > 0.))
-        throw InputError(section + "/Water density",
-                         to_string(water_density),
-                         "a density > 0 kg/m^3");
-      prm.enter_subsection("Verification");
-      tolerance_volume       = prm.get_double("Tolerance on volume balance");
-      tolerance_free_surface = prm.get_double("Tolerance on free surface");
-      tolerance_soil_speed   = prm.get_double("Tolerance on soil speed");
-      prm.leave_subsection();
-    }
 
 
 
@@ -125,13 +39,6 @@ namespace slidewave
       : scene(scene_parameters)
       , particle_output(scene_parameters.output_directory)
     {
-      if (scene.resume || scene.checkpoint_steps > 0 || scene.checkpoint_minutes > 0.
-          || scene.checkpoint_at_end)
-        throw InputError(scene.resume ? "Checkpoint/Resume" : "Checkpoint",
-                         scene.resume ? "true" : "set",
-                         "no checkpoint settings in a coupled scene (checkpoints exist for "
-                         "material points only, for now)");
-
       prm.enter_subsection(section);
       coupling.parse_parameters(prm);
       prm.leave_subsection();
@@ -222,15 +129,27 @@ namespace slidewave
         = configured_mesh ? *configured_mesh : water::WaterMesh(grid_columns);
       // Soil columns: the grid columns themselves, or, under an independent water mesh,
       // uniform columns of the finest cell size.
-      std::vector<double> columns;
+      std::vector<double> soil_columns;
       if (!configured_mesh)
-        columns = mesh.interfaces();
+        soil_columns = mesh.interfaces();
       else
         {
           const unsigned int n = static_cast<unsigned int>(std::round((right - left) / cell_size));
           for (unsigned int c = 0; c <= n; ++c)
-            columns.push_back(c == n ? right : left + c * cell_size);
+            soil_columns.push_back(c == n ? right : left + c * cell_size);
         }
+      build_water(mesh, soil_columns);
+      set_initial_water();
+      if (coupling.loads_on_soil)
+        interface->apply_water_loads(*soil, *water, 0.);
+    }
+
+
+
+    void
+    CoupledScene::build_water(const water::WaterMesh &mesh, const std::vector<double> &soil_columns)
+    {
+      columns = soil_columns;
       std::vector<double> terrain_at_columns;
       for (unsigned int c = 0; c + 1 < columns.size(); ++c)
         {
@@ -252,9 +171,6 @@ namespace slidewave
                                                        coupling.water_density,
                                                        coupling.soil_surface,
                                                        soil_parameters.lower_left[1]);
-      set_initial_water();
-      if (coupling.loads_on_soil)
-        interface->apply_water_loads(*soil, *water, 0.);
     }
 
 
@@ -318,21 +234,16 @@ namespace slidewave
 
 
     void
-    CoupledScene::add_statistics(Statistics        &statistics,
-                                 const unsigned int step,
-                                 const double       time,
-                                 const double       dt,
-                                 const unsigned int soil_steps,
-                                 const unsigned int water_steps) const
+    CoupledScene::add_statistics(Statistics &statistics, const StepInfo &info) const
     {
       const auto   integrals = soil->integrals();
       const double volume    = water->water_volume();
-      statistics.add_value("time", time);
-      statistics.add_value("step", step);
-      statistics.add_value("dt", dt);
+      statistics.add_value("time", info.time);
+      statistics.add_value("step", info.step);
+      statistics.add_value("dt", info.dt);
       // Steps of each solver in this coupled step (more than one when it sub-cycles).
-      statistics.add_value("soil_steps", soil_steps);
-      statistics.add_value("water_steps", water_steps);
+      statistics.add_value("soil_steps", info.step == 0 ? 0u : n_soil);
+      statistics.add_value("water_steps", info.step == 0 ? 0u : n_water);
       statistics.add_value("runout", integrals.runout - initial_toe);
       statistics.add_value("max_free_surface", water->max_free_surface());
       statistics.add_value("max_soil_speed", integrals.max_speed);
@@ -353,6 +264,9 @@ namespace slidewave
     void
     CoupledScene::write_output(const unsigned int index, const double time)
     {
+      if (scene.test_mode)
+        return;
+      dealii::TimerOutput::Scope scope(*timer, "coupled: output");
       particle_output.write(*soil, index, time);
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         {
@@ -367,37 +281,56 @@ namespace slidewave
     bool
     CoupledScene::run()
     {
-      return run_with_timer(scene.test_mode,
-                            [this](dealii::TimerOutput &timer) { return run_time_loop(timer); });
+      return run_with_timer(scene.test_mode, [this](dealii::TimerOutput &timer) {
+        return RunControl(scene).run(*this, timer);
+      });
     }
 
 
 
-    bool
-    CoupledScene::run_time_loop(dealii::TimerOutput &timer)
+    void
+    CoupledScene::create_output_directories() const
     {
-      using dealii::TimerOutput;
-      const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-      const bool test_mode = scene.test_mode;
-      dealii::ConditionalOStream pcout(std::cout, is_writer && !test_mode);
-      if (is_writer)
-        {
-          std::filesystem::create_directories(scene.output_directory + "/particles");
-          std::filesystem::create_directories(scene.output_directory + "/water");
-        }
-      MPI_Barrier(MPI_COMM_WORLD);
+      std::filesystem::create_directories(scene.output_directory + "/particles");
+      std::filesystem::create_directories(scene.output_directory + "/water");
+    }
 
+
+
+    void
+    CoupledScene::create_soil(dealii::TimerOutput &timer_output)
+    {
+      timer = &timer_output;
+      soil  = std::make_unique<mpm::MaterialPointSolver>(soil_parameters);
+      soil->set_timer(timer_output);
+    }
+
+
+
+    void
+    CoupledScene::set_up(const double start_time, dealii::TimerOutput &timer_output)
+    {
       {
-        TimerOutput::Scope scope(timer, "coupled: setup");
-        soil = std::make_unique<mpm::MaterialPointSolver>(soil_parameters);
-        soil->set_timer(timer);
-        soil->setup(scene.start_time, [this]() { setup_water(); });
+        dealii::TimerOutput::Scope scope(timer_output, "coupled: setup");
+        create_soil(timer_output);
+        soil->setup(start_time, [this]() { setup_water(); });
         // The soil may have settled under gravity loading: the water starts over the bed
         // it left, at the initial condition.
         set_initial_water();
         if (coupling.loads_on_soil)
           interface->apply_water_loads(*soil, *water, 0.);
       }
+      initial_volume = water->water_volume();
+      initial_toe    = soil->integrals().runout;
+      gauges.open(scene.output_directory + "/water/gauges.csv",
+                  dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+    }
+
+
+
+    void
+    CoupledScene::check_set_up() const
+    {
       if (soil_parameters.fixed_time_step > 0.)
         {
           const double limit = mpm::max_time_step_multiplier * soil->stability_limit();
@@ -408,144 +341,121 @@ namespace slidewave
                              "(sqrt(2) max(c_p + |v_p|)) = "
                                + to_string(limit) + " s");
         }
-      initial_volume = water->water_volume();
-      initial_toe    = soil->integrals().runout;
+    }
 
-      pcout << "Coupled: " << soil->particles().n_global_particles() << " material points on "
-            << soil->triangulation().n_global_active_cells() << " cells; " << water->n_cells()
-            << " water cells ("
-            << (coupling.water_cells == WaterCells::grid_columns ? "grid columns" : "water mesh")
-            << ", widths " << water->mesh().min_width() << " to " << water->mesh().max_width()
-            << " m); output in " << scene.output_directory << std::endl;
 
-      Statistics statistics;
-      statistics.open(scene.output_directory + "/statistics.csv",
-                      is_writer,
-                      is_writer && test_mode ? &std::cout : nullptr);
-      gauges.open(scene.output_directory + "/water/gauges.csv", is_writer);
-      ProgressReporter progress(is_writer && !test_mode ? &std::cout : nullptr,
-                                scene.start_time,
-                                scene.end_time);
 
-      const double end_time       = scene.end_time;
-      const double time_tolerance = 1e-12 * (end_time - scene.start_time);
-      double       time           = scene.start_time;
-      unsigned int step = 0, output_index = 0;
-      double next_output = scene.output_interval > 0. ? time + scene.output_interval : end_time;
-      double max_volume_balance = 0., max_deviation = free_surface_deviation(),
-             max_soil_speed = soil->integrals().max_speed;
+    std::string
+    CoupledScene::description() const
+    {
+      std::ostringstream line;
+      line << "Coupled: " << soil->particles().n_global_particles() << " material points on "
+           << soil->triangulation().n_global_active_cells() << " cells; " << water->n_cells()
+           << " water cells ("
+           << (coupling.water_cells == WaterCells::grid_columns ? "grid columns" : "water mesh")
+           << ", widths " << water->mesh().min_width() << " to " << water->mesh().max_width()
+           << " m); output in " << scene.output_directory;
+      return line.str();
+    }
 
-      if (!test_mode)
+
+
+    void
+    CoupledScene::start(const StepInfo &info)
+    {
+      max_deviation  = free_surface_deviation();
+      max_soil_speed = soil->integrals().max_speed;
+      gauges.record(info.time, *water);
+    }
+
+
+
+    double
+    CoupledScene::stable_time_step()
+    {
+      {
+        dealii::TimerOutput::Scope scope(*timer, "coupled: time step");
+        dt_soil  = soil->stable_time_step();
+        dt_water = water->stable_time_step();
+      }
+      if (scene.maximum_time_step > 0.)
         {
-          TimerOutput::Scope scope(timer, "coupled: output");
-          write_output(output_index, time);
+          dt_soil  = std::min(dt_soil, scene.maximum_time_step);
+          dt_water = std::min(dt_water, scene.maximum_time_step);
         }
-      ++output_index;
-      gauges.record(time, *water);
-      add_statistics(statistics, step, time, 0., 0, 0);
-      statistics.end_row();
+      const unsigned int N = coupling.maximum_substeps;
+      return dt_soil <= dt_water ? std::min(dt_water, N * dt_soil) :
+                                   std::min(dt_soil, N * dt_water);
+    }
 
-      while (time < end_time - time_tolerance)
+
+
+    void
+    CoupledScene::advance(const StepInfo &info)
+    {
+      const double time = info.old_time, dt = info.dt;
+      n_soil = static_cast<unsigned int>(std::max(1., std::ceil(dt / dt_soil * (1. - 1e-12))));
+      {
+        dealii::TimerOutput::Scope scope(*timer, "coupled: soil");
+        for (unsigned int k = 0; k < n_soil; ++k)
+          soil->advance(dt / n_soil);
+      }
+      {
+        dealii::TimerOutput::Scope scope(*timer, "coupled: bed from soil");
+        exchange_bed();
+      }
+      // The water covers the same interval, in steps of its own CFL limit (one step unless
+      // it sub-cycles).
+      dealii::TimerOutput::Scope scope(*timer, "coupled: water");
+      n_water         = 0;
+      last_water_step = dt;
+      for (double t = time; t < time + dt * (1. - 1e-12); ++n_water)
         {
-          // Eq. 38, or the larger step with the other solver sub-cycling inside it.
-          double dt_soil, dt_water;
-          {
-            TimerOutput::Scope scope(timer, "coupled: time step");
-            dt_soil  = soil->stable_time_step();
-            dt_water = water->stable_time_step();
-          }
-          if (scene.maximum_time_step > 0.)
-            {
-              dt_soil  = std::min(dt_soil, scene.maximum_time_step);
-              dt_water = std::min(dt_water, scene.maximum_time_step);
-            }
-          const unsigned int N      = coupling.maximum_substeps;
-          double             dt     = dt_soil <= dt_water ? std::min(dt_water, N * dt_soil) :
-                                                            std::min(dt_soil, N * dt_water);
-          const double       target = std::min(next_output, end_time);
-          const bool         reaches_target = time + dt >= target - time_tolerance;
-          if (reaches_target)
-            dt = target - time;
-          const auto substeps = [&](const double limit) {
-            return static_cast<unsigned int>(std::max(1., std::ceil(dt / limit * (1. - 1e-12))));
-          };
-          const unsigned int n_soil = substeps(dt_soil);
-
-          {
-            TimerOutput::Scope scope(timer, "coupled: soil");
-            for (unsigned int k = 0; k < n_soil; ++k)
-              soil->advance(dt / n_soil);
-          }
-          {
-            TimerOutput::Scope scope(timer, "coupled: bed from soil");
-            exchange_bed();
-          }
-          // The water covers the same interval, in steps of its own CFL limit (one step
-          // unless it sub-cycles).
-          unsigned int n_water   = 0;
-          double       last_step = dt;
-          {
-            TimerOutput::Scope scope(timer, "coupled: water");
-            for (double t = time; t < time + dt * (1. - 1e-12); ++n_water)
-              {
-                const double limit = n_water == 0 ? dt_water : water->stable_time_step();
-                last_step          = std::min(limit, time + dt - t);
-                if (time + dt - t - last_step < 1e-12 * dt)
-                  last_step = time + dt - t;
-                water->advance(t, last_step);
-                t += last_step;
-              }
-          }
-          time = reaches_target ? target : time + dt;
-          ++step;
-
-          const bool is_output_time = reaches_target && target == next_output;
-          const bool at_end         = time >= end_time - time_tolerance;
-          const bool reports = is_output_time || at_end || step % scene.statistics_interval == 0;
-          {
-            TimerOutput::Scope scope(timer, "coupled: checks");
-            check_state(step, time, step % check_interval == 0 || reports);
-          }
-          if (coupling.loads_on_soil)
-            {
-              TimerOutput::Scope scope(timer, "coupled: water loads on soil");
-              interface->apply_water_loads(*soil, *water, last_step);
-            }
-
-          if (coupling.tolerance_volume > 0.)
-            max_volume_balance = std::max(max_volume_balance,
-                                          std::abs(water->water_volume() - initial_volume
-                                                   - water->net_boundary_inflow())
-                                            / initial_volume);
-          if (coupling.tolerance_free_surface > 0.)
-            max_deviation = std::max(max_deviation, free_surface_deviation());
-          if (coupling.tolerance_soil_speed > 0.)
-            max_soil_speed = std::max(max_soil_speed, soil->integrals().max_speed);
-
-          {
-            TimerOutput::Scope scope(timer, "coupled: output");
-            gauges.record(time, *water);
-            if (is_output_time || at_end)
-              {
-                if (!test_mode)
-                  write_output(output_index, time);
-                ++output_index;
-                if (is_output_time)
-                  next_output
-                    = scene.output_interval > 0. ? next_output + scene.output_interval : end_time;
-              }
-            if (reports)
-              {
-                add_statistics(statistics, step, time, dt, n_soil, n_water);
-                statistics.end_row();
-              }
-          }
-          progress.report(step, time, dt, at_end);
+          const double limit = n_water == 0 ? dt_water : water->stable_time_step();
+          last_water_step    = std::min(limit, time + dt - t);
+          if (time + dt - t - last_water_step < 1e-12 * dt)
+            last_water_step = time + dt - t;
+          water->advance(t, last_water_step);
+          t += last_water_step;
         }
+    }
+
+
+
+    void
+    CoupledScene::after_step(const StepInfo &info)
+    {
+      {
+        dealii::TimerOutput::Scope scope(*timer, "coupled: checks");
+        check_state(info.step, info.time, info.step % check_interval == 0 || info.reports);
+      }
+      if (coupling.loads_on_soil)
+        {
+          dealii::TimerOutput::Scope scope(*timer, "coupled: water loads on soil");
+          interface->apply_water_loads(*soil, *water, last_water_step);
+        }
+      if (coupling.tolerance_volume > 0.)
+        max_volume_balance
+          = std::max(max_volume_balance,
+                     std::abs(water->water_volume() - initial_volume - water->net_boundary_inflow())
+                       / initial_volume);
+      if (coupling.tolerance_free_surface > 0.)
+        max_deviation = std::max(max_deviation, free_surface_deviation());
+      if (coupling.tolerance_soil_speed > 0.)
+        max_soil_speed = std::max(max_soil_speed, soil->integrals().max_speed);
+      dealii::TimerOutput::Scope scope(*timer, "coupled: output");
+      gauges.record(info.time, *water);
+    }
+
+
+
+    bool
+    CoupledScene::finish(const StepInfo &)
+    {
       gauges.flush();
-
-      bool       within = true;
-      const auto check  = [&](const char *what, const double value, const double tolerance) {
+      const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      bool       within    = true;
+      const auto check     = [&](const char *what, const double value, const double tolerance) {
         if (tolerance <= 0.)
           return;
         const bool ok = value <= tolerance;
@@ -563,5 +473,105 @@ namespace slidewave
       check("Largest soil speed [m/s]", max_soil_speed, coupling.tolerance_soil_speed);
       return within;
     }
+
+
+
+    std::string
+    CoupledScene::checkpoint_signature() const
+    {
+      std::ostringstream out;
+      out.precision(12);
+      out << "coupled; grid " << soil_parameters.lower_left << " to " << soil_parameters.upper_right
+          << ", cell size " << soil_parameters.cell_size << ", adaptive levels "
+          << (soil_parameters.adaptivity.enabled ? soil_parameters.adaptivity.levels : 0)
+          << "; materials";
+      for (const auto &material : soil_parameters.materials)
+        out << " '" << material.name << "'";
+      out << "; water cells: "
+          << (coupling.water_cells == WaterCells::grid_columns ? "grid columns" : "water mesh")
+          << "; loads on soil: " << (coupling.loads_on_soil ? "yes" : "no");
+      return out.str();
+    }
+
+
+
+    std::vector<std::string>
+    CoupledScene::growing_files() const
+    {
+      return {"water/gauges.csv"};
+    }
+
+
+
+    void
+    CoupledScene::save(io::CheckpointRecord &record)
+    {
+      gauges.flush();
+      const auto soil_state = soil->state();
+      record.put("soil/time", soil_state.time);
+      record.put("soil/lost_mass", soil_state.lost_mass);
+      record.put("soil/steps", soil_state.n_steps);
+      record.put("coupling/columns", columns);
+      record.put("coupling/water_interfaces", water->mesh().interfaces());
+      const dealii::Tensor<1, 2> load = interface->load_on_soil();
+      record.put("coupling/load_on_soil", std::vector<double>{load[0], load[1]});
+      record.put("coupling/initial_volume", initial_volume);
+      record.put("coupling/initial_toe", initial_toe);
+      record.put("coupling/max_volume_balance", max_volume_balance);
+      record.put("coupling/max_deviation", max_deviation);
+      record.put("coupling/max_soil_speed", max_soil_speed);
+      record.put("water/depth", water->depth());
+      record.put("water/discharge", water->discharge());
+      record.put("water/bed", water->bed());
+      record.put("water/boundary_inflow", water->net_boundary_inflow());
+      record.put_files("soil/particle_files", particle_output.files);
+    }
+
+
+
+    void
+    CoupledScene::save_data(const std::string &prefix)
+    {
+      soil->save(prefix);
+    }
+
+
+
+    void
+    CoupledScene::resume(const io::CheckpointRecord &record,
+                         const std::string          &prefix,
+                         dealii::TimerOutput        &timer_output)
+    {
+      dealii::TimerOutput::Scope scope(timer_output, "coupled: setup");
+      create_soil(timer_output);
+      soil->load(prefix);
+      mpm::MaterialPointSolver::State soil_state;
+      soil_state.time      = record.get("soil/time");
+      soil_state.lost_mass = record.get("soil/lost_mass");
+      soil_state.n_steps   = record.get_unsigned("soil/steps");
+      soil->set_state(soil_state);
+
+      // The water cells and the soil columns of the set-up (the grid may have been
+      // refined since), the water's state and the loads of the last step (the point
+      // forces themselves travel with the material points).
+      build_water(water::WaterMesh(record.get_vector("coupling/water_interfaces")),
+                  record.get_vector("coupling/columns"));
+      water->restore(record.get_vector("water/depth"),
+                     record.get_vector("water/discharge"),
+                     record.get_vector("water/bed"),
+                     record.get("water/boundary_inflow"));
+      const auto &load = record.get_vector("coupling/load_on_soil");
+      interface->restore_load_on_soil(dealii::Tensor<1, 2>({load.at(0), load.at(1)}));
+      initial_volume        = record.get("coupling/initial_volume");
+      initial_toe           = record.get("coupling/initial_toe");
+      max_volume_balance    = record.get("coupling/max_volume_balance");
+      max_deviation         = record.get("coupling/max_deviation");
+      max_soil_speed        = record.get("coupling/max_soil_speed");
+      particle_output.files = record.get_files("soil/particle_files");
+      gauges.open(scene.output_directory + "/water/gauges.csv",
+                  dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0,
+                  true);
+    }
+
   } // namespace coupling
 } // namespace slidewave

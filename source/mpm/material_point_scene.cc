@@ -12,7 +12,7 @@
 #include <fstream>
 #include <iostream>
 #include <slidewave/core/input_error.h>
-#include <slidewave/core/progress_reporter.h>
+#include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/mpm/material_point_scene.h>
 #include <slidewave/mpm/particle_properties.h>
@@ -240,123 +240,6 @@ namespace slidewave
 
 
     void
-    MaterialPointScene::write_checkpoint(const LoopState &loop) const
-    {
-      // Written to checkpoint.tmp, then renamed: a run killed while writing leaves the
-      // previous checkpoints intact. The last two are kept.
-      namespace fs             = std::filesystem;
-      const bool     is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-      const fs::path directory = scene.output_directory;
-      const fs::path tmp = directory / "checkpoint.tmp", latest = directory / "checkpoint",
-                     previous = directory / "checkpoint.previous";
-      if (is_writer)
-        {
-          fs::remove_all(tmp);
-          fs::create_directories(tmp);
-        }
-      MPI_Barrier(MPI_COMM_WORLD);
-      solver->save((tmp / "state").string());
-      const auto solver_state = solver->state();
-      if (is_writer)
-        {
-          std::ofstream out(tmp / "scene.txt");
-          out.precision(17);
-          out << checkpoint_signature() << '\n'
-              << solver_state.time << ' ' << solver_state.lost_mass << ' ' << solver_state.n_steps
-              << '\n'
-              << loop.time << ' ' << loop.step << ' ' << loop.output_index << ' '
-              << loop.next_output << ' ' << scene.output_interval << ' ' << loop.max_error << ' '
-              << initial_energy << ' ' << total_mass << '\n'
-              << particle_output.files.size() << '\n';
-          for (const auto &[t, name] : particle_output.files)
-            out << t << ' ' << name << '\n';
-          out << grid_files.size() << '\n';
-          for (const auto &[t, name] : grid_files)
-            out << t << ' ' << name << '\n';
-          out.close();
-          if (fs::exists(directory / "statistics.csv"))
-            fs::copy_file(directory / "statistics.csv",
-                          tmp / "statistics.csv",
-                          fs::copy_options::overwrite_existing);
-          if (fs::exists(latest))
-            {
-              fs::remove_all(previous);
-              fs::rename(latest, previous);
-            }
-          fs::rename(tmp, latest);
-        }
-      MPI_Barrier(MPI_COMM_WORLD);
-    }
-
-
-
-    void
-    MaterialPointScene::resume(LoopState &loop)
-    {
-      namespace fs             = std::filesystem;
-      const fs::path directory = scene.output_directory;
-      fs::path       source    = directory / "checkpoint";
-      if (!fs::exists(source / "scene.txt"))
-        source = directory / "checkpoint.previous";
-      if (!fs::exists(source / "scene.txt"))
-        throw InputError("Checkpoint/Resume",
-                         "true",
-                         "a checkpoint in '" + (directory / "checkpoint").string()
-                           + "' (there is none: run the scene with checkpoints first)");
-      std::ifstream in(source / "scene.txt");
-      std::string   signature;
-      std::getline(in, signature);
-      if (signature != checkpoint_signature())
-        throw InputError("Checkpoint/Resume",
-                         "true",
-                         "a checkpoint written by this scene; the one in '" + source.string()
-                           + "' is of a different scene (" + signature
-                           + "; this scene: " + checkpoint_signature() + ")");
-      MaterialPointSolver::State solver_state;
-      double                     saved_interval = 0.;
-      in >> solver_state.time >> solver_state.lost_mass >> solver_state.n_steps;
-      in >> loop.time >> loop.step >> loop.output_index >> loop.next_output >> saved_interval
-        >> loop.max_error >> initial_energy >> total_mass;
-      std::size_t n = 0;
-      in >> n;
-      particle_output.files.resize(n);
-      for (auto &[t, name] : particle_output.files)
-        in >> t >> name;
-      in >> n;
-      grid_files.resize(n);
-      for (auto &[t, name] : grid_files)
-        in >> t >> name;
-      if (!in)
-        throw InputError("Checkpoint/Resume",
-                         "true",
-                         "a readable checkpoint ('" + (source / "scene.txt").string()
-                           + "' is damaged)");
-      // A changed output interval restarts the output times from the resumed time.
-      if (saved_interval != scene.output_interval)
-        loop.next_output
-          = scene.output_interval > 0. ?
-              scene.start_time
-                + (std::floor((loop.time - scene.start_time) / scene.output_interval + 1e-9) + 1.)
-                    * scene.output_interval :
-              scene.end_time;
-      if (!(scene.end_time > loop.time))
-        throw InputError("Time/End time",
-                         to_string(scene.end_time),
-                         "a time after the checkpoint's t = " + to_string(loop.time) + " s");
-
-      solver->load((source / "state").string());
-      solver->set_state(solver_state);
-      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0
-          && fs::exists(source / "statistics.csv"))
-        fs::copy_file(source / "statistics.csv",
-                      directory / "statistics.csv",
-                      fs::copy_options::overwrite_existing);
-      MPI_Barrier(MPI_COMM_WORLD);
-    }
-
-
-
-    void
     MaterialPointScene::check_state(const unsigned int step, const double time) const
     {
       const std::string where
@@ -387,15 +270,12 @@ namespace slidewave
 
 
     void
-    MaterialPointScene::add_statistics(Statistics        &statistics,
-                                       const unsigned int step,
-                                       const double       time,
-                                       const double       dt) const
+    MaterialPointScene::add_statistics(Statistics &statistics, const StepInfo &info) const
     {
       const auto integrals = solver->integrals();
-      statistics.add_value("time", time);
-      statistics.add_value("step", step);
-      statistics.add_value("dt", dt);
+      statistics.add_value("time", info.time);
+      statistics.add_value("step", info.step);
+      statistics.add_value("dt", info.dt);
       statistics.add_value("particles", integrals.n_particles);
       statistics.add_value("mass", integrals.mass);
       statistics.add_value("lost_mass", integrals.lost_mass);
@@ -415,41 +295,46 @@ namespace slidewave
     bool
     MaterialPointScene::run()
     {
-      return run_with_timer(scene.test_mode,
-                            [this](dealii::TimerOutput &timer) { return run_time_loop(timer); });
+      return run_with_timer(scene.test_mode, [this](dealii::TimerOutput &timer) {
+        return RunControl(scene).run(*this, timer);
+      });
     }
 
 
 
-    bool
-    MaterialPointScene::run_time_loop(dealii::TimerOutput &timer)
+    void
+    MaterialPointScene::create_output_directories() const
     {
-      using dealii::TimerOutput;
-      const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-      const bool test_mode = scene.test_mode;
-      dealii::ConditionalOStream pcout(std::cout, is_writer && !test_mode);
+      std::filesystem::create_directories(scene.output_directory + "/particles");
+      if (write_grid)
+        std::filesystem::create_directories(scene.output_directory + "/grid");
+    }
 
-      if (is_writer)
-        {
-          std::filesystem::create_directories(scene.output_directory + "/particles");
-          if (write_grid)
-            std::filesystem::create_directories(scene.output_directory + "/grid");
-        }
-      MPI_Barrier(MPI_COMM_WORLD);
 
-      LoopState loop;
-      loop.time = scene.start_time;
-      loop.next_output
-        = scene.output_interval > 0. ? scene.start_time + scene.output_interval : scene.end_time;
-      {
-        TimerOutput::Scope scope(timer, "mpm: setup");
-        solver = std::make_unique<MaterialPointSolver>(parameters);
-        solver->set_timer(timer);
-        if (scene.resume)
-          resume(loop);
-        else
-          solver->setup(scene.start_time);
-      }
+
+    void
+    MaterialPointScene::create_solver(dealii::TimerOutput &timer_output)
+    {
+      timer  = &timer_output;
+      solver = std::make_unique<MaterialPointSolver>(parameters);
+      solver->set_timer(timer_output);
+    }
+
+
+
+    void
+    MaterialPointScene::set_up(const double start_time, dealii::TimerOutput &timer_output)
+    {
+      dealii::TimerOutput::Scope scope(timer_output, "mpm: setup");
+      create_solver(timer_output);
+      solver->setup(start_time);
+    }
+
+
+
+    void
+    MaterialPointScene::check_set_up() const
+    {
       if (parameters.fixed_time_step > 0.)
         {
           const double limit = max_time_step_multiplier * solver->stability_limit();
@@ -462,127 +347,131 @@ namespace slidewave
                                + " s (paper 000, Eq. 23 with the largest stable alpha, "
                                  "1/sqrt(2): doc/stability.md)");
         }
-      pcout << "Material points: " << solver->particles().n_global_particles() << " particles on "
-            << solver->triangulation().n_global_active_cells() << " cells; output in "
-            << scene.output_directory
-            << (scene.resume ? "; resumed at t = " + to_string(loop.time) + " s" : "") << std::endl;
+    }
 
-      Statistics statistics;
-      statistics.open(scene.output_directory + "/statistics.csv",
-                      is_writer,
-                      is_writer && test_mode ? &std::cout : nullptr,
-                      scene.resume);
-      ProgressReporter progress(is_writer && !test_mode ? &std::cout : nullptr,
-                                loop.time,
-                                scene.end_time);
 
-      double        dt             = 0.;
-      const double  end_time       = scene.end_time;
-      const double  time_tolerance = 1e-12 * (end_time - scene.start_time);
-      double       &time           = loop.time;
-      unsigned int &step           = loop.step;
-      unsigned int &output_index   = loop.output_index;
-      double       &next_output    = loop.next_output;
-      double       &max_error      = loop.max_error;
 
-      if (!scene.resume)
+    std::string
+    MaterialPointScene::description() const
+    {
+      return "Material points: " + std::to_string(solver->particles().n_global_particles())
+             + " particles on " + std::to_string(solver->triangulation().n_global_active_cells())
+             + " cells; output in " + scene.output_directory;
+    }
+
+
+
+    void
+    MaterialPointScene::start(const StepInfo &)
+    {
+      const auto budget = solver->energy_budget();
+      initial_energy    = budget.kinetic + budget.elastic;
+      total_mass        = solver->integrals().mass;
+    }
+
+
+
+    double
+    MaterialPointScene::stable_time_step()
+    {
+      dealii::TimerOutput::Scope scope(*timer, "mpm: time step");
+      return solver->stable_time_step();
+    }
+
+
+
+    void
+    MaterialPointScene::advance(const StepInfo &info)
+    {
+      dealii::TimerOutput::Scope scope(*timer, "mpm: advance");
+      solver->advance(info.dt);
+    }
+
+
+
+    void
+    MaterialPointScene::after_step(const StepInfo &info)
+    {
+      // The guards run every 'Check interval' steps and before anything is written, so
+      // that no output ever holds a bad state.
+      if (info.step % check_interval == 0 || info.reports)
         {
-          if (!test_mode)
-            {
-              TimerOutput::Scope scope(timer, "mpm: output");
-              if (write_grid)
-                write_grid_state(output_index, time);
-              particle_output.write(*solver, output_index++, time);
-            }
-          add_statistics(statistics, step, time, dt);
-          statistics.end_row();
-          const auto budget = solver->energy_budget();
-          initial_energy    = budget.kinetic + budget.elastic;
-          total_mass        = solver->integrals().mass;
+          dealii::TimerOutput::Scope scope(*timer, "mpm: checks");
+          check_state(info.step, info.time);
         }
-      const unsigned int first_step      = step;
-      const auto         wall_start      = std::chrono::steady_clock::now();
-      auto               last_checkpoint = wall_start;
+      if (exact_solution == ExactSolution::bar_vibration)
+        max_error = std::max(max_error, bar_velocity_error(info.time));
+    }
 
-      while (time < end_time - time_tolerance)
-        {
-          {
-            TimerOutput::Scope scope(timer, "mpm: time step");
-            dt = solver->stable_time_step();
-          }
-          if (scene.maximum_time_step > 0.)
-            dt = std::min(dt, scene.maximum_time_step);
-          const double target         = std::min(next_output, end_time);
-          const bool   reaches_target = time + dt >= target - time_tolerance;
-          if (reaches_target)
-            dt = target - time;
-          {
-            TimerOutput::Scope scope(timer, "mpm: advance");
-            solver->advance(dt);
-          }
-          time = reaches_target ? target : time + dt;
-          ++step;
 
-          const bool is_output_time = reaches_target && target == next_output;
-          const bool at_end         = time >= end_time - time_tolerance;
-          const bool reports = is_output_time || at_end || step % scene.statistics_interval == 0;
-          // The guards run every 'Check interval' steps and before anything is written,
-          // so that no output ever holds a bad state.
-          if (step % check_interval == 0 || reports)
-            {
-              TimerOutput::Scope scope(timer, "mpm: checks");
-              check_state(step, time);
-            }
 
-          if (is_output_time || at_end)
-            {
-              if (!test_mode)
-                {
-                  TimerOutput::Scope scope(timer, "mpm: output");
-                  if (write_grid)
-                    write_grid_state(output_index, time);
-                  particle_output.write(*solver, output_index++, time);
-                }
-              if (is_output_time)
-                next_output
-                  = scene.output_interval > 0. ? next_output + scene.output_interval : end_time;
-            }
-          if (reports)
-            {
-              TimerOutput::Scope scope(timer, "mpm: statistics");
-              add_statistics(statistics, step, time, dt);
-              statistics.end_row();
-            }
-          if (exact_solution == ExactSolution::bar_vibration)
-            max_error = std::max(max_error, bar_velocity_error(time));
-          progress.report(step, time, dt, at_end);
+    void
+    MaterialPointScene::write_output(const unsigned int index, const double time)
+    {
+      if (scene.test_mode)
+        return;
+      dealii::TimerOutput::Scope scope(*timer, "mpm: output");
+      if (write_grid)
+        write_grid_state(index, time);
+      particle_output.write(*solver, index, time);
+    }
 
-          // Checkpoints: every N steps, every T minutes of wall time (rank 0's clock
-          // decides), at the end.
-          bool checkpoint = (scene.checkpoint_steps > 0 && step % scene.checkpoint_steps == 0)
-                            || (at_end && scene.checkpoint_at_end);
-          if (scene.checkpoint_minutes > 0.)
-            {
-              const double minutes
-                = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_checkpoint)
-                    .count()
-                  / 60.;
-              checkpoint = checkpoint
-                           || dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD,
-                                                                minutes >= scene.checkpoint_minutes,
-                                                                0);
-            }
-          if (checkpoint)
-            {
-              TimerOutput::Scope scope(timer, "mpm: checkpoint");
-              statistics.flush();
-              write_checkpoint(loop);
-              last_checkpoint = std::chrono::steady_clock::now();
-            }
-        }
 
+
+    void
+    MaterialPointScene::save(io::CheckpointRecord &record)
+    {
+      const auto solver_state = solver->state();
+      record.put("mpm/time", solver_state.time);
+      record.put("mpm/lost_mass", solver_state.lost_mass);
+      record.put("mpm/steps", solver_state.n_steps);
+      record.put("mpm/max_error", max_error);
+      record.put("mpm/initial_energy", initial_energy);
+      record.put("mpm/total_mass", total_mass);
+      record.put_files("mpm/particle_files", particle_output.files);
+      record.put_files("mpm/grid_files", grid_files);
+    }
+
+
+
+    void
+    MaterialPointScene::save_data(const std::string &prefix)
+    {
+      solver->save(prefix);
+    }
+
+
+
+    void
+    MaterialPointScene::resume(const io::CheckpointRecord &record,
+                               const std::string          &prefix,
+                               dealii::TimerOutput        &timer_output)
+    {
+      dealii::TimerOutput::Scope scope(timer_output, "mpm: setup");
+      MaterialPointSolver::State solver_state;
+      solver_state.time      = record.get("mpm/time");
+      solver_state.lost_mass = record.get("mpm/lost_mass");
+      solver_state.n_steps   = record.get_unsigned("mpm/steps");
+      max_error              = record.get("mpm/max_error");
+      initial_energy         = record.get("mpm/initial_energy");
+      total_mass             = record.get("mpm/total_mass");
+      particle_output.files  = record.get_files("mpm/particle_files");
+      grid_files             = record.get_files("mpm/grid_files");
+      first_step             = record.get_unsigned("run/step");
+      create_solver(timer_output);
+      solver->load(prefix);
+      solver->set_state(solver_state);
+    }
+
+
+
+    bool
+    MaterialPointScene::finish(const StepInfo &info)
+    {
+      const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      dealii::ConditionalOStream pcout(std::cout, is_writer && !scene.test_mode);
       pcout << "Particle relocation: deal.II's full sort in " << solver->n_full_particle_sorts()
-            << " of " << step - first_step << " steps" << std::endl;
+            << " of " << info.step - first_step << " steps" << std::endl;
       if (const StepTimeline *timeline = solver->step_timeline())
         {
           const auto written = timeline->write(scene.output_directory + "/step_timeline.csv");
@@ -599,7 +488,7 @@ namespace slidewave
         max_error = column_stress_error();
       if (exact_solution == ExactSolution::rigid_rotation)
         {
-          const auto errors = rotation_errors(time);
+          const auto errors = rotation_errors(info.time);
           max_error         = errors[0];
           if (is_writer)
             {
@@ -608,12 +497,11 @@ namespace slidewave
                             sizeof(line),
                             "Rigid rotation by %.4f rad: largest distance of a point from its "
                             "rigidly rotated position = %.3e m",
-                            rotation_rate * (time - scene.start_time),
+                            rotation_rate * (info.time - scene.start_time),
                             errors[1]);
               std::cout << line << std::endl;
             }
         }
-      bool within = true;
       if (exact_solution != ExactSolution::none && is_writer)
         {
           char line[160];
@@ -631,9 +519,7 @@ namespace slidewave
             std::cout << " <= " << tolerance << ": " << (max_error <= tolerance ? "yes" : "no");
           std::cout << std::endl;
         }
-      if (tolerance > 0.)
-        within = max_error <= tolerance;
-      return within;
+      return !(tolerance > 0.) || max_error <= tolerance;
     }
   } // namespace mpm
 } // namespace slidewave

@@ -60,12 +60,14 @@ namespace slidewave
 
 
     void
-    GaugeRecorder::open(const std::string &file_name, const bool is_writer)
+    GaugeRecorder::open(const std::string &file_name, const bool is_writer, const bool append)
     {
       if (!is_writer || gauge_positions.empty())
         return;
-      file = std::make_unique<std::ofstream>(file_name);
+      file = std::make_unique<std::ofstream>(file_name, append ? std::ios::app : std::ios::out);
       file->precision(12);
+      if (append)
+        return;
       *file << "time";
       for (const double x : gauge_positions)
         *file << ",eta(x=" << x << ")";

@@ -11,11 +11,12 @@
 #include <slidewave/core/format.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parsed_expression.h>
-#include <slidewave/core/progress_reporter.h>
+#include <slidewave/core/run_control.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/water/water_output.h>
 #include <slidewave/water/water_scene.h>
+#include <sstream>
 #include <utility>
 
 namespace slidewave
@@ -35,7 +36,7 @@ namespace slidewave
       using namespace dealii::Patterns;
       prm.enter_subsection(section);
       {
-        SolverParameters::declare_parameters(prm);
+        ShallowWaterParameters::declare_parameters(prm);
 
         prm.enter_subsection("Mesh");
         WaterMesh::declare_parameters(prm);
@@ -112,10 +113,11 @@ namespace slidewave
     WaterScene::WaterScene(const SceneParameters &scene_parameters, dealii::ParameterHandler &prm)
       : scene(scene_parameters)
       , is_writer(dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      , water_directory(scene_parameters.output_directory + "/water")
     {
       prm.enter_subsection(section);
 
-      SolverParameters solver_parameters;
+      ShallowWaterParameters solver_parameters;
       solver_parameters.parse_parameters(prm, section);
 
       prm.enter_subsection("Mesh");
@@ -321,134 +323,121 @@ namespace slidewave
     bool
     WaterScene::run()
     {
-      return run_with_timer(scene.test_mode,
-                            [this](dealii::TimerOutput &timer) { return run_time_loop(timer); });
+      return run_with_timer(scene.test_mode, [this](dealii::TimerOutput &timer) {
+        return RunControl(scene).run(*this, timer);
+      });
+    }
+
+
+
+    void
+    WaterScene::create_output_directories() const
+    {
+      std::filesystem::create_directories(water_directory);
+    }
+
+
+
+    void
+    WaterScene::set_up(double, dealii::TimerOutput &timer_output)
+    {
+      // The mesh, the bed and the initial state were built with the scene.
+      timer = &timer_output;
+      gauges.open(water_directory + "/gauges.csv", is_writer);
+    }
+
+
+
+    std::string
+    WaterScene::description() const
+    {
+      std::ostringstream line;
+      line << "Shallow water: " << water->n_cells() << " cells on [" << water->mesh().left_end()
+           << ", " << water->mesh().right_end() << "] m, widths " << water->mesh().min_width()
+           << " to " << water->mesh().max_width() << " m; output in " << scene.output_directory;
+      return line.str();
+    }
+
+
+
+    void
+    WaterScene::start(const StepInfo &info)
+    {
+      gauges.record(info.time, *water);
+    }
+
+
+
+    double
+    WaterScene::stable_time_step()
+    {
+      dealii::TimerOutput::Scope scope(*timer, "water: advance");
+      return water->stable_time_step();
+    }
+
+
+
+    void
+    WaterScene::advance(const StepInfo &info)
+    {
+      if (moving_bed)
+        {
+          dealii::TimerOutput::Scope scope(*timer, "water: bed update");
+          for (unsigned int i = 0; i < bed_work.size(); ++i)
+            {
+              bed_work[i] = moving_bed->value(water->mesh().center(i), info.time);
+              if (!std::isfinite(bed_work[i]))
+                throw RunFailure("at step " + std::to_string(info.step)
+                                 + ", t = " + to_string(info.time)
+                                 + " s: the moving bed B(x, t) is not finite at x = "
+                                 + to_string(water->mesh().center(i)) + " m");
+            }
+          water->set_bed(bed_work);
+        }
+      dealii::TimerOutput::Scope scope(*timer, "water: advance");
+      water->advance(info.old_time, info.dt);
+    }
+
+
+
+    void
+    WaterScene::after_step(const StepInfo &info)
+    {
+      const unsigned int bad = water->find_invalid_cell();
+      if (bad < water->n_cells())
+        throw RunFailure("at step " + std::to_string(info.step) + ", t = " + to_string(info.time)
+                         + " s: " + water->describe_invalid_cell(bad));
+
+      if (tolerance_volume > 0.)
+        max_volume_balance
+          = std::max(max_volume_balance,
+                     std::abs(water->water_volume() - initial_volume - water->net_boundary_inflow())
+                       / initial_volume);
+      dealii::TimerOutput::Scope scope(*timer, "water: output");
+      gauges.record(info.time, *water);
+    }
+
+
+
+    void
+    WaterScene::write_output(const unsigned int index, const double time)
+    {
+      dealii::TimerOutput::Scope scope(*timer, "water: output");
+      write_profile(index, time);
     }
 
 
 
     bool
-    WaterScene::run_time_loop(dealii::TimerOutput &timer)
+    WaterScene::finish(const StepInfo &info)
     {
-      using dealii::TimerOutput;
-      const bool                 test_mode = scene.test_mode;
-      dealii::ConditionalOStream pcout(std::cout, is_writer && !test_mode);
-
-      water_directory = scene.output_directory + "/water";
-      if (is_writer)
-        std::filesystem::create_directories(water_directory);
-
-      pcout << "Shallow water: " << water->n_cells() << " cells on [" << water->mesh().left_end()
-            << ", " << water->mesh().right_end() << "] m, widths " << water->mesh().min_width()
-            << " to " << water->mesh().max_width() << " m; output in " << scene.output_directory
-            << std::endl;
-
-      Statistics statistics;
-      statistics.open(scene.output_directory + "/statistics.csv",
-                      is_writer,
-                      is_writer && test_mode ? &std::cout : nullptr);
-
-      gauges.open(water_directory + "/gauges.csv", is_writer);
-
-      ProgressReporter progress(is_writer && !test_mode ? &std::cout : nullptr,
-                                scene.start_time,
-                                scene.end_time);
-
-      double       time               = scene.start_time;
-      unsigned int step               = 0;
-      unsigned int output_index       = 0;
-      double       dt                 = 0.;
-      const double end_time           = scene.end_time;
-      const double time_tolerance     = 1e-12 * (end_time - scene.start_time);
-      double       max_volume_balance = 0.;
-      double       next_output
-        = scene.output_interval > 0. ? scene.start_time + scene.output_interval : end_time;
-
-      write_profile(output_index++, time);
-      gauges.record(time, *water);
-      add_statistics(statistics, step, time, dt);
-      statistics.end_row();
-
-      while (time < end_time - time_tolerance)
-        {
-          {
-            TimerOutput::Scope scope(timer, "water: advance");
-            dt = water->stable_time_step();
-          }
-          if (scene.maximum_time_step > 0.)
-            dt = std::min(dt, scene.maximum_time_step);
-          const double target = std::min(next_output, end_time);
-          if (!std::isfinite(dt))
-            dt = target - time;
-          const bool reaches_target = time + dt >= target - time_tolerance;
-          if (reaches_target)
-            dt = target - time;
-
-          if (moving_bed)
-            {
-              TimerOutput::Scope scope(timer, "water: bed update");
-              const double       t_new = reaches_target ? target : time + dt;
-              for (unsigned int i = 0; i < bed_work.size(); ++i)
-                {
-                  bed_work[i] = moving_bed->value(water->mesh().center(i), t_new);
-                  if (!std::isfinite(bed_work[i]))
-                    throw RunFailure("at step " + std::to_string(step + 1)
-                                     + ", t = " + to_string(t_new)
-                                     + " s: the moving bed B(x, t) is not "
-                                       "finite at x = "
-                                     + to_string(water->mesh().center(i)) + " m");
-                }
-              water->set_bed(bed_work);
-            }
-          {
-            TimerOutput::Scope scope(timer, "water: advance");
-            water->advance(time, dt);
-          }
-          time = reaches_target ? target : time + dt;
-          ++step;
-
-          const unsigned int bad = water->find_invalid_cell();
-          if (bad < water->n_cells())
-            throw RunFailure("at step " + std::to_string(step) + ", t = " + to_string(time)
-                             + " s: " + water->describe_invalid_cell(bad));
-
-          if (tolerance_volume > 0.)
-            max_volume_balance = std::max(max_volume_balance,
-                                          std::abs(water->water_volume() - initial_volume
-                                                   - water->net_boundary_inflow())
-                                            / initial_volume);
-
-          {
-            TimerOutput::Scope scope(timer, "water: output");
-            gauges.record(time, *water);
-            const bool is_output_time = reaches_target && target == next_output;
-            if (is_output_time)
-              {
-                write_profile(output_index++, time);
-                next_output += scene.output_interval;
-                if (scene.output_interval <= 0.)
-                  next_output = end_time;
-              }
-            const bool at_end = time >= end_time - time_tolerance;
-            if (at_end && !is_output_time)
-              write_profile(output_index++, time);
-            if (step % scene.statistics_interval == 0 || is_output_time || at_end)
-              {
-                add_statistics(statistics, step, time, dt);
-                statistics.end_row();
-              }
-          }
-          progress.report(step, time, dt, time >= end_time - time_tolerance);
-        }
-
       gauges.flush();
-
-      if (is_writer && !test_mode)
-        std::cout << "Finished " << step << " steps; water volume changed by "
+      if (is_writer && !scene.test_mode)
+        std::cout << "Finished " << info.step << " steps; water volume changed by "
                   << format("%.3e",
                             water->water_volume() - initial_volume - water->net_boundary_inflow())
                   << " m^2 beyond the boundary inflow." << std::endl;
-      bool within = report_errors(time);
+      bool within = report_errors(info.time);
       if (tolerance_volume > 0.)
         {
           const bool ok = max_volume_balance <= tolerance_volume;
@@ -464,16 +453,68 @@ namespace slidewave
 
 
 
+    std::string
+    WaterScene::checkpoint_signature() const
+    {
+      std::ostringstream out;
+      out.precision(12);
+      out << "shallow water; " << water->n_cells() << " cells on [" << water->mesh().left_end()
+          << ", " << water->mesh().right_end() << "] m";
+      return out.str();
+    }
+
+
+
+    std::vector<std::string>
+    WaterScene::growing_files() const
+    {
+      return {"water/gauges.csv"};
+    }
+
+
+
     void
-    WaterScene::add_statistics(Statistics        &statistics,
-                               const unsigned int step,
-                               const double       time,
-                               const double       dt) const
+    WaterScene::save(io::CheckpointRecord &record)
+    {
+      gauges.flush();
+      record.put("water/depth", water->depth());
+      record.put("water/discharge", water->discharge());
+      record.put("water/bed", water->bed());
+      record.put("water/boundary_inflow", water->net_boundary_inflow());
+      record.put("water/initial_volume", initial_volume);
+      record.put("water/initial_depth", initial_depth);
+      record.put("water/initial_discharge", initial_discharge);
+      record.put("water/max_volume_balance", max_volume_balance);
+    }
+
+
+
+    void
+    WaterScene::resume(const io::CheckpointRecord &record,
+                       const std::string &,
+                       dealii::TimerOutput &timer_output)
+    {
+      timer = &timer_output;
+      water->restore(record.get_vector("water/depth"),
+                     record.get_vector("water/discharge"),
+                     record.get_vector("water/bed"),
+                     record.get("water/boundary_inflow"));
+      initial_volume     = record.get("water/initial_volume");
+      initial_depth      = record.get_vector("water/initial_depth");
+      initial_discharge  = record.get_vector("water/initial_discharge");
+      max_volume_balance = record.get("water/max_volume_balance");
+      gauges.open(water_directory + "/gauges.csv", is_writer, true);
+    }
+
+
+
+    void
+    WaterScene::add_statistics(Statistics &statistics, const StepInfo &info) const
     {
       const double volume = water->water_volume();
-      statistics.add_value("time", time);
-      statistics.add_value("step", step);
-      statistics.add_value("dt", dt);
+      statistics.add_value("time", info.time);
+      statistics.add_value("step", info.step);
+      statistics.add_value("dt", info.dt);
       statistics.add_value("water_volume", volume);
       // Volume gained beyond what entered through the ends: zero up to round-off.
       statistics.add_value("water_volume_balance",

@@ -36,10 +36,10 @@ namespace slidewave_tests
       return n;
     }
 
-    SolverParameters
+    ShallowWaterParameters
     parameters(const double courant_fraction = 0.9) const
     {
-      SolverParameters p;
+      ShallowWaterParameters p;
       p.flux            = flux;
       p.reconstruction  = reconstruction;
       p.limiter         = limiter;

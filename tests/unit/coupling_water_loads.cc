@@ -90,7 +90,7 @@ end
                     const coupling::SoilSurface surface)
   {
     const water::WaterMesh       mesh = water::WaterMesh::uniform(0., 2., 20);
-    water::ShallowWater1D        water(mesh, water::SolverParameters());
+    water::ShallowWater1D        water(mesh, water::ShallowWaterParameters());
     const std::vector<double>    terrain(20, 0.);
     coupling::SoilWaterInterface interface(
       mesh.interfaces(), mesh, terrain, terrain, 1000., surface, 0.);

@@ -7,6 +7,8 @@
 #include <optional>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
+#include <slidewave/core/time_stepped_scene.h>
+#include <slidewave/coupling/coupling_parameters.h>
 #include <slidewave/coupling/soil_water_interface.h>
 #include <slidewave/mpm/material_point_solver.h>
 #include <slidewave/mpm/particle_output.h>
@@ -14,41 +16,12 @@
 #include <slidewave/water/water_output.h>
 #include <slidewave/water/water_state_parameters.h>
 #include <string>
+#include <vector>
 
 namespace slidewave
 {
   namespace coupling
   {
-    /** Where the water cells come from (subsection "Coupling", 'Water cells'). */
-    enum class WaterCells
-    {
-      grid_columns, ///< the columns of the material points' grid at set-up
-      water_mesh    ///< subsection "Shallow water/Mesh"; the bed is interpolated onto it
-    };
-
-    /** Subsection "Coupling". */
-    struct CouplingParameters
-    {
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-
-      void
-      parse_parameters(dealii::ParameterHandler &prm);
-
-      double       water_density    = 1000.;
-      WaterCells   water_cells      = WaterCells::grid_columns;
-      SoilSurface  soil_surface     = SoilSurface::envelope;
-      bool         loads_on_soil    = true;
-      unsigned int maximum_substeps = 1;
-
-      /** Verification: if > 0, the run fails (exit status 3) beyond these. */
-      double tolerance_volume       = 0.;
-      double tolerance_free_surface = 0.;
-      double tolerance_soil_speed   = 0.;
-    };
-
-
-
     /**
      * Landslide-generated waves (Physics = coupled; paper 000, Algorithm 1): the soil as
      * material points ("Material points") under the 1D shallow water ("Shallow water"),
@@ -63,7 +36,7 @@ namespace slidewave
      * N > 1 the solver with the smaller stable step takes up to N steps inside one step of
      * the other (the exchange happens once per coupled step).
      */
-    class CoupledScene
+    class CoupledScene : public TimeSteppedScene
     {
     public:
       static void
@@ -75,13 +48,79 @@ namespace slidewave
       bool
       run();
 
-    private:
+      /** @name The scene's part of the time loop (TimeSteppedScene) */
+      /** @{ */
+      std::string
+      timer_prefix() const override
+      {
+        return "coupled";
+      }
+
+      void
+      create_output_directories() const override;
+
+      void
+      set_up(double start_time, dealii::TimerOutput &timer) override;
+
+      void
+      check_set_up() const override;
+
+      std::string
+      description() const override;
+
+      void
+      start(const StepInfo &info) override;
+
+      /** Eq. 38, or the larger step with the other solver sub-cycling inside it. */
+      double
+      stable_time_step() override;
+
+      void
+      advance(const StepInfo &info) override;
+
+      void
+      after_step(const StepInfo &info) override;
+
+      void
+      write_output(unsigned int index, double time) override;
+
+      void
+      add_statistics(Statistics &statistics, const StepInfo &info) const override;
+
       bool
-      run_time_loop(dealii::TimerOutput &timer);
+      finish(const StepInfo &info) override;
+
+      /** The soil's grid and materials and the water cells. */
+      std::string
+      checkpoint_signature() const override;
+
+      std::vector<std::string>
+      growing_files() const override;
+
+      void
+      save(io::CheckpointRecord &record) override;
+
+      void
+      save_data(const std::string &prefix) override;
+
+      void
+      resume(const io::CheckpointRecord &record,
+             const std::string          &prefix,
+             dealii::TimerOutput        &timer) override;
+      /** @} */
+
+    private:
+      /** The soil, with the timer of the run. */
+      void
+      create_soil(dealii::TimerOutput &timer);
 
       /** Builds the water on the soil just created (inside the soil's set-up). */
       void
       setup_water();
+
+      /** The water on @p mesh and the interface with the soil @p columns (interfaces). */
+      void
+      build_water(const water::WaterMesh &mesh, const std::vector<double> &columns);
 
       /** The water at the initial condition over the current bed. */
       void
@@ -95,17 +134,6 @@ namespace slidewave
       void
       check_state(unsigned int step, double time, bool check_soil) const;
 
-      void
-      add_statistics(Statistics  &statistics,
-                     unsigned int step,
-                     double       time,
-                     double       dt,
-                     unsigned int soil_steps,
-                     unsigned int water_steps) const;
-
-      void
-      write_output(unsigned int index, double time);
-
       /** Largest |eta - still level| over the wet cells. */
       double
       free_surface_deviation() const;
@@ -113,7 +141,7 @@ namespace slidewave
       const SceneParameters          &scene;
       CouplingParameters              coupling;
       mpm::SolverParameters           soil_parameters;
-      water::SolverParameters         water_parameters;
+      water::ShallowWaterParameters   water_parameters;
       std::optional<water::WaterMesh> configured_mesh;
       water::WaterBoundary            boundaries[2];
       water::BedElevation             terrain;
@@ -128,6 +156,17 @@ namespace slidewave
       mpm::ParticleOutput                       particle_output;
 
       double initial_volume = 0., initial_toe = 0.;
+      /** The soil columns of the interface (their x interfaces). */
+      std::vector<double> columns;
+      /** The stable steps of the soil and the water at the start of the step. */
+      double dt_soil = 0., dt_water = 0.;
+      /** Steps of each solver in the last coupled step, and the water's last step. */
+      unsigned int n_soil = 0, n_water = 0;
+      double       last_water_step = 0.;
+      /** Running maxima of the verification. */
+      double max_volume_balance = 0., max_deviation = 0., max_soil_speed = 0.;
+
+      dealii::TimerOutput *timer = nullptr;
     };
   } // namespace coupling
 } // namespace slidewave

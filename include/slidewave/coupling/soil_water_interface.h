@@ -91,6 +91,14 @@ namespace slidewave
         return total_load;
       }
 
+      /** Sets what load_on_soil() reports (a run resumed from a checkpoint: the point
+       *  forces themselves are restored with the material points). */
+      void
+      restore_load_on_soil(const dealii::Tensor<1, 2> &load)
+      {
+        total_load = load;
+      }
+
     private:
       unsigned int
       column_of(double x) const;

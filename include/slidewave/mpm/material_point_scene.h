@@ -6,6 +6,7 @@
 #include <memory>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
+#include <slidewave/core/time_stepped_scene.h>
 #include <slidewave/mpm/material_point_solver.h>
 #include <slidewave/mpm/particle_output.h>
 #include <string>
@@ -21,7 +22,7 @@ namespace slidewave
      * material points from subsection "Material points", runs the time loop, and writes the
      * particles (.pvtu with a .pvd time series) and statistics.
      */
-    class MaterialPointScene
+    class MaterialPointScene : public TimeSteppedScene
     {
     public:
       static void
@@ -33,40 +34,75 @@ namespace slidewave
       bool
       run();
 
-    private:
-      /** The time loop; throws RunFailure when the state becomes invalid. */
+      /** @name The scene's part of the time loop (TimeSteppedScene) */
+      /** @{ */
+      std::string
+      timer_prefix() const override
+      {
+        return "mpm";
+      }
+
+      void
+      create_output_directories() const override;
+
+      void
+      set_up(double start_time, dealii::TimerOutput &timer) override;
+
+      void
+      check_set_up() const override;
+
+      std::string
+      description() const override;
+
+      void
+      start(const StepInfo &info) override;
+
+      double
+      stable_time_step() override;
+
+      void
+      advance(const StepInfo &info) override;
+
+      void
+      after_step(const StepInfo &info) override;
+
+      void
+      write_output(unsigned int index, double time) override;
+
+      void
+      add_statistics(Statistics &statistics, const StepInfo &info) const override;
+
       bool
-      run_time_loop(dealii::TimerOutput &timer);
+      finish(const StepInfo &info) override;
+
+      /** Physics, grid and materials, which a checkpoint must share with the scene. */
+      std::string
+      checkpoint_signature() const override;
+
+      void
+      save(io::CheckpointRecord &record) override;
+
+      void
+      save_data(const std::string &prefix) override;
+
+      void
+      resume(const io::CheckpointRecord &record,
+             const std::string          &prefix,
+             dealii::TimerOutput        &timer) override;
+      /** @} */
+
+    private:
+      /** The solver, with the timer of the run. */
+      void
+      create_solver(dealii::TimerOutput &timer);
 
       /** The background grid with the nodal mass and velocity of the last step. */
       void
       write_grid_state(unsigned int index, double time);
 
-      /** The state of the time loop (saved in checkpoints). */
-      struct LoopState
-      {
-        double       time = 0., next_output = 0., max_error = 0.;
-        unsigned int step = 0, output_index = 0;
-      };
-
-      /** Writes OUTPUT/checkpoint atomically, keeping the previous one (collective). */
-      void
-      write_checkpoint(const LoopState &loop) const;
-
-      /** Loads the newest checkpoint instead of setting up (collective). */
-      void
-      resume(LoopState &loop);
-
-      /** Physics, grid and materials, which a checkpoint must share with the scene. */
-      std::string
-      checkpoint_signature() const;
-
       /** The run-time guards; throws RunFailure (collective). */
       void
       check_state(unsigned int step, double time) const;
-
-      void
-      add_statistics(Statistics &statistics, unsigned int step, double time, double dt) const;
 
       /** Error of the centre-of-mass velocity against the vibrating bar's exact value. */
       double
@@ -92,18 +128,24 @@ namespace slidewave
       double           rotation_rate = 1.;
       dealii::Point<2> rotation_centre;
 
-      const SceneParameters &scene;
-      ExactSolution          exact_solution = ExactSolution::none;
-      double                 bar_length = 25., bar_amplitude = 0.1, column_height = 1.;
-      double                 tolerance = 0.;
-      SolverParameters       parameters;
+      const SceneParameters                      &scene;
+      ExactSolution                               exact_solution = ExactSolution::none;
+      double                                      bar_length = 25., bar_amplitude = 0.1;
+      double                                      column_height = 1.;
+      double                                      tolerance     = 0.;
+      SolverParameters                            parameters;
       std::unique_ptr<MaterialPointSolver>        solver;
+      dealii::TimerOutput                        *timer = nullptr;
       ParticleOutput                              particle_output;
       std::vector<std::pair<double, std::string>> grid_files;
       bool                                        write_grid     = false;
       unsigned int                                check_interval = 10;
       /** Kinetic + elastic energy at the start, and the total mass (for the guards). */
       double initial_energy = 0., total_mass = 0.;
+      /** The largest error against the exact solution so far (bar vibration). */
+      double max_error = 0.;
+      /** The step this process started from (0, or the checkpoint's). */
+      unsigned int first_step = 0;
     };
   } // namespace mpm
 } // namespace slidewave

@@ -2,6 +2,7 @@
 #define slidewave_water_shallow_water_1d_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <slidewave/water/shallow_water_parameters.h>
 #include <slidewave/water/water_boundary.h>
 #include <slidewave/water/water_mesh.h>
 #include <string>
@@ -11,66 +12,6 @@ namespace slidewave
 {
   namespace water
   {
-    enum class NumericalFlux
-    {
-      roe,
-      hll
-    };
-
-    enum class Reconstruction
-    {
-      first_order,
-      second_order
-    };
-
-    enum class Limiter
-    {
-      minmod,
-      van_leer,
-      superbee
-    };
-
-    enum class TimeIntegrator
-    {
-      forward_euler,
-      ssp_rk2
-    };
-
-    /**
-     * The numerical scheme of the water column: flux, order, limiter, time integrator,
-     * Courant number, Manning coefficient, gravity and the depth below which a cell is dry.
-     */
-    struct SolverParameters
-    {
-      static void
-      declare_parameters(dealii::ParameterHandler &prm);
-
-      /** Reads and checks; @p path is the subsection path used in error messages. */
-      void
-      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
-
-      /**
-       * The largest Courant number at which the chosen scheme is stable and keeps depths
-       * non-negative: 1 for first order (Godunov-type schemes with the hydrostatic
-       * reconstruction), 1/2 for the MUSCL reconstruction (its face values must stay within
-       * the range of the neighbours over one step).
-       */
-      double
-      maximum_courant_number() const;
-
-      double         gravity             = 9.81;
-      double         dry_depth           = 1e-8;
-      double         film_depth          = 1e-4;
-      double         courant_number      = 0.5;
-      double         manning_coefficient = 0.;
-      NumericalFlux  flux                = NumericalFlux::roe;
-      Reconstruction reconstruction      = Reconstruction::second_order;
-      Limiter        limiter             = Limiter::minmod;
-      TimeIntegrator time_integrator     = TimeIntegrator::ssp_rk2;
-    };
-
-
-
     /**
      * The 1D shallow water equations (paper 000, Eqs. 9 and 24) on non-uniform control
      * volumes, solved with a Godunov-type finite-volume scheme:
@@ -93,14 +34,24 @@ namespace slidewave
     class ShallowWater1D
     {
     public:
-      ShallowWater1D(const WaterMesh        &mesh,
-                     const SolverParameters &parameters,
-                     const WaterBoundary    &left_boundary  = WaterBoundary(),
-                     const WaterBoundary    &right_boundary = WaterBoundary());
+      ShallowWater1D(const WaterMesh              &mesh,
+                     const ShallowWaterParameters &parameters,
+                     const WaterBoundary          &left_boundary  = WaterBoundary(),
+                     const WaterBoundary          &right_boundary = WaterBoundary());
 
       /** Sets the state (depth h and discharge hu per cell). */
       void
       set_state(const std::vector<double> &depth, const std::vector<double> &discharge);
+
+      /**
+       * Sets the whole state exactly as it was saved (a run resumed from a checkpoint):
+       * depth, discharge, bed and the volume that entered through the ends, bit for bit.
+       */
+      void
+      restore(const std::vector<double> &depth,
+              const std::vector<double> &discharge,
+              const std::vector<double> &bed,
+              double                     net_boundary_inflow);
 
       /** Replaces the bed elevation B per cell, keeping the depth (the water volume). */
       void
@@ -131,7 +82,7 @@ namespace slidewave
         return water_mesh;
       }
 
-      const SolverParameters &
+      const ShallowWaterParameters &
       parameters() const
       {
         return prm;
@@ -220,10 +171,10 @@ namespace slidewave
       void
       apply_friction(double dt);
 
-      WaterMesh        water_mesh;
-      SolverParameters prm;
-      WaterBoundary    left_boundary;
-      WaterBoundary    right_boundary;
+      WaterMesh              water_mesh;
+      ShallowWaterParameters prm;
+      WaterBoundary          left_boundary;
+      WaterBoundary          right_boundary;
 
       std::vector<double> inverse_width;
       std::vector<double> center;

@@ -38,9 +38,9 @@ namespace slidewave
                       double             right);
 
       /** Opens @p file_name and writes the header (only where @p is_writer, and only when
-       *  there are gauges). */
+       *  there are gauges); with @p append, continues the file a resumed run put back. */
       void
-      open(const std::string &file_name, bool is_writer);
+      open(const std::string &file_name, bool is_writer, bool append = false);
 
       /** One row: @p time and eta at every gauge. */
       void

@@ -7,6 +7,7 @@
 #include <optional>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
+#include <slidewave/core/time_stepped_scene.h>
 #include <slidewave/water/dam_break_solutions.h>
 #include <slidewave/water/shallow_water_1d.h>
 #include <slidewave/water/water_output.h>
@@ -27,7 +28,7 @@ namespace slidewave
      * Every rank solves the (small) 1D problem redundantly and only rank 0 writes, so the
      * results do not depend on the number of MPI ranks.
      */
-    class WaterScene
+    class WaterScene : public TimeSteppedScene
     {
     public:
       /** Declares subsection "Shallow water" and everything in it. */
@@ -51,11 +52,61 @@ namespace slidewave
         return *water;
       }
 
-    private:
-      /** The time loop; throws RunFailure when the state becomes invalid. */
-      bool
-      run_time_loop(dealii::TimerOutput &timer);
+      /** @name The scene's part of the time loop (TimeSteppedScene) */
+      /** @{ */
+      std::string
+      timer_prefix() const override
+      {
+        return "water";
+      }
 
+      void
+      create_output_directories() const override;
+
+      void
+      set_up(double start_time, dealii::TimerOutput &timer) override;
+
+      std::string
+      description() const override;
+
+      void
+      start(const StepInfo &info) override;
+
+      double
+      stable_time_step() override;
+
+      void
+      advance(const StepInfo &info) override;
+
+      void
+      after_step(const StepInfo &info) override;
+
+      void
+      write_output(unsigned int index, double time) override;
+
+      void
+      add_statistics(Statistics &statistics, const StepInfo &info) const override;
+
+      bool
+      finish(const StepInfo &info) override;
+
+      /** The mesh (cells and ends), which a checkpoint must share with the scene. */
+      std::string
+      checkpoint_signature() const override;
+
+      std::vector<std::string>
+      growing_files() const override;
+
+      void
+      save(io::CheckpointRecord &record) override;
+
+      void
+      resume(const io::CheckpointRecord &record,
+             const std::string          &prefix,
+             dealii::TimerOutput        &timer) override;
+      /** @} */
+
+    private:
       enum class ExactSolution
       {
         none,
@@ -67,9 +118,6 @@ namespace slidewave
 
       void
       write_profile(unsigned int index, double time) const;
-
-      void
-      add_statistics(Statistics &statistics, unsigned int step, double time, double dt) const;
 
       /** Compares with the exact solution at @p time; returns false if out of tolerance. */
       bool
@@ -96,9 +144,11 @@ namespace slidewave
       double                          tolerance_linf     = 0.;
       double                          tolerance_volume   = 0.;
 
-      bool        is_writer = false;
-      std::string water_directory;
-      double      initial_volume = 0.;
+      bool                 is_writer = false;
+      std::string          water_directory;
+      double               initial_volume     = 0.;
+      double               max_volume_balance = 0.;
+      dealii::TimerOutput *timer              = nullptr;
     };
   } // namespace water
 } // namespace slidewave

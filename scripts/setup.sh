@@ -10,7 +10,8 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-"$root/build"}
 build_type=${BUILD_TYPE:-Release}
 
-packages=(libdeal.ii-dev numdiff cmake g++ make python3-matplotlib python3-numpy openmpi-bin)
+packages=(libdeal.ii-dev numdiff cmake g++ make python3-matplotlib python3-numpy openmpi-bin
+  clang-format)
 
 missing=()
 for p in "${packages[@]}"; do

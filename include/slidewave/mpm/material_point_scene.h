@@ -96,7 +96,7 @@ namespace slidewave
       ExactSolution          exact_solution = ExactSolution::none;
       double                 bar_length = 25., bar_amplitude = 0.1, column_height = 1.;
       double                 tolerance = 0.;
-      SolverParameters       parameters;
+      MaterialPointParameters       parameters;
       std::unique_ptr<MaterialPointSolver>        solver;
       ParticleOutput                              particle_output;
       std::vector<std::pair<double, std::string>> grid_files;

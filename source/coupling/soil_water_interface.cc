@@ -3,7 +3,6 @@
 #include <deal.II/base/mpi.h>
 #include <limits>
 #include <slidewave/coupling/soil_water_interface.h>
-#include <slidewave/mpm/particle_properties.h>
 
 namespace slidewave
 {
@@ -117,7 +116,9 @@ namespace slidewave
     void
     SoilWaterInterface::update_surface(const mpm::MaterialPointSolver &soil)
     {
-      using namespace mpm;
+      // The half-sizes of the points' domains, by the names of the soil's property layout.
+      const unsigned int domain_half_x = soil.property_layout().index("domain_half_x");
+      const unsigned int domain_half_y = soil.property_layout().index("domain_half_y");
       std::fill(surface_height.begin(),
                 surface_height.end(),
                 -std::numeric_limits<double>::infinity());
@@ -127,8 +128,8 @@ namespace slidewave
         {
           const auto   x   = particle.get_location();
           const auto   p   = particle.get_properties();
-          const double top = x[1] + p[property::domain_half_y];
-          const double l   = p[property::domain_half_x];
+          const double top = x[1] + p[domain_half_y];
+          const double l   = p[domain_half_x];
           for_each_column_of(x[0], l, [&](const unsigned int c, const double) {
             surface_height[c] = std::max(surface_height[c], top);
             if (surface_definition == SoilSurface::envelope)
@@ -203,15 +204,17 @@ namespace slidewave
                                           const water::ShallowWater1D &water,
                                           const double                 dt)
     {
-      using namespace mpm;
-      const auto        &mesh = water.mesh();
-      const auto        &h    = water.depth();
-      const auto        &B    = water.bed();
-      const double       g    = water.parameters().gravity;
-      const double       n_m  = water.parameters().manning_coefficient;
-      const double       dry  = water.parameters().dry_depth;
-      const double       rho  = water_density;
-      const unsigned int n    = mesh.n_cells();
+      // The half-sizes of the points' domains, by the names of the soil's property layout.
+      const unsigned int domain_half_x = soil.property_layout().index("domain_half_x");
+      const unsigned int domain_half_y = soil.property_layout().index("domain_half_y");
+      const auto        &mesh          = water.mesh();
+      const auto        &h             = water.depth();
+      const auto        &B             = water.bed();
+      const double       g             = water.parameters().gravity;
+      const double       n_m           = water.parameters().manning_coefficient;
+      const double       dry           = water.parameters().dry_depth;
+      const double       rho           = water_density;
+      const unsigned int n             = mesh.n_cells();
 
       // Per water cell: the weight of the water on the bed and the bed shear.
       for (unsigned int i = 0; i < n; ++i)
@@ -281,7 +284,7 @@ namespace slidewave
       // proportion to the water pressure at their height; both in proportion to the part
       // of the point's domain over the column.
       const auto surface_weight = [&](const auto &particle, const unsigned int column) {
-        const double l_y = particle.get_properties()[property::domain_half_y];
+        const double l_y = particle.get_properties()[domain_half_y];
         return particle.get_location()[1] + l_y >= surface_height[column] - l_y ? 1. : 0.;
       };
       const auto face_weight = [&](const auto &particle, const unsigned int column) {
@@ -294,7 +297,7 @@ namespace slidewave
       std::fill(face_weights.begin(), face_weights.end(), 0.);
       for (const auto &particle : soil.particles())
         for_each_column_of(particle.get_location()[0],
-                           particle.get_properties()[property::domain_half_x],
+                           particle.get_properties()[domain_half_x],
                            [&](const unsigned int c, const double fraction) {
                              surface_weights[c] += fraction * surface_weight(particle, c);
                              face_weights[c] += fraction * face_weight(particle, c);
@@ -312,7 +315,7 @@ namespace slidewave
       soil.set_point_forces([&](const dealii::Particles::ParticleAccessor<2> &particle) {
         dealii::Tensor<1, 2> force;
         for_each_column_of(particle.get_location()[0],
-                           particle.get_properties()[property::domain_half_x],
+                           particle.get_properties()[domain_half_x],
                            [&](const unsigned int c, const double fraction) {
                              const double surface = fraction * surface_weight(particle, c);
                              if (surface > 0.)

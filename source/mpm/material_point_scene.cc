@@ -34,7 +34,7 @@ namespace slidewave
     {
       using namespace dealii::Patterns;
       prm.enter_subsection(section);
-      SolverParameters::declare_parameters(prm);
+      MaterialPointParameters::declare_parameters(prm);
       prm.declare_entry("Check interval",
                         "10",
                         Integer(1),

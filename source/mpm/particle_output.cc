@@ -3,7 +3,6 @@
 #include <deal.II/particles/data_out.h>
 #include <fstream>
 #include <slidewave/mpm/particle_output.h>
-#include <slidewave/mpm/particle_properties.h>
 
 namespace slidewave
 {
@@ -21,21 +20,11 @@ namespace slidewave
                           const unsigned int         index,
                           const double               time)
     {
-      using Interpretation = dealii::DataComponentInterpretation::DataComponentInterpretation;
-      const auto              &names = property_names();
-      std::vector<std::string> data_names(names.begin(), names.end());
-      data_names[property::velocity_x] = "velocity";
-      data_names[property::velocity_y] = "velocity";
-      if (solver.has_point_forces())
-        {
-          data_names.emplace_back("point_force");
-          data_names.emplace_back("point_force");
-        }
-      std::vector<Interpretation> interpretation(
-        data_names.size(), dealii::DataComponentInterpretation::component_is_scalar);
-      for (unsigned int i = 0; i < data_names.size(); ++i)
-        if (data_names[i] == "velocity" || data_names[i] == "point_force")
-          interpretation[i] = dealii::DataComponentInterpretation::component_is_part_of_vector;
+      // Every property by the name its model's layout gives it, the components of a
+      // vector (velocity, point force) under the vector's name.
+      const auto &layout         = solver.property_layout();
+      const auto  data_names     = layout.output_names();
+      const auto  interpretation = layout.output_interpretation();
 
       dealii::Particles::DataOut<2> data_out;
       data_out.set_flags(vtu_flags());

@@ -45,12 +45,12 @@ namespace
     all_passed = all_passed && condition;
   }
 
-  mpm::SolverParameters
+  mpm::MaterialPointParameters
   block_in_a_tank()
   {
     dealii::ParameterHandler prm;
     prm.enter_subsection("Material points");
-    mpm::SolverParameters::declare_parameters(prm);
+    mpm::MaterialPointParameters::declare_parameters(prm);
     prm.leave_subsection();
     prm.parse_input_from_string(R"(subsection Material points
 set Shape functions = gimp
@@ -74,7 +74,7 @@ subsection Region 1
 end
 end
 )");
-    mpm::SolverParameters result;
+    mpm::MaterialPointParameters result;
     prm.enter_subsection("Material points");
     result.parse_parameters(prm, "Material points");
     prm.leave_subsection();

@@ -87,15 +87,15 @@ end
 )";
   }
 
-  SolverParameters
+  MaterialPointParameters
   parameters(const std::string &shape_functions)
   {
     dealii::ParameterHandler prm;
     prm.enter_subsection("Material points");
-    SolverParameters::declare_parameters(prm);
+    MaterialPointParameters::declare_parameters(prm);
     prm.leave_subsection();
     prm.parse_input_from_string("subsection Material points\n" + scene(shape_functions) + "end\n");
-    SolverParameters result;
+    MaterialPointParameters result;
     prm.enter_subsection("Material points");
     result.parse_parameters(prm, "Material points");
     prm.leave_subsection();
@@ -172,8 +172,8 @@ main(int argc, char **argv)
   const unsigned int n_steps = 10;
   for (const std::string shape : {"q1", "gimp", "cpgimp"})
     {
-      const SolverParameters prm = parameters(shape);
-      MaterialPointSolver    solver(prm);
+      const MaterialPointParameters prm = parameters(shape);
+      MaterialPointSolver           solver(prm);
       solver.setup();
       if (root)
         std::printf("%s, at the start:\n", shape.c_str());

@@ -140,7 +140,7 @@ namespace slidewave
 
       const SceneParameters          &scene;
       CouplingParameters              coupling;
-      mpm::SolverParameters           soil_parameters;
+      mpm::MaterialPointParameters    soil_parameters;
       water::ShallowWaterParameters   water_parameters;
       std::optional<water::WaterMesh> configured_mesh;
       water::WaterBoundary            boundaries[2];

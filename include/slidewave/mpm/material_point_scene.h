@@ -133,7 +133,7 @@ namespace slidewave
       double                                      bar_length = 25., bar_amplitude = 0.1;
       double                                      column_height = 1.;
       double                                      tolerance     = 0.;
-      SolverParameters                            parameters;
+      MaterialPointParameters                     parameters;
       std::unique_ptr<MaterialPointSolver>        solver;
       dealii::TimerOutput                        *timer = nullptr;
       ParticleOutput                              particle_output;

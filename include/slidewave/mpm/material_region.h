@@ -42,7 +42,7 @@ namespace slidewave
       bounding_box() const;
 
       std::string material_name;
-      /** Index of the material in SolverParameters::materials (set when parsed). */
+      /** Index of the material in MaterialPointParameters::materials (set when parsed). */
       unsigned int material_index = 0;
       /** Initial velocity of a point at @p p. */
       dealii::Tensor<1, 2>

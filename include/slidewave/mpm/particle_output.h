@@ -26,7 +26,7 @@ namespace slidewave
 
     /**
      * The material points as a ParaView time series: OUTPUT/particles/particles_NNNNN.pvtu
-     * (every property by name, velocity and point forces as vectors) and the
+     * (every property by the name of the model's PropertyLayout, vectors as vectors) and the
      * OUTPUT/particles.pvd record that lists them (collective).
      */
     class ParticleOutput

@@ -39,7 +39,7 @@ namespace slidewave
        * Optional: the point force on a material point [N per m of thickness], added to
        * the nodal forces of every particle-to-grid transfer (paper 000, Eq. 15: the
        * tractions of the water on the surface points). Stored only when a scene applies
-       * surface loads (SolverParameters::point_forces); other scenes neither allocate nor
+       * surface loads (MaterialPointParameters::point_forces); other scenes neither allocate nor
        * scatter it.
        */
       constexpr unsigned int point_force_x                  = n_properties;

@@ -1,0 +1,195 @@
+#ifndef slidewave_mpm_soil_model_h
+#define slidewave_mpm_soil_model_h
+
+#include <cmath>
+#include <deal.II/base/tensor.h>
+#include <deal.II/particles/particle_handler.h>
+#include <functional>
+#include <slidewave/materials/material.h>
+#include <slidewave/mpm/material_point_parameters.h>
+#include <slidewave/mpm/particle_properties.h>
+#include <slidewave/mpm/shape_functions.h>
+#include <slidewave/particles/point_cloud.h>
+#include <slidewave/particles/property_layout.h>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    /**
+     * The soil of paper 000 as a particle model of the material point method in 2D plane
+     * strain: what its points carry (property::Index, and the point forces of the
+     * coupling when switched on), what they scatter to the grid (the internal force of
+     * their stress, Eq. 16, gravity and the point force, Eq. 15), their constitutive
+     * update (strain increment with the optional B-bar mean dilatation, the Jaumann rate,
+     * Eqs. 5–6, and the material's elastic or Drucker–Prager update, materials/), the
+     * P-wave speed of the time step (Eqs. 22–23), their initial state and initial stress
+     * (geostatic with K0, uniform; the end of gravity loading), and the soil's
+     * diagnostics (energies, integrals and runout, the guards' description of a bad
+     * point). The transfer kernels (TransferKernels<SoilModel>) are instantiated in its
+     * source.
+     */
+    class SoilModel
+    {
+    public:
+      /** The properties the transfer kernels read (TransferKernels). */
+      static constexpr unsigned int mass          = property::mass;
+      static constexpr unsigned int volume        = property::volume;
+      static constexpr unsigned int velocity_x    = property::velocity_x;
+      static constexpr unsigned int velocity_y    = property::velocity_y;
+      static constexpr unsigned int domain_half_x = property::domain_half_x;
+      static constexpr unsigned int domain_half_y = property::domain_half_y;
+
+      using ParticleRange = dealii::Particles::ParticleHandler<2>::particle_iterator_range;
+
+      explicit SoilModel(const MaterialPointParameters &parameters);
+
+      /** The points' properties: property::Index, then the point forces if on. */
+      const particles::PropertyLayout &
+      layout() const
+      {
+        return property_layout;
+      }
+
+      /** What a point scatters, read once per point (Eqs. 14–17). */
+      struct ScatterTerms
+      {
+        double m, vx, vy, V, sxx, syy, sxy, fx, fy;
+      };
+
+      template <typename Properties>
+      ScatterTerms
+      scatter_terms(const Properties &p) const
+      {
+        return {p[property::mass],
+                p[property::velocity_x],
+                p[property::velocity_y],
+                p[property::volume],
+                p[property::stress_xx],
+                p[property::stress_yy],
+                p[property::stress_xy],
+                point_forces ? p[property::point_force_x] : 0.,
+                point_forces ? p[property::point_force_y] : 0.};
+      }
+
+      /** The point's force on its k-th node, with @p mk = S_k m: the internal force
+       *  -V sigma grad S (Eq. 16) plus gravity and the point force (Eq. 15). */
+      void
+      nodal_force(const ScatterTerms &t,
+                  const NodeWeights  &w,
+                  const unsigned int  k,
+                  const double        mk,
+                  double             &fx,
+                  double             &fy) const
+      {
+        fx = -t.V * (t.sxx * w.grad_x[k] + t.sxy * w.grad_y[k]) + mk * gravity[0]
+             + w.value[k] * t.fx;
+        fy = -t.V * (t.sxy * w.grad_x[k] + t.syy * w.grad_y[k]) + mk * gravity[1]
+             + w.value[k] * t.fy;
+      }
+
+      /**
+       * The stresses of the points of one cell from their velocity gradients @p L (in the
+       * order of @p particles_in_cell): strain and spin increments, B-bar, the material's
+       * update with the Jaumann rate (Eqs. 5–6), the new volume, cpGIMP's domain.
+       */
+      void
+      update_cell(const ParticleRange        &particles_in_cell,
+                  const dealii::Tensor<2, 2> *L,
+                  double                      dt) const;
+
+      /** The P-wave speed sqrt((K + 4G/3) / rho) of the point's material (Eq. 22). */
+      template <typename Properties>
+      double
+      wave_speed(const Properties &p) const
+      {
+        const double density = p[property::mass] / p[property::volume];
+        return std::sqrt(
+          materials[static_cast<unsigned int>(p[property::material_id])].p_wave_modulus()
+          / density);
+      }
+
+      /** Nodes with less mass than this are empty. */
+      double
+      empty_node_mass() const;
+
+      /** The initial properties of a point of region @p region_index in a cell hx x hy. */
+      void
+      fill_new_point(std::vector<double>    &properties,
+                     const dealii::Point<2> &position,
+                     unsigned int            region_index,
+                     double                  hx,
+                     double                  hy) const;
+
+      /** 'uniform': the given stress in every point. */
+      void
+      set_uniform_stress(particles::PointCloud &cloud) const;
+
+      /** 'geostatic': sigma_v from the weight of the material above, sigma_h = K0 sigma_v. */
+      void
+      set_geostatic_stress(particles::PointCloud &cloud) const;
+
+      /** The end of gravity loading: the points at rest where they are now. */
+      void
+      finish_gravity_loading(particles::PointCloud &cloud) const;
+
+      /** Sets the point forces from @p force(particle) (needs point forces). */
+      void
+      set_point_forces(
+        particles::PointCloud &cloud,
+        const std::function<dealii::Tensor<1, 2>(const dealii::Particles::ParticleAccessor<2> &)>
+          &force) const;
+
+      /** The sum of the point forces over all points (collective). */
+      dealii::Tensor<1, 2>
+      total_point_force(const particles::PointCloud &cloud) const;
+
+      /** Integral quantities, reduced over all ranks (collective). */
+      struct Integrals
+      {
+        double       mass = 0., momentum_x = 0., momentum_y = 0., kinetic_energy = 0.;
+        double       max_speed = 0., runout = 0., max_height = 0.;
+        double       lost_mass   = 0.;
+        unsigned int n_particles = 0;
+      };
+
+      Integrals
+      integrals(const particles::PointCloud &cloud) const;
+
+      /**
+       * Energies per unit thickness [J/m], reduced over all ranks (collective): kinetic,
+       * elastic (p^2/(2K) + s:s/(4G) per unit volume) and the work done by gravity since
+       * the start, sum m g.(x - x_0).
+       */
+      struct EnergyBudget
+      {
+        double kinetic = 0., elastic = 0., gravity_work = 0.;
+      };
+
+      EnergyBudget
+      energy_budget(const particles::PointCloud &cloud) const;
+
+      /** "material point ID at (x y) with speed S m/s" for the fastest point (collective). */
+      std::string
+      describe_fastest_particle(const particles::PointCloud &cloud) const;
+
+      /**
+       * Checks the points for non-finite state and non-positive volumes; returns a
+       * description of the first bad one on any rank, or "" (collective).
+       */
+      std::string
+      find_invalid_particle(const particles::PointCloud &cloud) const;
+
+    private:
+      const MaterialPointParameters   &prm;
+      std::vector<materials::Material> materials;
+      particles::PropertyLayout        property_layout;
+      const dealii::Tensor<1, 2>       gravity;
+      const bool                       point_forces;
+    };
+  } // namespace mpm
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,139 @@
+#ifndef slidewave_mpm_transfer_kernels_h
+#define slidewave_mpm_transfer_kernels_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <slidewave/grid/cell_patches.h>
+#include <slidewave/grid/nodal_workspace.h>
+#include <slidewave/grid/velocity_constraints.h>
+#include <slidewave/mpm/shape_functions.h>
+#include <slidewave/mpm/step_timeline.h>
+#include <slidewave/particles/point_cloud.h>
+#include <vector>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    /**
+     * The particle–grid cycle of the explicit material point method (paper 000, §3.1,
+     * Eqs. 13–23), shared by every material-point model: particles to grid (lumped mass,
+     * momentum and the model's nodal forces, Eqs. 14–17), the grid update (Eqs. 18–19,
+     * Cundall's local damping, the velocity constraints), grid to particles (PIC/FLIP
+     * velocities, Eq. 20, positions, Eq. 21, and velocity gradients for the model's
+     * constitutive update), and the MUSL re-map of the nodal velocities from the updated
+     * particle velocities.
+     *
+     * A template on the particle model, instantiated in the model's own source, so that
+     * the model's per-point terms are inlined into the loops: nothing is virtual, nothing
+     * is allocated per point. A model class provides
+     *
+     * - the property indices `mass`, `volume`, `velocity_x`, `velocity_y`,
+     *   `domain_half_x`, `domain_half_y` (static constexpr unsigned int);
+     * - `ScatterTerms scatter_terms(const Properties &p) const` (what the point scatters,
+     *   read once per point) and `void nodal_force(const ScatterTerms &, const
+     *   NodeWeights &, unsigned int k, double m_k, double &f_x, double &f_y) const` (the
+     *   point's force on its k-th node);
+     * - `void update_cell(const particle_iterator_range &, const dealii::Tensor<2, 2> *L,
+     *   double dt) const`: the constitutive update of the points of one cell from their
+     *   velocity gradients (in the order of the points);
+     * - `double wave_speed(const Properties &p) const`: the speed of the fastest wave in
+     *   the point's material, for the time step (Eq. 23).
+     */
+    template <class Model>
+    class TransferKernels
+    {
+    public:
+      /** Settings of the cycle that are not the model's. */
+      struct Settings
+      {
+        ShapeFunction shape_function = ShapeFunction::q1;
+        double        flip_fraction  = 0.99;
+        /** Nodes with less mass are empty: their velocity is zero. */
+        double empty_node_mass = 0.;
+        /** Kinematic mode: the nodal velocities are this field (null: off). */
+        dealii::FunctionParser<2> *prescribed_velocity = nullptr;
+      };
+
+      TransferKernels(const Model                     &model,
+                      particles::PointCloud           &cloud,
+                      grid::NodalWorkspace            &nodes,
+                      const grid::CellPatches         &patches,
+                      const grid::VelocityConstraints &constraints,
+                      const Settings                  &settings);
+
+      /** Where the parts of the step are timed (null: nowhere). */
+      void
+      set_timeline(StepTimeline *step_timeline)
+      {
+        timeline = step_timeline;
+      }
+
+      /** Nodal mass, momentum and force from the points (Eqs. 14–17; collective). */
+      void
+      particles_to_grid();
+
+      /** Nodal velocities after and before the step (Eqs. 18–19), with Cundall's local
+       *  damping @p damping and the constraints; @p time: the start of the step. */
+      void
+      update_grid(double dt, double damping, double time);
+
+      /** Velocities (PIC/FLIP, Eq. 20) and new positions (Eq. 21, in new_positions());
+       *  with @p with_stresses (USL) also the model's update in the same pass. */
+      void
+      grid_to_particles(double dt, bool with_stresses);
+
+      /** MUSL: nodal velocities from the updated particle momenta (collective). */
+      void
+      remap_velocities_to_grid();
+
+      /** MUSL: the model's update from the re-mapped nodal velocities. */
+      void
+      update_stresses(double dt);
+
+      /** max_p (c_p + |v_p|) over this rank's points. */
+      double
+      max_signal_speed() const;
+
+      /** New positions of the points by local index (sized by the caller). */
+      std::vector<dealii::Point<2>> &
+      new_positions()
+      {
+        return positions;
+      }
+
+    private:
+      template <typename ParticleAccessorType>
+      void
+      shape_weights(const ParticleAccessorType &particle,
+                    unsigned int                cell_index,
+                    NodeWeights                &w) const;
+
+      /** Kinematic mode: the nodal velocities at @p time and @p time + @p dt. */
+      void
+      prescribe_nodal_velocities(double dt, double time);
+
+      void
+      lap(const StepTimeline::Part part)
+      {
+        if (timeline)
+          timeline->lap(part);
+      }
+
+      const Model                     &model;
+      particles::PointCloud           &cloud;
+      grid::NodalWorkspace            &nodes;
+      const grid::CellPatches         &patches;
+      const grid::VelocityConstraints &constraints;
+      const Settings                   settings;
+      StepTimeline                    *timeline = nullptr;
+
+      /** Side arrays reused every step (no allocation per particle). */
+      std::vector<dealii::Point<2>>     positions;
+      std::vector<dealii::Tensor<2, 2>> cell_gradients;
+    };
+  } // namespace mpm
+} // namespace slidewave
+
+#endif

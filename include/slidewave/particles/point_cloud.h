@@ -1,0 +1,199 @@
+#ifndef slidewave_particles_point_cloud_h
+#define slidewave_particles_point_cloud_h
+
+#include <array>
+#include <deal.II/base/point.h>
+#include <deal.II/particles/particle_handler.h>
+#include <functional>
+#include <slidewave/grid/background_grid.h>
+#include <slidewave/grid/cell_patches.h>
+#include <slidewave/grid/grid_follower.h>
+#include <slidewave/grid/velocity_constraints.h>
+#include <slidewave/mpm/material_region.h>
+#include <slidewave/mpm/step_timeline.h>
+#include <slidewave/particles/property_layout.h>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace particles
+  {
+    /**
+     * The material points of a model on the background grid: deal.II's ParticleHandler
+     * with the model's PropertyLayout, the creation of points on a lattice in the cells
+     * where regions hold material, the cheap relocation of points that moved less than a
+     * cell (within the patch of their cell), the mass lost through free sides and the
+     * detection of points that crossed a side that is not free, and the points'
+     * checkpoint data. A GridFollower: the points travel with their cells through
+     * refinement, coarsening and repartitioning.
+     */
+    class PointCloud : public grid::GridFollower
+    {
+    public:
+      using ParticleHandler = dealii::Particles::ParticleHandler<2>;
+
+      /**
+       * Points on @p grid carrying the properties of @p layout; @p mass_index is the
+       * property that counts as lost mass, @p sides the conditions of the grid's sides
+       * (a point may leave only through a free one).
+       */
+      PointCloud(grid::BackgroundGrid                    &grid,
+                 const PropertyLayout                    &layout,
+                 unsigned int                             mass_index,
+                 const std::array<grid::GridBoundary, 4> &sides);
+
+      /** The particle handler on the grid (its cells must exist) and the lost-point
+       *  signal. */
+      void
+      initialize();
+
+      /** Calls f(position, reference, region index, lattice index in the cell) for the
+       * points that create() puts in @p cell with @p n per direction: at the centres of
+       * n x n sub-cells that lie in a region (the first that holds it). */
+      template <typename Function>
+      void
+      for_each_point_to_create(const grid::BackgroundGrid::CellIterator &cell,
+                               unsigned int                              n,
+                               const std::vector<mpm::MaterialRegion>   &regions,
+                               const Function                           &f) const;
+
+      /** What create() asks of the model for each point: its properties (zeroed before)
+       *  from its position, region index and the cell's size. */
+      using PropertyFill = std::function<void(std::vector<double>    &properties,
+                                              const dealii::Point<2> &position,
+                                              unsigned int            region_index,
+                                              double                  hx,
+                                              double                  hy)>;
+
+      /** Fills the owned cells with n x n points per cell where they lie in a region;
+       *  identifiers from the global cell index and the lattice position. */
+      void
+      create(unsigned int                            n,
+             const std::vector<mpm::MaterialRegion> &regions,
+             const PropertyFill                     &fill);
+
+      /**
+       * Calls @p f(cell, particles) for every locally owned cell that holds points, in the
+       * particle handler's order of cells (after a full sort the points' memory is in this
+       * order): empty cells cost nothing and the points' memory is read front to back.
+       */
+      template <typename Function>
+      void
+      for_each_cell_with_particles(const Function &f)
+      {
+        auto       particle = handler.begin();
+        const auto end      = handler.end();
+        while (particle != end)
+          {
+            const auto cell  = particle->get_surrounding_cell();
+            const auto range = handler.particles_in_cell(cell);
+            f(cell, range);
+            particle = range.end();
+          }
+      }
+
+      /**
+       * Puts every point at its new position (@p new_positions, by local index) in its
+       * cell, looking only in the patch of its old cell, and moves the points that changed
+       * cell (collective). Returns false, having set the locations only, when some point
+       * on some rank left its rank's cells or its patch: then the full sort must run.
+       */
+      bool
+      relocate_within_patches(const std::vector<dealii::Point<2>> &new_positions,
+                              const grid::CellPatches             &patches,
+                              mpm::StepTimeline                   *timeline);
+
+      /** deal.II's full sort of the points into the cells and ranks. */
+      void
+      sort();
+
+      void
+      prepare_for_grid_change() override;
+
+      void
+      grid_changed() override;
+
+      /** Attaches the points to the cells before the grid is saved. */
+      void
+      prepare_for_save();
+
+      /** Takes the points back from the cells after the grid was loaded. */
+      void
+      load();
+
+      ParticleHandler &
+      particles()
+      {
+        return handler;
+      }
+
+      const ParticleHandler &
+      particles() const
+      {
+        return handler;
+      }
+
+      const PropertyLayout &
+      layout() const
+      {
+        return properties;
+      }
+
+      /** Mass lost by this rank through the free sides. */
+      double lost_mass = 0.;
+      /** The first point of this rank that left through a side that is not free: points may
+       *  only leave through free sides, one crossing a wall is a failed step. */
+      std::string wall_crossing;
+
+    private:
+      grid::BackgroundGrid                   &grid;
+      const PropertyLayout                   &properties;
+      const unsigned int                      mass;
+      const std::array<grid::GridBoundary, 4> sides;
+      ParticleHandler                         handler;
+
+      /** A point that changed cell within its patch (relocate_within_patches). */
+      struct MovingParticle
+      {
+        ParticleHandler::particle_iterator       particle;
+        grid::BackgroundGrid::ActiveCellIterator cell;
+        dealii::types::particle_index            id;
+        dealii::Point<2>                         location, reference;
+      };
+      /** Scratch of relocate_within_patches(), kept between steps (no allocation once
+       *  grown): the moving points and their properties, one row each. */
+      std::vector<MovingParticle> moving_particles;
+      std::vector<double>         moving_data;
+    };
+
+
+
+    template <typename Function>
+    void
+    PointCloud::for_each_point_to_create(const grid::BackgroundGrid::CellIterator &cell,
+                                         const unsigned int                        n,
+                                         const std::vector<mpm::MaterialRegion>   &regions,
+                                         const Function                           &f) const
+    {
+      const dealii::Point<2> origin = cell->vertex(0);
+      const double           hx     = cell->vertex(1)[0] - origin[0];
+      const double           hy     = cell->vertex(2)[1] - origin[1];
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const dealii::Point<2> reference((i + 0.5) / n, (j + 0.5) / n);
+            const dealii::Point<2> position(origin[0] + reference[0] * hx,
+                                            origin[1] + reference[1] * hy);
+            for (unsigned int r = 0; r < regions.size(); ++r)
+              if (regions[r].contains(position))
+                {
+                  f(position, reference, r, j * n + i);
+                  break;
+                }
+          }
+    }
+  } // namespace particles
+} // namespace slidewave
+
+#endif

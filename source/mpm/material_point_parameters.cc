@@ -1,0 +1,501 @@
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <iostream>
+#include <slidewave/core/input_error.h>
+#include <slidewave/mpm/material_point_parameters.h>
+#include <sstream>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    namespace
+    {
+      std::vector<double>
+      parse_numbers(const std::string &parameter, const std::string &text, const unsigned int count)
+      {
+        return parse_number_list(parameter,
+                                 text,
+                                 std::to_string(count) + " comma-separated numbers",
+                                 count);
+      }
+
+      GridBoundary
+      boundary_type(const std::string &name)
+      {
+        return name == "fixed"  ? GridBoundary::fixed :
+               name == "roller" ? GridBoundary::roller :
+                                  GridBoundary::free;
+      }
+
+    } // namespace
+
+
+
+    void
+    MaterialPointParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.declare_entry("Shape functions",
+                        "q1",
+                        Selection("q1|gimp|cpgimp"),
+                        "'q1': bilinear functions of the cell holding the point (standard "
+                        "MPM). 'gimp': uGIMP, Q1 averaged over a square domain of the "
+                        "point's initial size (paper 000, Eq. 11), smooth across cell faces "
+                        "(no cell-crossing noise). 'cpgimp': the domain stretches with the "
+                        "point along x and y.");
+      prm.declare_entry("Update scheme",
+                        "usl",
+                        Selection("usl|musl"),
+                        "'usl': stresses from the updated nodal velocities (update stress "
+                        "last, paper 000). 'musl': from nodal velocities re-mapped from the "
+                        "updated particle velocities (less noisy for fast flows).");
+      prm.declare_entry("FLIP fraction",
+                        "0.99",
+                        Double(0., 1.),
+                        "Blend of the particle velocity update: 1 is pure FLIP (increments "
+                        "of the nodal velocities, no dissipation, noisy), 0 pure PIC (nodal "
+                        "velocities, dissipative).");
+      prm.declare_entry("Time step multiplier",
+                        "0.5",
+                        Double(),
+                        "alpha in dt = alpha h / max_p (c_p + |v_p|) (paper 000, Eq. 23); "
+                        "in (0, 0.7071]: with lumped mass the highest mode of a 2D grid is "
+                        "sqrt(2) times faster than along a line, so alpha above 1/sqrt(2) is "
+                        "unstable (doc/stability.md).");
+      prm.declare_entry("Fixed time step",
+                        "0",
+                        Double(0.),
+                        "If > 0, this time step [s] instead of Eq. 23 (it is checked against "
+                        "the stability limit at the start).");
+      prm.declare_entry("B-bar",
+                        "true",
+                        Bool(),
+                        "Average the volumetric strain increment over each cell (B-bar / "
+                        "mean dilatation, paper 000 §3.1) against volumetric locking.");
+      prm.declare_entry("Gravity", "0, -9.81", Anything(), "Gravity vector g_x, g_y [m/s^2].");
+      prm.declare_entry("Particle relocation",
+                        "neighbour cells",
+                        Selection("neighbour cells|full sort"),
+                        "How the points find their cells after moving. 'neighbour cells': "
+                        "each point looks in the cells of its old cell's patch (a step moves "
+                        "a point less than a cell) and only the points that changed cell are "
+                        "moved in the particle handler; when any point on any rank leaves "
+                        "its rank's cells or the patch, and every 'Load balancing/Interval' "
+                        "steps (to keep the points' memory in cell order), deal.II's full "
+                        "sort runs instead. 'full sort': deal.II's sort every step. Both "
+                        "give the same cells and reference coordinates.");
+      prm.declare_entry("Detailed timing",
+                        "false",
+                        Bool(),
+                        "Time the parts of each step (grid changes, particle to grid, grid "
+                        "update, grid to particle with the stresses, MUSL re-map, sorting "
+                        "the points into cells) as rows 'mpm step: ...' of the timer summary. "
+                        "Each rank times its own parts (no barriers); with several ranks "
+                        "a table of each part's least, mean and largest time over the ranks "
+                        "comes first, and a rank waiting for another shows in the part where "
+                        "it waits (the ghost exchange of the scatter, the relocation's "
+                        "reduction).");
+      prm.declare_entry("Step timeline",
+                        "false",
+                        Bool(),
+                        "Write OUTPUT/step_timeline.csv at the end of the run: per step and "
+                        "per rank the wall time of each part of the step, with the exchanges "
+                        "between ranks (where a rank waits for a slower one) apart from the "
+                        "rank's own work. For profiling runs: it keeps a row per step in "
+                        "memory (doc/mpm.md, Where the time goes).");
+      prm.declare_entry("Local damping",
+                        "0",
+                        Double(0., 1.),
+                        "Cundall's local non-viscous damping coefficient of the nodal "
+                        "forces, for quasi-static loading; 0 for dynamics.");
+      prm.declare_entry("Particles per direction",
+                        "2",
+                        Integer(1, 10),
+                        "Material points per cell per direction at the start (n x n per "
+                        "cell, at the centres of n x n sub-cells).");
+      prm.declare_entry("Prescribed velocity",
+                        "",
+                        Anything(),
+                        "Kinematic verification mode: if not empty, two expressions of x, y "
+                        "and t separated by ';' (e.g. '-(y-0.5); x-0.5', a rigid rotation): "
+                        "the nodal velocities are this field instead of the solution of the "
+                        "momentum balance (Eqs. 18-19); the points move with it and their "
+                        "stresses follow from it as usual (strain rate, Jaumann rate, "
+                        "B-bar).");
+      prm.enter_subsection("Grid");
+      {
+        prm.declare_entry("Lower left", "0, 0", Anything(), "Corner x, y of the domain [m].");
+        prm.declare_entry("Upper right", "1, 1", Anything(), "Corner x, y of the domain [m].");
+        prm.declare_entry("Cell size",
+                          "0.05",
+                          Double(),
+                          "Side of the square background cells [m]; the domain sides must "
+                          "be (close to) multiples of it.");
+      }
+      prm.leave_subsection();
+      prm.enter_subsection("Adaptive grid");
+      {
+        prm.declare_entry("Enable",
+                          "false",
+                          Bool(),
+                          "Refine the background grid where material is (to 'Cell size') and "
+                          "keep it coarse elsewhere; re-evaluated every 'Interval' steps.");
+        prm.declare_entry("Levels",
+                          "2",
+                          Integer(1, 8),
+                          "Refinement levels: the coarsest cells are 2^Levels times 'Cell "
+                          "size', which must divide the domain.");
+        prm.declare_entry("Buffer cells",
+                          "2",
+                          Integer(0, 10),
+                          "Layers of fine cells kept around the material (GIMP domains and "
+                          "the motion until the next adaptation reach there).");
+        prm.declare_entry("Interval",
+                          "50",
+                          Integer(1),
+                          "Steps between adaptations; material must not cross the buffer in "
+                          "that time.");
+      }
+      prm.leave_subsection();
+      prm.enter_subsection("Load balancing");
+      {
+        prm.declare_entry("Particle weight",
+                          "1000000",
+                          Integer(0),
+                          "Cost of a material point relative to a cell's 1000 when the grid "
+                          "is partitioned among MPI ranks (the work of a rank is 1000 per "
+                          "cell plus this per point; a cell's weight is capped at 2^31 - 1, "
+                          "p4est's limit). A step's grid work is over the nodes the points "
+                          "talk to, so an empty cell costs next to nothing: the default makes "
+                          "1000 empty cells weigh as much as a point (doc/mpm.md, "
+                          "Throughput).");
+        prm.declare_entry("Imbalance threshold",
+                          "1.1",
+                          Double(0.),
+                          "Repartition when the most loaded rank has more than this times "
+                          "the mean work (0: never, except when an adaptive grid changes).");
+        prm.declare_entry("Interval", "50", Integer(1), "Steps between checks of the imbalance.");
+      }
+      prm.leave_subsection();
+      prm.enter_subsection("Boundary conditions");
+      for (const std::string side : {"Left", "Right", "Bottom", "Top"})
+        prm.declare_entry(side,
+                          side == "Bottom" ? "fixed" :
+                          side == "Top"    ? "free" :
+                                             "roller",
+                          Selection("free|roller|fixed"),
+                          "Grid velocity condition on this side: 'fixed' (no slip), "
+                          "'roller' (free slip), 'free'.");
+      prm.leave_subsection();
+      for (unsigned int w = 1; w <= RigidWall::max_walls; ++w)
+        {
+          prm.enter_subsection("Rigid wall " + std::to_string(w));
+          RigidWall::declare_parameters(prm);
+          prm.leave_subsection();
+        }
+      prm.enter_subsection("Initial stress");
+      {
+        prm.declare_entry("Type",
+                          "none",
+                          Selection("none|geostatic|gravity loading|uniform"),
+                          "'none': stress free. 'geostatic': sigma_yy = -g (weight of the "
+                          "material above the point per unit width), sigma_xx = sigma_zz = "
+                          "K0 sigma_yy (at rest, exact for horizontal layers). 'gravity "
+                          "loading': gravity is applied with heavy local damping and all "
+                          "rigid walls held, for 'Gravity loading time', before the start "
+                          "time; then velocities are zeroed and the scene starts. "
+                          "'uniform': 'Uniform stress' in every point.");
+        prm.declare_entry("Uniform stress",
+                          "0, 0, 0, 0",
+                          Anything(),
+                          "For 'uniform': sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa], "
+                          "tension positive.");
+        prm.declare_entry("K0",
+                          "auto",
+                          Anything(),
+                          "Coefficient of earth pressure at rest for 'geostatic': a number "
+                          "> 0, or 'auto': 1 - sin(phi) (Jaky) for Drucker-Prager, "
+                          "nu / (1 - nu) for linear elastic materials.");
+        prm.declare_entry("Gravity loading time",
+                          "0.5",
+                          Double(0.),
+                          "Duration [s] of the gravity loading phase; give it several "
+                          "periods of the slowest mode (about 4 H / c_p).");
+        prm.declare_entry("Gravity loading damping",
+                          "0.7",
+                          Double(0., 1.),
+                          "Cundall's local damping coefficient during gravity loading.");
+      }
+      prm.leave_subsection();
+      for (unsigned int m = 1; m <= max_materials; ++m)
+        {
+          prm.enter_subsection("Material " + std::to_string(m));
+          materials::MaterialParameters::declare_parameters(prm);
+          prm.leave_subsection();
+        }
+      for (unsigned int r = 1; r <= MaterialRegion::max_regions; ++r)
+        {
+          prm.enter_subsection("Region " + std::to_string(r));
+          MaterialRegion::declare_parameters(prm);
+          prm.leave_subsection();
+        }
+    }
+
+
+
+    void
+    MaterialPointParameters::parse_parameters(dealii::ParameterHandler &prm,
+                                              const std::string        &path)
+    {
+      const std::string shape = prm.get("Shape functions");
+      shape_function          = shape == "gimp"   ? ShapeFunction::gimp :
+                                shape == "cpgimp" ? ShapeFunction::cpgimp :
+                                                    ShapeFunction::q1;
+      update_scheme = prm.get("Update scheme") == "musl" ? UpdateScheme::musl : UpdateScheme::usl;
+      flip_fraction = prm.get_double("FLIP fraction");
+      time_step_multiplier = prm.get_double("Time step multiplier");
+      if (!(time_step_multiplier > 0. && time_step_multiplier <= max_time_step_multiplier))
+        throw InputError(path + "/Time step multiplier",
+                         prm.get("Time step multiplier"),
+                         "a number in (0, 0.7071]: the explicit step on a 2D grid with lumped "
+                         "mass is stable only up to alpha = 1/sqrt(2) in Eq. 23 "
+                         "(doc/stability.md)");
+      fixed_time_step         = prm.get_double("Fixed time step");
+      b_bar                   = prm.get_bool("B-bar");
+      detailed_timing         = prm.get_bool("Detailed timing");
+      step_timeline           = prm.get_bool("Step timeline");
+      full_sort_every_step    = prm.get("Particle relocation") == "full sort";
+      const auto g            = parse_numbers(path + "/Gravity", prm.get("Gravity"), 2);
+      gravity[0]              = g[0];
+      gravity[1]              = g[1];
+      damping                 = prm.get_double("Local damping");
+      particles_per_direction = prm.get_integer("Particles per direction");
+
+      prm.enter_subsection("Grid");
+      {
+        const auto a = parse_numbers(path + "/Grid/Lower left", prm.get("Lower left"), 2);
+        const auto b = parse_numbers(path + "/Grid/Upper right", prm.get("Upper right"), 2);
+        lower_left   = dealii::Point<2>(a[0], a[1]);
+        upper_right  = dealii::Point<2>(b[0], b[1]);
+        cell_size    = prm.get_double("Cell size");
+        require_positive(path + "/Grid/Cell size", cell_size);
+        if (!(b[0] > a[0]) || !(b[1] > a[1]))
+          throw InputError(path + "/Grid/Upper right",
+                           prm.get("Upper right"),
+                           "a corner above and to the right of 'Lower left'");
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            const double n = (b[d] - a[d]) / cell_size;
+            if (std::abs(n - std::round(n)) > 1e-6 * n)
+              throw InputError(path + "/Grid/Cell size",
+                               to_string(cell_size),
+                               "a size that divides the domain sides (" + to_string(b[0] - a[0])
+                                 + " x " + to_string(b[1] - a[1]) + " m)");
+          }
+        // The supported size: beyond it the grid alone takes most of a machine's memory.
+        const double n_cells
+          = std::round((b[0] - a[0]) / cell_size) * std::round((b[1] - a[1]) / cell_size);
+        if (n_cells > 1e7)
+          throw InputError(path + "/Grid/Cell size",
+                           to_string(cell_size),
+                           "a size giving at most 10^7 grid cells (this one gives "
+                             + to_string(n_cells) + ")");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Adaptive grid");
+      {
+        adaptivity.enabled      = prm.get_bool("Enable");
+        adaptivity.levels       = prm.get_integer("Levels");
+        adaptivity.buffer_cells = prm.get_integer("Buffer cells");
+        adaptivity.interval     = prm.get_integer("Interval");
+        if (adaptivity.enabled)
+          {
+            const double base = cell_size * (1u << adaptivity.levels);
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                const double n = (upper_right[d] - lower_left[d]) / base;
+                if (std::abs(n - std::round(n)) > 1e-6 * n || std::round(n) < 1)
+                  throw InputError(path + "/Adaptive grid/Levels",
+                                   std::to_string(adaptivity.levels),
+                                   "a number of levels such that the coarsest cells (Cell "
+                                   "size x 2^Levels = "
+                                     + to_string(base) + " m) divide the domain sides ("
+                                     + to_string(upper_right[0] - lower_left[0]) + " x "
+                                     + to_string(upper_right[1] - lower_left[1]) + " m)");
+              }
+          }
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Load balancing");
+      {
+        adaptivity.particle_weight     = prm.get_integer("Particle weight");
+        adaptivity.imbalance_threshold = prm.get_double("Imbalance threshold");
+        balance_interval               = prm.get_integer("Interval");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Boundary conditions");
+      boundaries = {{boundary_type(prm.get("Left")),
+                     boundary_type(prm.get("Right")),
+                     boundary_type(prm.get("Bottom")),
+                     boundary_type(prm.get("Top"))}};
+      prm.leave_subsection();
+
+      walls.clear();
+      for (unsigned int w = 1; w <= RigidWall::max_walls; ++w)
+        {
+          prm.enter_subsection("Rigid wall " + std::to_string(w));
+          RigidWall wall;
+          if (wall.parse_parameters(prm, path + "/Rigid wall " + std::to_string(w)))
+            walls.push_back(wall);
+          prm.leave_subsection();
+        }
+
+      {
+        const std::string text = dealii::Utilities::trim(prm.get("Prescribed velocity"));
+        prescribed_velocity.reset();
+        if (!text.empty())
+          {
+            // deal.II prints muparser's diagnosis to std::cerr before it throws: keep it
+            // quiet, the InputError says what is wrong.
+            std::ostringstream diagnosis;
+            std::streambuf    *cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
+            try
+              {
+                if (dealii::Utilities::split_string_list(text, ';').size() != 2)
+                  throw std::invalid_argument("two components");
+                prescribed_velocity = std::make_shared<dealii::FunctionParser<2>>(2);
+                prescribed_velocity->initialize("x,y,t",
+                                                text,
+                                                {{"pi", M_PI}},
+                                                /*time_dependent=*/true);
+                prescribed_velocity->value(dealii::Point<2>(), 0);
+                std::cerr.rdbuf(cerr_buffer);
+              }
+            catch (...)
+              {
+                std::cerr.rdbuf(cerr_buffer);
+                throw InputError(path + "/Prescribed velocity",
+                                 text,
+                                 "empty, or two expressions of x, y and t separated by ';'");
+              }
+          }
+      }
+
+      prm.enter_subsection("Initial stress");
+      {
+        const std::string type = prm.get("Type");
+        initial_stress         = type == "geostatic"       ? InitialStress::geostatic :
+                                 type == "gravity loading" ? InitialStress::gravity_loading :
+                                 type == "uniform"         ? InitialStress::uniform :
+                                                             InitialStress::none;
+        {
+          const auto stress
+            = parse_number_list(path + "/Initial stress/Uniform stress",
+                                prm.get("Uniform stress"),
+                                "four finite numbers sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa]",
+                                4);
+          std::copy(stress.begin(), stress.end(), uniform_stress.begin());
+        }
+        const std::string k0 = dealii::Utilities::trim(prm.get("K0"));
+        if (k0 == "auto")
+          lateral_stress_ratio = -1.;
+        else
+          {
+            bool ok = true;
+            try
+              {
+                std::size_t used     = 0;
+                lateral_stress_ratio = std::stod(k0, &used);
+                ok                   = used == k0.size() && std::isfinite(lateral_stress_ratio)
+                     && lateral_stress_ratio > 0.;
+              }
+            catch (const std::exception &)
+              {
+                ok = false;
+              }
+            if (!ok)
+              throw InputError(path + "/Initial stress/K0", k0, "'auto' or a number > 0");
+          }
+        gravity_loading_time    = prm.get_double("Gravity loading time");
+        gravity_loading_damping = prm.get_double("Gravity loading damping");
+        if (initial_stress == InitialStress::gravity_loading)
+          require_positive(path + "/Initial stress/Gravity loading time", gravity_loading_time);
+      }
+      prm.leave_subsection();
+
+      // Regions first: they say which materials the scene uses. Only those material
+      // subsections are read (and checked); the others are ignored.
+      regions.clear();
+      for (unsigned int r = 1; r <= MaterialRegion::max_regions; ++r)
+        {
+          prm.enter_subsection("Region " + std::to_string(r));
+          MaterialRegion    region;
+          const std::string region_path = path + "/Region " + std::to_string(r);
+          if (region.parse_parameters(prm, region_path))
+            {
+              const std::string entry = prm.get("Shape") == "rectangle" ? "Rectangle" : "Polygon";
+              const auto        box   = region.bounding_box();
+              for (unsigned int d = 0; d < 2; ++d)
+                if (box.first[d] < lower_left[d] - 1e-12 || box.second[d] > upper_right[d] + 1e-12)
+                  throw InputError(region_path + "/" + entry,
+                                   prm.get(entry),
+                                   "a region inside the grid [" + to_string(lower_left[0]) + ", "
+                                     + to_string(upper_right[0]) + "] x ["
+                                     + to_string(lower_left[1]) + ", " + to_string(upper_right[1])
+                                     + "]");
+              regions.push_back(region);
+            }
+          prm.leave_subsection();
+        }
+
+      materials.clear();
+      for (unsigned int r = 0; r < regions.size(); ++r)
+        {
+          MaterialRegion           &region      = regions[r];
+          const std::string         region_path = path + "/Region " + std::to_string(r + 1);
+          std::vector<unsigned int> slots;
+          for (unsigned int m = 1; m <= max_materials; ++m)
+            {
+              prm.enter_subsection("Material " + std::to_string(m));
+              if (dealii::Utilities::trim(prm.get("Name")) == region.material_name)
+                slots.push_back(m);
+              prm.leave_subsection();
+            }
+          if (slots.empty())
+            throw InputError(region_path + "/Material",
+                             region.material_name,
+                             "the name of a declared material ('Material N/Name')");
+          if (slots.size() > 1)
+            throw InputError(region_path + "/Material",
+                             region.material_name,
+                             "a material name declared once (it is the name of 'Material "
+                               + std::to_string(slots[0]) + "' and 'Material "
+                               + std::to_string(slots[1]) + "')");
+          // Read each used material once, however many regions use it.
+          region.material_index = materials.size();
+          for (unsigned int k = 0; k < materials.size(); ++k)
+            if (materials[k].name == region.material_name)
+              region.material_index = k;
+          if (region.material_index == materials.size())
+            {
+              const std::string slot = "Material " + std::to_string(slots[0]);
+              prm.enter_subsection(slot);
+              materials::MaterialParameters material;
+              material.parse_parameters(prm, path + "/" + slot);
+              material.name = region.material_name;
+              prm.leave_subsection();
+              materials.push_back(material);
+            }
+        }
+      if (regions.empty())
+        throw InputError(path + "/Region 1/Shape",
+                         "none",
+                         "at least one region filled with material ('rectangle' or "
+                         "'polygon')");
+    }
+  } // namespace mpm
+} // namespace slidewave

@@ -1,0 +1,404 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <limits>
+#include <slidewave/mpm/soil_model.h>
+#include <slidewave/mpm/transfer_kernels.templates.h>
+#include <sstream>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    SoilModel::SoilModel(const MaterialPointParameters &parameters)
+      : prm(parameters)
+      , gravity(parameters.gravity)
+      , point_forces(parameters.point_forces)
+    {
+      for (const auto &material : prm.materials)
+        materials.emplace_back(material);
+      const auto &names = property_names();
+      for (unsigned int i = 0; i < property::n_properties; ++i)
+        if (i == property::velocity_x)
+          property_layout.add_vector("velocity", {names[i], names[i + 1]});
+        else if (i != property::velocity_y)
+          property_layout.add_scalar(names[i]);
+      if (point_forces)
+        property_layout.add_load("point_force", {"point_force_x", "point_force_y"});
+    }
+
+
+
+    void
+    SoilModel::update_cell(const ParticleRange        &particles_in_cell,
+                           const dealii::Tensor<2, 2> *cell_gradients,
+                           const double                dt) const
+    {
+      // With B-bar, the volumetric part of each point's strain increment is replaced by
+      // its volume-weighted average over the cell (mean dilatation).
+      double mean_volumetric = 0.;
+      if (prm.b_bar)
+        {
+          double       volume_sum = 0., volumetric_sum = 0.;
+          unsigned int k = 0;
+          for (const auto &particle : particles_in_cell)
+            {
+              const dealii::Tensor<2, 2> &L = cell_gradients[k++];
+              const double                V = particle.get_properties()[property::volume];
+              volume_sum += V;
+              volumetric_sum += V * (L[0][0] + L[1][1]);
+            }
+          mean_volumetric = volumetric_sum / volume_sum;
+        }
+
+      const bool   stretch_domain = prm.shape_function == ShapeFunction::cpgimp;
+      const double max_half       = 0.5 * prm.cell_size;
+      unsigned int k              = 0;
+      for (auto &particle : particles_in_cell)
+        {
+          const dealii::Tensor<2, 2>   &L = cell_gradients[k++];
+          dealii::SymmetricTensor<2, 3> strain_increment;
+          strain_increment[0][0] = L[0][0] * dt;
+          strain_increment[1][1] = L[1][1] * dt;
+          strain_increment[0][1] = 0.5 * (L[0][1] + L[1][0]) * dt;
+          if (prm.b_bar)
+            {
+              const double correction = 0.5 * (mean_volumetric - (L[0][0] + L[1][1])) * dt;
+              strain_increment[0][0] += correction;
+              strain_increment[1][1] += correction;
+            }
+          const double spin_xy = 0.5 * (L[0][1] - L[1][0]) * dt;
+
+          auto                          p = particle.get_properties();
+          dealii::SymmetricTensor<2, 3> stress;
+          stress[0][0]   = p[property::stress_xx];
+          stress[1][1]   = p[property::stress_yy];
+          stress[0][1]   = p[property::stress_xy];
+          stress[2][2]   = p[property::stress_zz];
+          double plastic = p[property::equivalent_plastic_strain];
+          materials[static_cast<unsigned int>(p[property::material_id])].update_stress(
+            stress, strain_increment, spin_xy, plastic);
+          p[property::stress_xx]                 = stress[0][0];
+          p[property::stress_yy]                 = stress[1][1];
+          p[property::stress_xy]                 = stress[0][1];
+          p[property::stress_zz]                 = stress[2][2];
+          p[property::equivalent_plastic_strain] = plastic;
+          p[property::volume] *= 1. + strain_increment[0][0] + strain_increment[1][1];
+          if (stretch_domain)
+            {
+              // cpGIMP: the domain follows the stretch of the point along the axes
+              // (kept within half a cell so it stays inside the patch of cells).
+              p[property::domain_half_x]
+                = std::min(max_half, p[property::domain_half_x] * (1. + L[0][0] * dt));
+              p[property::domain_half_y]
+                = std::min(max_half, p[property::domain_half_y] * (1. + L[1][1] * dt));
+            }
+        }
+    }
+
+
+
+    double
+    SoilModel::empty_node_mass() const
+    {
+      double density = 0.;
+      for (const auto &material : prm.materials)
+        density = std::max(density, material.density);
+      return 1e-12 * prm.cell_size * prm.cell_size * (density > 0. ? density : 1.);
+    }
+
+
+
+    void
+    SoilModel::fill_new_point(std::vector<double>    &properties,
+                              const dealii::Point<2> &position,
+                              const unsigned int      region_index,
+                              const double            hx,
+                              const double            hy) const
+    {
+      const unsigned int    n              = prm.particles_per_direction;
+      const MaterialRegion &region         = prm.regions[region_index];
+      const unsigned int    m              = region.material_index;
+      const double          volume         = hx * hy / (n * n);
+      properties[property::mass]           = prm.materials[m].density * volume;
+      properties[property::volume]         = volume;
+      properties[property::initial_volume] = volume;
+      const dealii::Tensor<1, 2> v         = region.initial_velocity(position);
+      properties[property::velocity_x]     = v[0];
+      properties[property::velocity_y]     = v[1];
+      properties[property::initial_x]      = position[0];
+      properties[property::initial_y]      = position[1];
+      properties[property::material_id]    = m;
+      properties[property::domain_half_x]  = 0.5 * hx / n;
+      properties[property::domain_half_y]  = 0.5 * hy / n;
+    }
+
+
+
+    void
+    SoilModel::set_uniform_stress(particles::PointCloud &cloud) const
+    {
+      for (auto &particle : cloud.particles())
+        {
+          auto p                 = particle.get_properties();
+          p[property::stress_xx] = prm.uniform_stress[0];
+          p[property::stress_yy] = prm.uniform_stress[1];
+          p[property::stress_xy] = prm.uniform_stress[2];
+          p[property::stress_zz] = prm.uniform_stress[3];
+        }
+    }
+
+
+
+    void
+    SoilModel::set_geostatic_stress(particles::PointCloud &cloud) const
+    {
+      // The weight above each point, per unit width, from the points in its vertical strip
+      // (strips of the initial point spacing, which the points of a region fill on a
+      // lattice): a histogram of mass over strips and rows, summed over all ranks, then
+      // summed from the top down.
+      const double       spacing = prm.cell_size / prm.particles_per_direction;
+      const unsigned int n_x
+        = static_cast<unsigned int>(std::round((prm.upper_right[0] - prm.lower_left[0]) / spacing));
+      const unsigned int n_y
+        = static_cast<unsigned int>(std::round((prm.upper_right[1] - prm.lower_left[1]) / spacing));
+      const auto bin = [&](const dealii::Point<2> &x, const unsigned int d, const unsigned int n) {
+        const int i = static_cast<int>(std::floor((x[d] - prm.lower_left[d]) / spacing));
+        return static_cast<unsigned int>(std::clamp(i, 0, static_cast<int>(n) - 1));
+      };
+      std::vector<double> mass(static_cast<std::size_t>(n_x) * n_y, 0.);
+      // A downward point force (the water on the surface) weighs like mass F / g.
+      const double g = std::abs(prm.gravity[1]);
+      for (const auto &particle : cloud.particles())
+        {
+          const auto p = particle.get_properties();
+          mass[static_cast<std::size_t>(bin(particle.get_location(), 0, n_x)) * n_y
+               + bin(particle.get_location(), 1, n_y)]
+            += p[property::mass]
+               - (prm.point_forces && g > 0. ? p[property::point_force_y] / g : 0.);
+        }
+      dealii::Utilities::MPI::sum(mass, MPI_COMM_WORLD, mass);
+      // Weight above the bottom of each bin.
+      for (unsigned int i = 0; i < n_x; ++i)
+        for (int j = static_cast<int>(n_y) - 2; j >= 0; --j)
+          mass[static_cast<std::size_t>(i) * n_y + j]
+            += mass[static_cast<std::size_t>(i) * n_y + j + 1];
+
+      for (auto &particle : cloud.particles())
+        {
+          auto               p   = particle.get_properties();
+          const unsigned int i   = bin(particle.get_location(), 0, n_x);
+          const unsigned int j   = bin(particle.get_location(), 1, n_y);
+          const double       own = p[property::mass]
+                             - (prm.point_forces && g > 0. ? p[property::point_force_y] / g : 0.);
+          const double above = (j + 1 < n_y ? mass[static_cast<std::size_t>(i) * n_y + j + 1] : 0.);
+          const double sigma_v = -g * (above + 0.5 * own) / spacing;
+          const auto &material = prm.materials[static_cast<unsigned int>(p[property::material_id])];
+          double      k0       = prm.lateral_stress_ratio;
+          if (k0 < 0.)
+            k0 = material.model == materials::MaterialModel::drucker_prager ?
+                   1. - std::sin(material.friction_angle * M_PI / 180.) :
+                   material.poisson_ratio / (1. - material.poisson_ratio);
+          p[property::stress_yy] = sigma_v;
+          p[property::stress_xx] = k0 * sigma_v;
+          p[property::stress_zz] = k0 * sigma_v;
+          p[property::stress_xy] = 0.;
+        }
+    }
+
+
+
+    void
+    SoilModel::finish_gravity_loading(particles::PointCloud &cloud) const
+    {
+      for (auto &particle : cloud.particles())
+        {
+          auto p                  = particle.get_properties();
+          p[property::velocity_x] = 0.;
+          p[property::velocity_y] = 0.;
+          p[property::initial_x]  = particle.get_location()[0];
+          p[property::initial_y]  = particle.get_location()[1];
+        }
+    }
+
+
+
+    void
+    SoilModel::set_point_forces(
+      particles::PointCloud &cloud,
+      const std::function<dealii::Tensor<1, 2>(const dealii::Particles::ParticleAccessor<2> &)>
+        &force) const
+    {
+      Assert(point_forces, dealii::ExcMessage("point forces were not switched on"));
+      for (auto &particle : cloud.particles())
+        {
+          const dealii::Tensor<1, 2> f = force(particle);
+          auto                       p = particle.get_properties();
+          p[property::point_force_x]   = f[0];
+          p[property::point_force_y]   = f[1];
+        }
+    }
+
+
+
+    dealii::Tensor<1, 2>
+    SoilModel::total_point_force(const particles::PointCloud &cloud) const
+    {
+      dealii::Tensor<1, 2> total;
+      if (point_forces)
+        for (const auto &particle : cloud.particles())
+          {
+            const auto p = particle.get_properties();
+            total[0] += p[property::point_force_x];
+            total[1] += p[property::point_force_y];
+          }
+      return dealii::Utilities::MPI::sum(total, MPI_COMM_WORLD);
+    }
+
+
+
+    std::string
+    SoilModel::find_invalid_particle(const particles::PointCloud &cloud) const
+    {
+      std::string problem;
+      const auto &layout = property_layout;
+      for (const auto &particle : cloud.particles())
+        {
+          const auto p  = particle.get_properties();
+          bool       ok = p[property::volume] > 0.;
+          for (unsigned int i = 0; i < layout.size(); ++i)
+            ok = ok && (!layout.is_state(i) || std::isfinite(p[i]));
+          for (unsigned int d = 0; d < 2; ++d)
+            ok = ok && std::isfinite(particle.get_location()[d]);
+          if (!ok)
+            {
+              std::ostringstream out;
+              out << "material point " << particle.get_id() << " at (" << particle.get_location()
+                  << ") has "
+                  << (std::isfinite(p[property::volume]) && p[property::volume] <= 0. ?
+                        "a non-positive volume" :
+                        "non-finite values")
+                  << " (velocity " << p[property::velocity_x] << ", " << p[property::velocity_y]
+                  << "; stress " << p[property::stress_xx] << ", " << p[property::stress_yy] << ", "
+                  << p[property::stress_xy] << ")";
+              problem = out.str();
+              break;
+            }
+        }
+      if (problem.empty())
+        problem = cloud.wall_crossing;
+      // Every rank learns the problem of the lowest rank that has one.
+      const unsigned int my_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+      const unsigned int first   = dealii::Utilities::MPI::min(
+        problem.empty() ? dealii::numbers::invalid_unsigned_int : my_rank, MPI_COMM_WORLD);
+      if (first == dealii::numbers::invalid_unsigned_int)
+        return "";
+      return dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, problem, first);
+    }
+
+
+
+    SoilModel::EnergyBudget
+    SoilModel::energy_budget(const particles::PointCloud &cloud) const
+    {
+      double sums[3] = {0., 0., 0.};
+      for (const auto &particle : cloud.particles())
+        {
+          const auto   p  = particle.get_properties();
+          const double m  = p[property::mass];
+          const double vx = p[property::velocity_x], vy = p[property::velocity_y];
+          sums[0] += 0.5 * m * (vx * vx + vy * vy);
+          const auto &elastic
+            = materials[static_cast<unsigned int>(p[property::material_id])].elasticity();
+          const double sxx = p[property::stress_xx], syy = p[property::stress_yy],
+                       szz = p[property::stress_zz], sxy = p[property::stress_xy];
+          const double mean = (sxx + syy + szz) / 3.;
+          const double dev2 = (sxx - mean) * (sxx - mean) + (syy - mean) * (syy - mean)
+                              + (szz - mean) * (szz - mean) + 2. * sxy * sxy;
+          sums[1] += p[property::volume]
+                     * (0.5 * mean * mean / elastic.bulk_modulus()
+                        + 0.25 * dev2 / elastic.shear_modulus());
+          sums[2] += m
+                     * (prm.gravity[0] * (particle.get_location()[0] - p[property::initial_x])
+                        + prm.gravity[1] * (particle.get_location()[1] - p[property::initial_y]));
+        }
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 3),
+                                  MPI_COMM_WORLD,
+                                  dealii::ArrayView<double>(sums, 3));
+      return {sums[0], sums[1], sums[2]};
+    }
+
+
+
+    std::string
+    SoilModel::describe_fastest_particle(const particles::PointCloud &cloud) const
+    {
+      double             fastest = -1.;
+      std::ostringstream out;
+      for (const auto &particle : cloud.particles())
+        {
+          const auto   p     = particle.get_properties();
+          const double speed = std::sqrt(p[property::velocity_x] * p[property::velocity_x]
+                                         + p[property::velocity_y] * p[property::velocity_y]);
+          if (speed > fastest)
+            {
+              fastest = speed;
+              out.str("");
+              out << "material point " << particle.get_id() << " at (" << particle.get_location()
+                  << ") with speed " << speed << " m/s";
+            }
+        }
+      // The rank with the fastest point tells everybody.
+      const auto         my_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+      const double       global  = dealii::Utilities::MPI::max(fastest, MPI_COMM_WORLD);
+      const unsigned int owner   = dealii::Utilities::MPI::min(
+        fastest == global ? my_rank : dealii::numbers::invalid_unsigned_int, MPI_COMM_WORLD);
+      return dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, out.str(), owner);
+    }
+
+
+
+    SoilModel::Integrals
+    SoilModel::integrals(const particles::PointCloud &cloud) const
+    {
+      Integrals result;
+      double    sums[4] = {0., 0., 0., 0.};
+      double    maxima[3]
+        = {0., -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+      for (const auto &particle : cloud.particles())
+        {
+          const auto   p  = particle.get_properties();
+          const double m  = p[property::mass];
+          const double vx = p[property::velocity_x], vy = p[property::velocity_y];
+          sums[0] += m;
+          sums[1] += m * vx;
+          sums[2] += m * vy;
+          sums[3] += 0.5 * m * (vx * vx + vy * vy);
+          maxima[0] = std::max(maxima[0], std::sqrt(vx * vx + vy * vy));
+          maxima[1] = std::max(maxima[1], particle.get_location()[0]);
+          maxima[2] = std::max(maxima[2], particle.get_location()[1]);
+        }
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 4),
+                                  MPI_COMM_WORLD,
+                                  dealii::ArrayView<double>(sums, 4));
+      dealii::Utilities::MPI::max(dealii::ArrayView<const double>(maxima, 3),
+                                  MPI_COMM_WORLD,
+                                  dealii::ArrayView<double>(maxima, 3));
+      result.mass           = sums[0];
+      result.momentum_x     = sums[1];
+      result.momentum_y     = sums[2];
+      result.kinetic_energy = sums[3];
+      result.max_speed      = maxima[0];
+      result.runout         = maxima[1];
+      result.max_height     = maxima[2];
+      result.lost_mass      = dealii::Utilities::MPI::sum(cloud.lost_mass, MPI_COMM_WORLD);
+      result.n_particles    = cloud.particles().n_global_particles();
+      return result;
+    }
+  } // namespace mpm
+
+
+
+  // The particle–grid cycle for the soil, with its terms inlined.
+  template class mpm::TransferKernels<mpm::SoilModel>;
+} // namespace slidewave

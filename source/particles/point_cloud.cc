@@ -1,0 +1,225 @@
+#include <algorithm>
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/mapping_cartesian.h>
+#include <slidewave/particles/point_cloud.h>
+#include <sstream>
+
+namespace slidewave
+{
+  namespace particles
+  {
+    PointCloud::PointCloud(grid::BackgroundGrid                    &grid,
+                           const PropertyLayout                    &layout,
+                           const unsigned int                       mass_index,
+                           const std::array<grid::GridBoundary, 4> &sides)
+      : grid(grid)
+      , properties(layout)
+      , mass(mass_index)
+      , sides(sides)
+    {
+    }
+
+
+
+    void
+    PointCloud::initialize()
+    {
+      // The cells are axis-aligned rectangles: the Cartesian mapping finds a point's
+      // reference coordinates directly (MappingQ1 would build an inverse approximation per
+      // cell at every sort, a fifth of the step).
+      static const dealii::MappingCartesian<2> mapping;
+      handler.initialize(grid.triangulation(), mapping, properties.size());
+      handler.signals.particle_lost.connect(
+        [this](const dealii::Particles::ParticleIterator<2> &particle,
+               const typename dealii::Triangulation<2>::active_cell_iterator &) {
+          lost_mass += particle->get_properties()[mass];
+          const dealii::Point<2> x    = particle->get_location();
+          const unsigned int     side = x[0] < grid.lower_left()[0]  ? 0 :
+                                        x[0] > grid.upper_right()[0] ? 1 :
+                                        x[1] < grid.lower_left()[1]  ? 2 :
+                                                                       3;
+          if (sides[side] != grid::GridBoundary::free && wall_crossing.empty())
+            {
+              static const char *const names[4] = {"left", "right", "bottom", "top"};
+              std::ostringstream       out;
+              out << "material point " << particle->get_id() << " left the domain at (" << x
+                  << ") through the " << names[side] << " side, which is "
+                  << (sides[side] == grid::GridBoundary::fixed ? "fixed" : "a roller")
+                  << " (points may leave only through a free side: the deformation in one "
+                     "step is larger than the point's distance to the boundary; lower 'Time "
+                     "step multiplier' or stiffen the material)";
+              wall_crossing = out.str();
+            }
+        });
+    }
+
+
+
+    void
+    PointCloud::create(const unsigned int                      n,
+                       const std::vector<mpm::MaterialRegion> &regions,
+                       const PropertyFill                     &fill)
+    {
+      std::vector<double> values(handler.n_properties_per_particle(), 0.);
+      for (const auto &cell : grid.triangulation().active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          const double hx = cell->vertex(1)[0] - cell->vertex(0)[0];
+          const double hy = cell->vertex(2)[1] - cell->vertex(0)[1];
+          for_each_point_to_create(cell,
+                                   n,
+                                   regions,
+                                   [&](const dealii::Point<2> &position,
+                                       const dealii::Point<2> &reference,
+                                       const unsigned int      region_index,
+                                       const unsigned int      lattice_index) {
+                                     std::fill(values.begin(), values.end(), 0.);
+                                     fill(values, position, region_index, hx, hy);
+                                     // Identifiers that do not depend on the partition: the
+                                     // global index of the cell and the position in it.
+                                     const dealii::types::particle_index id
+                                       = cell->global_active_cell_index() * n * n + lattice_index;
+                                     handler.insert_particle(position,
+                                                             reference,
+                                                             id,
+                                                             cell,
+                                                             dealii::make_array_view(values));
+                                   });
+        }
+      handler.update_cached_numbers();
+    }
+
+
+
+    bool
+    PointCloud::relocate_within_patches(const std::vector<dealii::Point<2>> &new_positions,
+                                        const grid::CellPatches             &patches,
+                                        mpm::StepTimeline                   *timeline)
+    {
+      // The reference coordinates exactly as deal.II's MappingCartesian computes them,
+      // and its test for a point inside the unit cell, so that this path and the full
+      // sort put every point in the same cell at the same reference coordinates.
+      const auto locate
+        = [](const mpm::PatchCell &c, const dealii::Point<2> &x, dealii::Point<2> &reference) {
+            reference[0] = (x[0] - c.x0) / c.hx;
+            reference[1] = (x[1] - c.y0) / c.hy;
+            return reference[0] >= 0. && reference[0] <= 1. && reference[1] >= 0.
+                   && reference[1] <= 1.;
+          };
+      moving_particles.clear();
+      moving_data.clear();
+      const unsigned int n_properties = handler.n_properties_per_particle();
+      bool               leaves_patch = false;
+      dealii::Point<2>   reference;
+      for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
+        const unsigned int cell_index = cell->active_cell_index();
+        const unsigned int own        = patches.start(cell_index);
+        const unsigned int end        = patches.start(cell_index + 1);
+        for (auto particle = particles_in_cell.begin(); particle != particles_in_cell.end();
+             ++particle)
+          {
+            const dealii::Point<2> &x = new_positions[particle->get_local_index()];
+            particle->set_location(x);
+            if (locate(patches.own(cell_index), x, reference))
+              {
+                particle->set_reference_location(reference);
+                continue;
+              }
+            unsigned int target = end;
+            for (unsigned int c = own + 1; c < end; ++c)
+              if (locate(patches.entry(c), x, reference))
+                {
+                  target = c;
+                  break;
+                }
+            if (target == end || !patches.cell(target)->is_locally_owned())
+              {
+                leaves_patch = true; // out of the domain, to another rank, beyond the patch
+                continue;
+              }
+            // A copy of what the point carries, to insert it in its new cell (inserting can
+            // grow the property pool and move the memory the point's properties are in).
+            moving_particles.push_back(
+              {particle, patches.cell(target), particle->get_id(), x, reference});
+            const auto values = particle->get_properties();
+            moving_data.insert(moving_data.end(), values.begin(), values.end());
+          }
+      });
+      // Collective: one reduction decides for all ranks.
+      const unsigned int local[2]  = {leaves_patch ? 1u : 0u, moving_particles.empty() ? 0u : 1u};
+      unsigned int       global[2] = {0, 0};
+      if (timeline)
+        timeline->lap(mpm::StepTimeline::relocation);
+      dealii::Utilities::MPI::max(dealii::ArrayView<const unsigned int>(local, 2),
+                                  MPI_COMM_WORLD,
+                                  dealii::ArrayView<unsigned int>(global, 2));
+      if (timeline)
+        timeline->lap(mpm::StepTimeline::relocation_reduction);
+      if (global[0] != 0)
+        return false; // the full sort takes over (the locations are set)
+      if (global[1] == 0)
+        return true;
+
+      // As deal.II's sort does it, so that the points end up in the same order within
+      // their cells: the moving points are appended to their new cells first, then
+      // removed from their old ones back to front (the points were collected cell by cell
+      // in increasing order within each cell; a removal moves a cell's last point into
+      // the gap, so the iterators of the points still to be removed stay valid).
+      for (unsigned int k = 0; k < moving_particles.size(); ++k)
+        {
+          const MovingParticle &moving = moving_particles[k];
+          handler.insert_particle(
+            moving.location,
+            moving.reference,
+            moving.id,
+            moving.cell,
+            dealii::ArrayView<const double>(moving_data.data() + k * n_properties, n_properties));
+        }
+      for (auto moving = moving_particles.rbegin(); moving != moving_particles.rend(); ++moving)
+        handler.remove_particle(moving->particle);
+      handler.update_cached_numbers();
+      return true;
+    }
+
+
+
+    void
+    PointCloud::sort()
+    {
+      handler.sort_particles_into_subdomains_and_cells();
+    }
+
+
+
+    void
+    PointCloud::prepare_for_grid_change()
+    {
+      handler.prepare_for_coarsening_and_refinement();
+    }
+
+
+
+    void
+    PointCloud::grid_changed()
+    {
+      handler.unpack_after_coarsening_and_refinement();
+    }
+
+
+
+    void
+    PointCloud::prepare_for_save()
+    {
+      handler.prepare_for_serialization();
+    }
+
+
+
+    void
+    PointCloud::load()
+    {
+      handler.deserialize();
+    }
+  } // namespace particles
+} // namespace slidewave

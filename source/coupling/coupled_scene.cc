@@ -11,6 +11,7 @@
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/coupling/coupled_scene.h>
+#include <slidewave/io/solver_checkpoints.h>
 #include <sstream>
 
 namespace slidewave
@@ -507,10 +508,7 @@ namespace slidewave
     CoupledScene::save(io::CheckpointRecord &record)
     {
       gauges.flush();
-      const auto soil_state = soil->state();
-      record.put("soil/time", soil_state.time);
-      record.put("soil/lost_mass", soil_state.lost_mass);
-      record.put("soil/steps", soil_state.n_steps);
+      io::save_state(record, "soil", *soil);
       record.put("coupling/columns", columns);
       record.put("coupling/water_interfaces", water->mesh().interfaces());
       const dealii::Tensor<1, 2> load = interface->load_on_soil();
@@ -520,10 +518,7 @@ namespace slidewave
       record.put("coupling/max_volume_balance", max_volume_balance);
       record.put("coupling/max_deviation", max_deviation);
       record.put("coupling/max_soil_speed", max_soil_speed);
-      record.put("water/depth", water->depth());
-      record.put("water/discharge", water->discharge());
-      record.put("water/bed", water->bed());
-      record.put("water/boundary_inflow", water->net_boundary_inflow());
+      io::save_state(record, "water", *water);
       record.put_files("soil/particle_files", particle_output.files);
     }
 
@@ -545,21 +540,14 @@ namespace slidewave
       dealii::TimerOutput::Scope scope(timer_output, "coupled: setup");
       create_soil(timer_output);
       soil->load(prefix);
-      mpm::MaterialPointSolver::State soil_state;
-      soil_state.time      = record.get("soil/time");
-      soil_state.lost_mass = record.get("soil/lost_mass");
-      soil_state.n_steps   = record.get_unsigned("soil/steps");
-      soil->set_state(soil_state);
+      io::restore_state(record, "soil", *soil);
 
       // The water cells and the soil columns of the set-up (the grid may have been
       // refined since), the water's state and the loads of the last step (the point
       // forces themselves travel with the material points).
       build_water(water::WaterMesh(record.get_vector("coupling/water_interfaces")),
                   record.get_vector("coupling/columns"));
-      water->restore(record.get_vector("water/depth"),
-                     record.get_vector("water/discharge"),
-                     record.get_vector("water/bed"),
-                     record.get("water/boundary_inflow"));
+      io::restore_state(record, "water", *water);
       const auto &load = record.get_vector("coupling/load_on_soil");
       interface->restore_load_on_soil(dealii::Tensor<1, 2>({load.at(0), load.at(1)}));
       initial_volume        = record.get("coupling/initial_volume");

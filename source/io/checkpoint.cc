@@ -36,6 +36,22 @@ namespace slidewave
 
 
 
+    template <typename Value>
+    const Value &
+    CheckpointRecord::find_entry(const std::map<std::string, Value> &entries,
+                                 const std::string                  &name) const
+    {
+      const auto entry = entries.find(name);
+      if (entry == entries.end())
+        throw InputError(resume_parameter,
+                         "true",
+                         "a readable checkpoint ('" + file_name + "' is damaged: it has no '" + name
+                           + "')");
+      return entry->second;
+    }
+
+
+
     void
     CheckpointRecord::put(const std::string &name, const double value)
     {
@@ -63,13 +79,7 @@ namespace slidewave
     const std::vector<double> &
     CheckpointRecord::get_vector(const std::string &name) const
     {
-      const auto entry = numbers.find(name);
-      if (entry == numbers.end())
-        throw InputError(resume_parameter,
-                         "true",
-                         "a readable checkpoint ('" + file_name + "' is damaged: it has no '" + name
-                           + "')");
-      return entry->second;
+      return find_entry(numbers, name);
     }
 
 
@@ -139,13 +149,7 @@ namespace slidewave
     const std::string &
     CheckpointRecord::get_text(const std::string &name) const
     {
-      const auto entry = texts.find(name);
-      if (entry == texts.end())
-        throw InputError(resume_parameter,
-                         "true",
-                         "a readable checkpoint ('" + file_name + "' is damaged: it has no '" + name
-                           + "')");
-      return entry->second;
+      return find_entry(texts, name);
     }
 
 

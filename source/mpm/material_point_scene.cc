@@ -14,6 +14,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
+#include <slidewave/io/solver_checkpoints.h>
 #include <slidewave/mpm/material_point_scene.h>
 #include <slidewave/mpm/particle_properties.h>
 #include <sstream>
@@ -421,10 +422,7 @@ namespace slidewave
     void
     MaterialPointScene::save(io::CheckpointRecord &record)
     {
-      const auto solver_state = solver->state();
-      record.put("mpm/time", solver_state.time);
-      record.put("mpm/lost_mass", solver_state.lost_mass);
-      record.put("mpm/steps", solver_state.n_steps);
+      io::save_state(record, "mpm", *solver);
       record.put("mpm/max_error", max_error);
       record.put("mpm/initial_energy", initial_energy);
       record.put("mpm/total_mass", total_mass);
@@ -448,19 +446,15 @@ namespace slidewave
                                dealii::TimerOutput        &timer_output)
     {
       dealii::TimerOutput::Scope scope(timer_output, "mpm: setup");
-      MaterialPointSolver::State solver_state;
-      solver_state.time      = record.get("mpm/time");
-      solver_state.lost_mass = record.get("mpm/lost_mass");
-      solver_state.n_steps   = record.get_unsigned("mpm/steps");
-      max_error              = record.get("mpm/max_error");
-      initial_energy         = record.get("mpm/initial_energy");
-      total_mass             = record.get("mpm/total_mass");
-      particle_output.files  = record.get_files("mpm/particle_files");
-      grid_files             = record.get_files("mpm/grid_files");
-      first_step             = record.get_unsigned("run/step");
+      max_error             = record.get("mpm/max_error");
+      initial_energy        = record.get("mpm/initial_energy");
+      total_mass            = record.get("mpm/total_mass");
+      particle_output.files = record.get_files("mpm/particle_files");
+      grid_files            = record.get_files("mpm/grid_files");
+      first_step            = record.get_unsigned("run/step");
       create_solver(timer_output);
       solver->load(prefix);
-      solver->set_state(solver_state);
+      io::restore_state(record, "mpm", *solver);
     }
 
 

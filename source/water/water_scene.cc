@@ -14,6 +14,7 @@
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/core/timed_run.h>
+#include <slidewave/io/solver_checkpoints.h>
 #include <slidewave/water/water_output.h>
 #include <slidewave/water/water_scene.h>
 #include <sstream>
@@ -477,10 +478,7 @@ namespace slidewave
     WaterScene::save(io::CheckpointRecord &record)
     {
       gauges.flush();
-      record.put("water/depth", water->depth());
-      record.put("water/discharge", water->discharge());
-      record.put("water/bed", water->bed());
-      record.put("water/boundary_inflow", water->net_boundary_inflow());
+      io::save_state(record, "water", *water);
       record.put("water/initial_volume", initial_volume);
       record.put("water/initial_depth", initial_depth);
       record.put("water/initial_discharge", initial_discharge);
@@ -495,10 +493,7 @@ namespace slidewave
                        dealii::TimerOutput &timer_output)
     {
       timer = &timer_output;
-      water->restore(record.get_vector("water/depth"),
-                     record.get_vector("water/discharge"),
-                     record.get_vector("water/bed"),
-                     record.get("water/boundary_inflow"));
+      io::restore_state(record, "water", *water);
       initial_volume     = record.get("water/initial_volume");
       initial_depth      = record.get_vector("water/initial_depth");
       initial_discharge  = record.get_vector("water/initial_discharge");

@@ -57,6 +57,11 @@ namespace slidewave
       read(const std::string &file_name);
 
     private:
+      /** The entry @p name; throws InputError (a damaged checkpoint) when there is none. */
+      template <typename Value>
+      const Value &
+      find_entry(const std::map<std::string, Value> &entries, const std::string &name) const;
+
       std::string                                file_name;
       std::map<std::string, std::vector<double>> numbers;
       std::map<std::string, std::string>         texts;

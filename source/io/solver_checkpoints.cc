@@ -1,0 +1,58 @@
+#include <slidewave/io/solver_checkpoints.h>
+
+namespace slidewave
+{
+  namespace io
+  {
+    void
+    save_state(CheckpointRecord               &record,
+               const std::string              &name,
+               const mpm::MaterialPointSolver &soil)
+    {
+      const auto state = soil.state();
+      record.put(name + "/time", state.time);
+      record.put(name + "/lost_mass", state.lost_mass);
+      record.put(name + "/steps", state.n_steps);
+    }
+
+
+
+    void
+    restore_state(const CheckpointRecord   &record,
+                  const std::string        &name,
+                  mpm::MaterialPointSolver &soil)
+    {
+      mpm::MaterialPointSolver::State state;
+      state.time      = record.get(name + "/time");
+      state.lost_mass = record.get(name + "/lost_mass");
+      state.n_steps   = record.get_unsigned(name + "/steps");
+      soil.set_state(state);
+    }
+
+
+
+    void
+    save_state(CheckpointRecord            &record,
+               const std::string           &name,
+               const water::ShallowWater1D &water)
+    {
+      record.put(name + "/depth", water.depth());
+      record.put(name + "/discharge", water.discharge());
+      record.put(name + "/bed", water.bed());
+      record.put(name + "/boundary_inflow", water.net_boundary_inflow());
+    }
+
+
+
+    void
+    restore_state(const CheckpointRecord &record,
+                  const std::string      &name,
+                  water::ShallowWater1D  &water)
+    {
+      water.restore(record.get_vector(name + "/depth"),
+                    record.get_vector(name + "/discharge"),
+                    record.get_vector(name + "/bed"),
+                    record.get(name + "/boundary_inflow"));
+    }
+  } // namespace io
+} // namespace slidewave

@@ -57,6 +57,9 @@ namespace slidewave
       struct ScatterTerms
       {
         double m, vx, vy, V, sxx, syy, sxy, fx, fy;
+        /** Gravity, a copy per point: held in registers over the point's nodes (the
+         *  model's member could alias the nodal sums the loop writes). */
+        double gx, gy;
       };
 
       template <typename Properties>
@@ -71,7 +74,9 @@ namespace slidewave
                 p[property::stress_yy],
                 p[property::stress_xy],
                 point_forces ? p[property::point_force_x] : 0.,
-                point_forces ? p[property::point_force_y] : 0.};
+                point_forces ? p[property::point_force_y] : 0.,
+                gravity[0],
+                gravity[1]};
       }
 
       /** The point's force on its k-th node, with @p mk = S_k m: the internal force
@@ -84,10 +89,8 @@ namespace slidewave
                   double             &fx,
                   double             &fy) const
       {
-        fx = -t.V * (t.sxx * w.grad_x[k] + t.sxy * w.grad_y[k]) + mk * gravity[0]
-             + w.value[k] * t.fx;
-        fy = -t.V * (t.sxy * w.grad_x[k] + t.syy * w.grad_y[k]) + mk * gravity[1]
-             + w.value[k] * t.fy;
+        fx = -t.V * (t.sxx * w.grad_x[k] + t.sxy * w.grad_y[k]) + mk * t.gx + w.value[k] * t.fx;
+        fy = -t.V * (t.sxy * w.grad_x[k] + t.syy * w.grad_y[k]) + mk * t.gy + w.value[k] * t.fy;
       }
 
       /**

@@ -112,7 +112,7 @@ namespace slidewave
 
       const SceneParameters          &scene;
       CouplingParameters              coupling;
-      mpm::MaterialPointParameters           soil_parameters;
+      mpm::MaterialPointParameters    soil_parameters;
       water::SolverParameters         water_parameters;
       std::optional<water::WaterMesh> configured_mesh;
       water::WaterBoundary            boundaries[2];

@@ -92,11 +92,11 @@ namespace slidewave
       double           rotation_rate = 1.;
       dealii::Point<2> rotation_centre;
 
-      const SceneParameters &scene;
-      ExactSolution          exact_solution = ExactSolution::none;
-      double                 bar_length = 25., bar_amplitude = 0.1, column_height = 1.;
-      double                 tolerance = 0.;
-      MaterialPointParameters       parameters;
+      const SceneParameters  &scene;
+      ExactSolution           exact_solution = ExactSolution::none;
+      double                  bar_length = 25., bar_amplitude = 0.1, column_height = 1.;
+      double                  tolerance = 0.;
+      MaterialPointParameters parameters;
       std::unique_ptr<MaterialPointSolver>        solver;
       ParticleOutput                              particle_output;
       std::vector<std::pair<double, std::string>> grid_files;

@@ -171,7 +171,8 @@ namespace slidewave
                                                        terrain.sample(mesh, scene.start_time),
                                                        coupling.water_density,
                                                        coupling.soil_surface,
-                                                       soil_parameters.lower_left[1]);
+                                                       soil_parameters.lower_left[1],
+                                                       coupling.water_pressure);
     }
 
 
@@ -185,6 +186,9 @@ namespace slidewave
       std::vector<double> depth, discharge;
       initial_condition.evaluate(water->mesh(), bed, scene.start_time, depth, discharge);
       water->set_state(depth, discharge);
+      // The initial level eta_0 of the excess pressure (paper 000, Eq. 10): the last call,
+      // after any gravity loading, decides.
+      interface->set_initial_level(*water);
     }
 
 
@@ -491,6 +495,11 @@ namespace slidewave
       out << "; water cells: "
           << (coupling.water_cells == WaterCells::grid_columns ? "grid columns" : "water mesh")
           << "; loads on soil: " << (coupling.loads_on_soil ? "yes" : "no");
+      if (coupling.loads_on_soil)
+        out << "; water pressure: "
+            << (coupling.water_pressure == WaterPressure::hydrostatic ?
+                  "hydrostatic" :
+                  "excess over initial level");
       return out.str();
     }
 
@@ -513,6 +522,8 @@ namespace slidewave
       record.put("coupling/water_interfaces", water->mesh().interfaces());
       const dealii::Tensor<1, 2> load = interface->load_on_soil();
       record.put("coupling/load_on_soil", std::vector<double>{load[0], load[1]});
+      if (!interface->initial_level().empty())
+        record.put("coupling/initial_level", interface->initial_level());
       record.put("coupling/initial_volume", initial_volume);
       record.put("coupling/initial_toe", initial_toe);
       record.put("coupling/max_volume_balance", max_volume_balance);
@@ -550,6 +561,8 @@ namespace slidewave
       io::restore_state(record, "water", *water);
       const auto &load = record.get_vector("coupling/load_on_soil");
       interface->restore_load_on_soil(dealii::Tensor<1, 2>({load.at(0), load.at(1)}));
+      if (coupling.water_pressure == WaterPressure::excess_over_initial_level)
+        interface->restore_initial_level(record.get_vector("coupling/initial_level"));
       initial_volume        = record.get("coupling/initial_volume");
       initial_toe           = record.get("coupling/initial_toe");
       max_volume_balance    = record.get("coupling/max_volume_balance");

@@ -46,6 +46,21 @@ namespace slidewave
                         Bool(),
                         "Whether the water's pressure and bed shear act on the soil (false: "
                         "one-way coupling, the soil moves the water only).");
+      prm.declare_entry(
+        "Water pressure on soil",
+        "hydrostatic",
+        Selection("hydrostatic|excess over initial level"),
+        "Which water pressure loads the soil (with 'Water loads on soil = true'). "
+        "'hydrostatic': the full pressure of the water, rho_w g (eta - z): the still water's "
+        "weight on the soil's top and its thrust on the faces; with the soil's saturated "
+        "density this is a total-stress analysis in which the soil feels its buoyancy. "
+        "'excess over initial level': paper 000, Eq. 10, p = -rho_w g (eta - eta_0), "
+        "eta_0 = h_0 + B_0 the free surface of each water cell at the start (after any "
+        "gravity loading), kept through the run: still water loads nothing, a wave's crest "
+        "pushes down and its trough pulls up; on a face of the bed, the thrust of the "
+        "present level less that of the initial level. The soil then moves under its full "
+        "weight, as if the still water were not there. Dry cells load nothing in both "
+        "forms. See doc/coupled.md for when to choose which.");
       prm.declare_entry("Maximum substeps",
                         "1",
                         Integer(1, 1000),
@@ -81,11 +96,14 @@ namespace slidewave
     void
     CouplingParameters::parse_parameters(dealii::ParameterHandler &prm)
     {
-      water_density = prm.get_double("Water density");
-      water_cells   = prm.get("Water cells") == "grid columns" ? WaterCells::grid_columns :
-                                                                 WaterCells::water_mesh;
-      soil_surface  = prm.get("Soil surface") == "top" ? SoilSurface::top : SoilSurface::envelope;
-      loads_on_soil = prm.get_bool("Water loads on soil");
+      water_density  = prm.get_double("Water density");
+      water_cells    = prm.get("Water cells") == "grid columns" ? WaterCells::grid_columns :
+                                                                  WaterCells::water_mesh;
+      soil_surface   = prm.get("Soil surface") == "top" ? SoilSurface::top : SoilSurface::envelope;
+      loads_on_soil  = prm.get_bool("Water loads on soil");
+      water_pressure = prm.get("Water pressure on soil") == "hydrostatic" ?
+                         WaterPressure::hydrostatic :
+                         WaterPressure::excess_over_initial_level;
       maximum_substeps = prm.get_integer("Maximum substeps");
       if (!(water_density > 0.))
         throw InputError(section + "/Water density",

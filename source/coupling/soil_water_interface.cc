@@ -14,13 +14,15 @@ namespace slidewave
                                            std::vector<double>     terrain_cells,
                                            const double            density,
                                            const SoilSurface       surface_kind,
-                                           const double            grid_floor)
+                                           const double            grid_floor,
+                                           const WaterPressure     water_pressure)
       : columns(std::move(column_interfaces))
       , terrain_at_columns(std::move(terrain_columns))
       , terrain_at_cells(std::move(terrain_cells))
       , water_density(density)
       , surface_definition(surface_kind)
       , floor(grid_floor)
+      , pressure(water_pressure)
       , same_cells(columns == water_mesh.interfaces())
     {
       const unsigned int n_columns = columns.size() - 1;
@@ -68,11 +70,42 @@ namespace slidewave
       cell_thrust.resize(n_cells);
       cell_band_bottom.resize(n_cells);
       cell_band_level.resize(n_cells);
+      cell_band_reference.resize(n_cells);
       column_thrust.resize(n_columns);
       band_bottom.resize(n_columns);
       band_level.resize(n_columns);
+      band_reference.resize(n_columns);
       face_weights.resize(n_columns);
       surface_weights.resize(n_columns);
+    }
+
+
+
+    void
+    SoilWaterInterface::set_initial_level(const water::ShallowWater1D &water)
+    {
+      if (pressure != WaterPressure::excess_over_initial_level)
+        return;
+      // A cell dry at the start had no water pressure: its level is -infinity, and any
+      // water that comes later loads the bed with its full pressure.
+      reference_level.resize(water.n_cells());
+      for (unsigned int i = 0; i < water.n_cells(); ++i)
+        reference_level[i] = water.depth()[i] > water.parameters().dry_depth ?
+                               water.depth()[i] + water.bed()[i] :
+                               -std::numeric_limits<double>::infinity();
+    }
+
+
+
+    void
+    SoilWaterInterface::restore_initial_level(const std::vector<double> &level)
+    {
+      AssertThrow(pressure == WaterPressure::excess_over_initial_level
+                    && level.size() == bed_elevation.size(),
+                  dealii::ExcMessage("The initial water level of the checkpoint has "
+                                     + std::to_string(level.size()) + " values for "
+                                     + std::to_string(bed_elevation.size()) + " water cells."));
+      reference_level = level;
     }
 
 
@@ -216,7 +249,15 @@ namespace slidewave
       const double       rho           = water_density;
       const unsigned int n             = mesh.n_cells();
 
-      // Per water cell: the weight of the water on the bed and the bed shear.
+      // Under the excess form (paper 000, Eq. 10) the pressure on the bed is that above the
+      // initial level eta_0 of the cell, rho_w g (eta - eta_0); the still water's weight
+      // and thrust are not loads.
+      const bool excess = pressure == WaterPressure::excess_over_initial_level;
+      Assert(!excess || reference_level.size() == n, dealii::ExcInternalError());
+      constexpr double no_level = -std::numeric_limits<double>::infinity();
+
+      // Per water cell: the weight of the water (or of its excess over the initial level)
+      // on the bed, and the bed shear.
       for (unsigned int i = 0; i < n; ++i)
         {
           cell_load_x[i] = 0.;
@@ -231,31 +272,48 @@ namespace slidewave
             tau = std::clamp(tau, -rho * h[i] * std::abs(u) / dt, rho * h[i] * std::abs(u) / dt);
           const unsigned int l = i > 0 ? i - 1 : i, r = i + 1 < n ? i + 1 : i;
           const double       slope = r > l ? (B[r] - B[l]) / (mesh.center(r) - mesh.center(l)) : 0.;
-          cell_load_x[i]           = tau * dx;
-          cell_load_y[i]           = -rho * g * h[i] * dx + tau * slope * dx;
+          // The excess pressure on the bed, p(B) - p_0(B) with p_0(z) = rho g (eta_0 - z)+:
+          // rho g (eta - eta_0) where the bed is below the initial level (eta computed as
+          // eta_0 was, so that still water gives an exact zero), the full rho g h where it
+          // is above it (there was no water pressure there at the start).
+          const double head
+            = excess && B[i] < reference_level[i] ? h[i] + B[i] - reference_level[i] : h[i];
+          cell_load_x[i] = tau * dx;
+          cell_load_y[i] = -rho * g * head * dx + tau * slope * dx;
         }
       // The thrust of the water against each step of the bed, on the higher side: the
       // hydrostatic pressure of the lower cell's water integrated over the step's height,
-      // borne by the soil in the wet band of the face, [B_low, eta_low].
+      // borne by the soil in the wet band of the face, [B_low, eta_low]. Under the excess
+      // form, the thrust of the present level less that of the initial level on the same
+      // face (rho_w g (eta - eta_0) times the face's height where both levels are above it).
+      const auto thrust_of = [&](const double level, const double bottom, const double top) {
+        const double below = std::max(level - bottom, 0.), above = std::max(level - top, 0.);
+        return 0.5 * rho * g * (below * below - above * above);
+      };
       std::fill(cell_thrust.begin(), cell_thrust.end(), 0.);
       std::fill(cell_band_bottom.begin(),
                 cell_band_bottom.end(),
                 std::numeric_limits<double>::infinity());
-      std::fill(cell_band_level.begin(),
-                cell_band_level.end(),
-                -std::numeric_limits<double>::infinity());
+      std::fill(cell_band_level.begin(), cell_band_level.end(), no_level);
+      std::fill(cell_band_reference.begin(), cell_band_reference.end(), no_level);
       for (unsigned int i = 0; i + 1 < n; ++i)
         {
           const bool         rises = B[i + 1] > B[i];
           const unsigned int low = rises ? i : i + 1, high = rises ? i + 1 : i;
           if (h[low] <= dry)
             continue;
-          const double eta    = h[low] + B[low];
-          const double above  = std::max(eta - B[high], 0.);
-          const double thrust = 0.5 * rho * g * (h[low] * h[low] - above * above);
+          const double eta   = h[low] + B[low];
+          const double above = std::max(eta - B[high], 0.);
+          // (Both thrusts of the excess form from the levels, so that still water, whose
+          // eta is computed as eta_0 was, gives exactly zero.)
+          const double thrust = excess ? thrust_of(eta, B[low], B[high])
+                                           - thrust_of(reference_level[low], B[low], B[high]) :
+                                         0.5 * rho * g * (h[low] * h[low] - above * above);
           cell_thrust[high] += rises ? thrust : -thrust;
           cell_band_bottom[high] = std::min(cell_band_bottom[high], B[low]);
           cell_band_level[high]  = std::max(cell_band_level[high], eta);
+          if (excess)
+            cell_band_reference[high] = std::max(cell_band_reference[high], reference_level[low]);
         }
 
       // To the columns (in proportion to the overlap).
@@ -263,7 +321,8 @@ namespace slidewave
       std::fill(column_load_y.begin(), column_load_y.end(), 0.);
       std::fill(column_thrust.begin(), column_thrust.end(), 0.);
       std::fill(band_bottom.begin(), band_bottom.end(), std::numeric_limits<double>::infinity());
-      std::fill(band_level.begin(), band_level.end(), -std::numeric_limits<double>::infinity());
+      std::fill(band_level.begin(), band_level.end(), no_level);
+      std::fill(band_reference.begin(), band_reference.end(), no_level);
       for (unsigned int i = 0; i < n; ++i)
         for (unsigned int e = overlap_start[i]; e < overlap_start[i + 1]; ++e)
           {
@@ -274,24 +333,26 @@ namespace slidewave
             if (cell_thrust[i] != 0.)
               {
                 column_thrust[c] += overlap_fraction[e] * cell_thrust[i];
-                band_bottom[c] = std::min(band_bottom[c], cell_band_bottom[i]);
-                band_level[c]  = std::max(band_level[c], cell_band_level[i]);
+                band_bottom[c]    = std::min(band_bottom[c], cell_band_bottom[i]);
+                band_level[c]     = std::max(band_level[c], cell_band_level[i]);
+                band_reference[c] = std::max(band_reference[c], cell_band_reference[i]);
               }
           }
 
       // The surface points of each column (within half a point spacing of the top) share
       // its weight and shear; the points in the wet band of a face share its thrust in
-      // proportion to the water pressure at their height; both in proportion to the part
-      // of the point's domain over the column.
+      // proportion to the water pressure at their height (its excess over the initial
+      // level's under the excess form: the same sign all along the face); both in proportion
+      // to the part of the point's domain over the column.
       const auto surface_weight = [&](const auto &particle, const unsigned int column) {
         const double l_y = particle.get_properties()[domain_half_y];
         return particle.get_location()[1] + l_y >= surface_height[column] - l_y ? 1. : 0.;
       };
       const auto face_weight = [&](const auto &particle, const unsigned int column) {
         const double y = particle.get_location()[1];
-        return column_thrust[column] != 0. && y >= band_bottom[column] ?
-                 std::max(band_level[column] - y, 0.) :
-                 0.;
+        return column_thrust[column] != 0. && y >= band_bottom[column] ? std::abs(
+                 std::max(band_level[column] - y, 0.) - std::max(band_reference[column] - y, 0.)) :
+                                                                         0.;
       };
       std::fill(surface_weights.begin(), surface_weights.end(), 0.);
       std::fill(face_weights.begin(), face_weights.end(), 0.);

@@ -24,11 +24,12 @@ namespace slidewave
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      double       water_density    = 1000.;
-      WaterCells   water_cells      = WaterCells::grid_columns;
-      SoilSurface  soil_surface     = SoilSurface::envelope;
-      bool         loads_on_soil    = true;
-      unsigned int maximum_substeps = 1;
+      double        water_density    = 1000.;
+      WaterCells    water_cells      = WaterCells::grid_columns;
+      SoilSurface   soil_surface     = SoilSurface::envelope;
+      bool          loads_on_soil    = true;
+      WaterPressure water_pressure   = WaterPressure::hydrostatic;
+      unsigned int  maximum_substeps = 1;
 
       /** Verification: if > 0, the run fails (exit status 3) beyond these. */
       double tolerance_volume       = 0.;

@@ -25,6 +25,21 @@ namespace slidewave
 
 
 
+    /** Which water pressure loads the soil (subsection "Coupling", 'Water pressure on
+     *  soil'). */
+    enum class WaterPressure
+    {
+      /** The full hydrostatic pressure of the water, rho_w g (eta - z): total-stress
+       *  loading, the still water's weight on the soil's top and its thrust on the faces. */
+      hydrostatic,
+      /** Paper 000, Eq. 10: the pressure in excess of that of the initial water level
+       *  eta_0 = h_0 + B_0 of each water cell, rho_w g (eta - eta_0) on the bed: still
+       *  water loads nothing, a wave's crest pushes and its trough pulls. */
+      excess_over_initial_level
+    };
+
+
+
     /**
      * What passes between the soil (material points) and the water (1D finite volumes)
      * across the seabed (paper 000, Eq. 10 and Algorithm 1):
@@ -38,12 +53,14 @@ namespace slidewave
      *   at a steep face or a corner).
      * - water to soil: per water cell, the weight of the water column on the bed and the
      *   Manning bed shear along it, and the hydrostatic thrust on the rising side of every
-     *   step of the bed (exact for a stepped bed); moved to the soil columns in proportion
+     *   step of the bed (exact for a stepped bed); under WaterPressure::excess_over_initial_level
+     *   the weight and the thrust of the pressure in excess of the initial level's, which
+     *   is rho_w g (eta - eta_0) below both levels; moved to the soil columns in proportion
      *   to the overlap (conservative), the weight and shear in proportion to the part of
      *   the column's width that is soil. In each column the weight and shear are shared by
      *   the material points within half a point spacing of the surface, the thrust by the
-     *   points in the wet band of the face in proportion to the water pressure at their
-     *   height, as point forces; a point acts on (and takes loads from) every column its
+     *   points in the wet band of the face in proportion to the (excess) water pressure at
+     *   their height, as point forces; a point acts on (and takes loads from) every column its
      *   domain overlaps, in proportion to the overlap. Dry cells load nothing; what falls on a
      * column without soil rests on the rigid floor.
      *
@@ -64,7 +81,24 @@ namespace slidewave
                          std::vector<double>     terrain_at_cells,
                          double                  water_density,
                          SoilSurface             surface,
-                         double                  grid_floor);
+                         double                  grid_floor,
+                         WaterPressure           pressure = WaterPressure::hydrostatic);
+
+      /** Takes the water's present free surface, h + B per water cell, as the initial level
+       *  eta_0 of the excess pressure (only with WaterPressure::excess_over_initial_level). */
+      void
+      set_initial_level(const water::ShallowWater1D &water);
+
+      /** The initial level eta_0 per water cell (empty under hydrostatic pressure). */
+      const std::vector<double> &
+      initial_level() const
+      {
+        return reference_level;
+      }
+
+      /** Sets the initial level eta_0 (a run resumed from a checkpoint). */
+      void
+      restore_initial_level(const std::vector<double> &level);
 
       /** The soil surface per column from the material points (collective). */
       void
@@ -123,6 +157,9 @@ namespace slidewave
       double              water_density;
       SoilSurface         surface_definition;
       double              floor;
+      WaterPressure       pressure;
+      /** eta_0 per water cell (WaterPressure::excess_over_initial_level). */
+      std::vector<double> reference_level;
       /** The columns are the water cells: no reconstruction, no transfer. */
       bool same_cells;
 
@@ -140,7 +177,9 @@ namespace slidewave
       std::vector<double> column_load_x, column_load_y, cell_load_x, cell_load_y;
       /** Thrust on the faces of the bed and the wet band [bottom, water level] of the
        *  face, per water cell and per column. */
-      std::vector<double>  cell_thrust, cell_band_bottom, cell_band_level;
+      std::vector<double> cell_thrust, cell_band_bottom, cell_band_level;
+      /** The initial level of the band's water (-infinity under hydrostatic pressure). */
+      std::vector<double>  cell_band_reference, band_reference;
       std::vector<double>  column_thrust, band_bottom, band_level, face_weights;
       std::vector<double>  surface_weights;
       MonotoneCubic        reconstruction;

@@ -132,6 +132,16 @@ namespace slidewave
       /** Side arrays reused every step (no allocation per particle). */
       std::vector<dealii::Point<2>>     positions;
       std::vector<dealii::Tensor<2, 2>> cell_gradients;
+
+      /** Keeps the velocity gradient of the @p k-th point of a cell; the storage grows (by
+       *  doubling, so rarely) to the most points a cell has had. */
+      void
+      store_gradient(const unsigned int k, const dealii::Tensor<2, 2> &L)
+      {
+        if (k >= cell_gradients.size())
+          cell_gradients.resize(2 * k + 16);
+        cell_gradients[k] = L;
+      }
     };
   } // namespace mpm
 } // namespace slidewave

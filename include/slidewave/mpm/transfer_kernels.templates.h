@@ -68,6 +68,9 @@ namespace slidewave
       NodeWeights w;
       // Q1 talks to the nodes of the point's cell, GIMP to those of the cell's patch.
       const bool whole_patch = settings.shape_function != ShapeFunction::q1;
+      // The workspace's sums as a plain pointer, taken once: the point loop then indexes
+      // it directly instead of going through the workspace on every node.
+      double *const all_sums = nodes.sums(0);
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
         const unsigned int cell_index = cell->active_cell_index();
         if (whole_patch)
@@ -83,13 +86,15 @@ namespace slidewave
             const auto terms = model.scatter_terms(particle.get_properties());
             for (unsigned int k = 0; k < w.n; ++k)
               {
-                double      *sums = nodes.sums(w.node[k]);
+                // Everything read from the weights before anything is written to the
+                // sums (the compiler cannot tell that the two do not overlap).
+                double      *sums = all_sums + grid::NodalWorkspace::n_sums * w.node[k];
                 const double mk   = w.value[k] * terms.m;
+                double       fx, fy;
+                model.nodal_force(terms, w, k, mk, fx, fy);
                 sums[0] += mk;
                 sums[1] += mk * terms.vx;
                 sums[2] += mk * terms.vy;
-                double fx, fy;
-                model.nodal_force(terms, w, k, mk, fx, fy);
                 sums[3] += fx;
                 sums[4] += fy;
               }
@@ -275,11 +280,11 @@ namespace slidewave
       // updated in the same pass.
       NodeWeights  w;
       const double flip = settings.flip_fraction;
+      // The workspace's velocities as a plain pointer, taken once (see particles_to_grid).
+      const double *const all_velocities = nodes.velocities(0);
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
         const unsigned int cell_index = cell->active_cell_index();
-        if (with_stresses)
-          cell_gradients.resize(cloud.particles().n_particles_in_cell(cell));
-        unsigned int k = 0;
+        unsigned int       k          = 0;
         for (auto &particle : particles_in_cell)
           {
             shape_weights(particle, cell_index, w);
@@ -287,7 +292,7 @@ namespace slidewave
             dealii::Tensor<2, 2> L;
             for (unsigned int e = 0; e < w.n; ++e)
               {
-                const double *v  = nodes.velocities(w.node[e]);
+                const double *v  = all_velocities + grid::NodalWorkspace::n_velocities * w.node[e];
                 const double  vx = v[0];
                 const double  vy = v[1];
                 v_new[0] += w.value[e] * vx;
@@ -305,7 +310,7 @@ namespace slidewave
             positions[particle.get_local_index()]
               = particle.get_location() + dt * dealii::Tensor<1, 2>({v_new[0], v_new[1]});
             if (with_stresses)
-              cell_gradients[k++] = L;
+              store_gradient(k++, L);
           }
         if (with_stresses)
           model.update_cell(particles_in_cell, cell_gradients.data(), dt);
@@ -321,8 +326,7 @@ namespace slidewave
       NodeWeights w;
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
         const unsigned int cell_index = cell->active_cell_index();
-        cell_gradients.resize(cloud.particles().n_particles_in_cell(cell));
-        unsigned int k = 0;
+        unsigned int       k          = 0;
         for (const auto &particle : particles_in_cell)
           {
             shape_weights(particle, cell_index, w);
@@ -336,7 +340,7 @@ namespace slidewave
                 L[1][0] += vy * w.grad_x[e];
                 L[1][1] += vy * w.grad_y[e];
               }
-            cell_gradients[k++] = L;
+            store_gradient(k++, L);
           }
         model.update_cell(particles_in_cell, cell_gradients.data(), dt);
       });

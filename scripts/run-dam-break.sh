@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Sets up (Debian packages), builds, and runs the default scene: the dam break of paper 000
-# §4.2, with its error against Stoker's exact solution. Output in ./output-dam-break.
+# Sets up (Debian packages), builds, and runs the 1D dam break of paper 000 §4.2 with its
+# error against Stoker's exact solution. Output in ./output-dam-break.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/setup.sh"

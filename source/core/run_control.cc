@@ -34,8 +34,6 @@ namespace slidewave
   {
     if (!(scene.output_interval > 0.))
       return scene.end_time;
-    if (time == scene.start_time)
-      return scene.start_time + scene.output_interval;
     return scene.start_time
            + (std::floor((time - scene.start_time) / scene.output_interval + 1e-9) + 1.)
                * scene.output_interval;

@@ -246,9 +246,10 @@ namespace slidewave
       statistics.add_value("time", info.time);
       statistics.add_value("step", info.step);
       statistics.add_value("dt", info.dt);
-      // Steps of each solver in this coupled step (more than one when it sub-cycles).
-      statistics.add_value("soil_steps", info.step == 0 ? 0u : n_soil);
-      statistics.add_value("water_steps", info.step == 0 ? 0u : n_water);
+      // Steps of each solver in this coupled step (more than one when it sub-cycles; zero
+      // before the first).
+      statistics.add_value("soil_steps", n_soil);
+      statistics.add_value("water_steps", n_water);
       statistics.add_value("runout", integrals.runout - initial_toe);
       statistics.add_value("max_free_surface", water->max_free_surface());
       statistics.add_value("max_soil_speed", integrals.max_speed);

@@ -562,7 +562,7 @@ namespace slidewave
       io::restore_state(record, "water", *water);
       const auto &load = record.get_vector("coupling/load_on_soil");
       interface->restore_load_on_soil(dealii::Tensor<1, 2>({load.at(0), load.at(1)}));
-      if (coupling.water_pressure == WaterPressure::excess_over_initial_level)
+      if (coupling.loads_on_soil)
         interface->restore_initial_level(record.get_vector("coupling/initial_level"));
       initial_volume        = record.get("coupling/initial_volume");
       initial_toe           = record.get("coupling/initial_toe");

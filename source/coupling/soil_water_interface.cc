@@ -58,10 +58,7 @@ namespace slidewave
       samples.resize(n_columns);
       coverage.resize(n_columns);
       if (surface_definition == SoilSurface::envelope)
-        {
-          soil_height.resize(n_columns);
-          envelope.resize(n_columns * samples_per_column);
-        }
+        soil_height.resize(n_columns);
       bed_elevation.resize(n_cells);
       column_load_x.resize(n_columns);
       column_load_y.resize(n_columns);
@@ -76,7 +73,10 @@ namespace slidewave
       band_level.resize(n_columns);
       band_reference.resize(n_columns);
       face_weights.resize(n_columns);
-      surface_weights.resize(n_columns);
+      envelope.resize(n_columns * samples_per_column);
+      sample_count.resize(n_columns * samples_per_column);
+      covered_samples.resize(n_columns);
+      column_reference.assign(n_columns, -std::numeric_limits<double>::infinity());
     }
 
 
@@ -84,15 +84,39 @@ namespace slidewave
     void
     SoilWaterInterface::set_initial_level(const water::ShallowWater1D &water)
     {
-      if (pressure != WaterPressure::excess_over_initial_level)
-        return;
       // A cell dry at the start had no water pressure: its level is -infinity, and any
       // water that comes later loads the bed with its full pressure.
+      constexpr double no_level = -std::numeric_limits<double>::infinity();
+      const auto       wet
+        = [&](const unsigned int i) { return water.depth()[i] > water.parameters().dry_depth; };
+      // Hydrostatic: one still level eta_s for all wet cells (a flat reference, so that the
+      // buoyancy of the points below it is exactly the integral of its pressure over the
+      // soil's boundary), the lowest free surface of the wet cells.
+      double still_level = std::numeric_limits<double>::infinity();
+      for (unsigned int i = 0; i < water.n_cells(); ++i)
+        if (wet(i))
+          still_level = std::min(still_level, water.depth()[i] + water.bed()[i]);
       reference_level.resize(water.n_cells());
       for (unsigned int i = 0; i < water.n_cells(); ++i)
-        reference_level[i] = water.depth()[i] > water.parameters().dry_depth ?
-                               water.depth()[i] + water.bed()[i] :
-                               -std::numeric_limits<double>::infinity();
+        reference_level[i] = !wet(i) ? no_level :
+                             pressure == WaterPressure::hydrostatic ?
+                                       still_level :
+                                       water.depth()[i] + water.bed()[i];
+      set_column_reference();
+    }
+
+
+
+    void
+    SoilWaterInterface::set_column_reference()
+    {
+      // The pore water is taken in hydrostatic equilibrium with the still water: one flat
+      // phreatic level eta_s under every column (also where the soil stands above the
+      // water, or its top was dry at the start), so every point below eta_s is buoyant.
+      double still_level = -std::numeric_limits<double>::infinity();
+      for (const double level : reference_level)
+        still_level = std::max(still_level, level);
+      std::fill(column_reference.begin(), column_reference.end(), still_level);
     }
 
 
@@ -100,12 +124,12 @@ namespace slidewave
     void
     SoilWaterInterface::restore_initial_level(const std::vector<double> &level)
     {
-      AssertThrow(pressure == WaterPressure::excess_over_initial_level
-                    && level.size() == bed_elevation.size(),
+      AssertThrow(level.size() == bed_elevation.size(),
                   dealii::ExcMessage("The initial water level of the checkpoint has "
                                      + std::to_string(level.size()) + " values for "
                                      + std::to_string(bed_elevation.size()) + " water cells."));
       reference_level = level;
+      set_column_reference();
     }
 
 
@@ -146,6 +170,25 @@ namespace slidewave
 
 
 
+    template <typename Function>
+    inline void
+    SoilWaterInterface::for_each_sample_of(const double       x,
+                                           const double       l,
+                                           const unsigned int c,
+                                           const Function    &f) const
+    {
+      // The samples (centres of samples_per_column equal parts) of column c under the
+      // domain [x - l, x + l].
+      const double w     = (columns[c + 1] - columns[c]) / samples_per_column;
+      const int    first = std::max(0, static_cast<int>(std::ceil((x - l - columns[c]) / w - 0.5)));
+      const int    last  = std::min(static_cast<int>(samples_per_column) - 1,
+                                static_cast<int>(std::floor((x + l - columns[c]) / w - 0.5)));
+      for (int k = first; k <= last; ++k)
+        f(c * samples_per_column + k);
+    }
+
+
+
     void
     SoilWaterInterface::update_surface(const mpm::MaterialPointSolver &soil)
     {
@@ -155,8 +198,7 @@ namespace slidewave
       std::fill(surface_height.begin(),
                 surface_height.end(),
                 -std::numeric_limits<double>::infinity());
-      if (surface_definition == SoilSurface::envelope)
-        std::fill(envelope.begin(), envelope.end(), -std::numeric_limits<double>::infinity());
+      std::fill(envelope.begin(), envelope.end(), -std::numeric_limits<double>::infinity());
       for (const auto &particle : soil.particles())
         {
           const auto   x   = particle.get_location();
@@ -165,27 +207,16 @@ namespace slidewave
           const double l   = p[domain_half_x];
           for_each_column_of(x[0], l, [&](const unsigned int c, const double) {
             surface_height[c] = std::max(surface_height[c], top);
-            if (surface_definition == SoilSurface::envelope)
-              {
-                // The samples of the column under the point's domain.
-                const double w = (columns[c + 1] - columns[c]) / samples_per_column;
-                const int    first
-                  = std::max(0, static_cast<int>(std::ceil((x[0] - l - columns[c]) / w - 0.5)));
-                const int last
-                  = std::min(static_cast<int>(samples_per_column) - 1,
-                             static_cast<int>(std::floor((x[0] + l - columns[c]) / w - 0.5)));
-                for (int k = first; k <= last; ++k)
-                  {
-                    double &e = envelope[c * samples_per_column + k];
-                    e         = std::max(e, top);
-                  }
-              }
+            // The samples of the column under the point's domain.
+            for_each_sample_of(x[0], l, c, [&](const unsigned int s) {
+              envelope[s] = std::max(envelope[s], top);
+            });
           });
         }
       dealii::Utilities::MPI::max(surface_height, MPI_COMM_WORLD, surface_height);
+      dealii::Utilities::MPI::max(envelope, MPI_COMM_WORLD, envelope);
       if (surface_definition == SoilSurface::envelope)
         {
-          dealii::Utilities::MPI::max(envelope, MPI_COMM_WORLD, envelope);
           // The mean of the envelope over the column, the floor where there is no soil.
           for (unsigned int c = 0; c < soil_height.size(); ++c)
             {
@@ -251,10 +282,28 @@ namespace slidewave
 
       // Under the excess form (paper 000, Eq. 10) the pressure on the bed is that above the
       // initial level eta_0 of the cell, rho_w g (eta - eta_0); the still water's weight
-      // and thrust are not loads.
-      const bool excess = pressure == WaterPressure::excess_over_initial_level;
-      Assert(!excess || reference_level.size() == n, dealii::ExcInternalError());
-      constexpr double no_level = -std::numeric_limits<double>::infinity();
+      // and thrust are not loads. Under hydrostatic pressure the same relative to the still
+      // level eta_s, whose pressure is the buoyancy of the points below it.
+      Assert(reference_level.size() == n, dealii::ExcInternalError());
+      constexpr double   no_level = -std::numeric_limits<double>::infinity();
+      const unsigned int volume   = soil.property_layout().index("volume");
+      // The buoyancy of a point: rho_w g times the part of its volume below the still level
+      // of the columns its domain overlaps.
+      const auto buoyancy = [&](const auto &particle) {
+        if (pressure != WaterPressure::hydrostatic)
+          return 0.;
+        const auto   p      = particle.get_properties();
+        const double bottom = particle.get_location()[1] - p[domain_half_y];
+        double       part   = 0.;
+        for_each_column_of(
+          particle.get_location()[0],
+          p[domain_half_x],
+          [&](const unsigned int c, const double fraction) {
+            part += fraction
+                    * std::clamp((column_reference[c] - bottom) / (2. * p[domain_half_y]), 0., 1.);
+          });
+        return rho * g * p[volume] * part;
+      };
 
       // Per water cell: the weight of the water (or of its excess over the initial level)
       // on the bed, and the bed shear.
@@ -276,10 +325,9 @@ namespace slidewave
           // rho g (eta - eta_0) where the bed is below the initial level (eta computed as
           // eta_0 was, so that still water gives an exact zero), the full rho g h where it
           // is above it (there was no water pressure there at the start).
-          const double head
-            = excess && B[i] < reference_level[i] ? h[i] + B[i] - reference_level[i] : h[i];
-          cell_load_x[i] = tau * dx;
-          cell_load_y[i] = -rho * g * head * dx + tau * slope * dx;
+          const double head = B[i] < reference_level[i] ? h[i] + B[i] - reference_level[i] : h[i];
+          cell_load_x[i]    = tau * dx;
+          cell_load_y[i]    = -rho * g * head * dx + tau * slope * dx;
         }
       // The thrust of the water against each step of the bed, on the higher side: the
       // hydrostatic pressure of the lower cell's water integrated over the step's height,
@@ -302,18 +350,15 @@ namespace slidewave
           const unsigned int low = rises ? i : i + 1, high = rises ? i + 1 : i;
           if (h[low] <= dry)
             continue;
-          const double eta   = h[low] + B[low];
-          const double above = std::max(eta - B[high], 0.);
-          // (Both thrusts of the excess form from the levels, so that still water, whose
-          // eta is computed as eta_0 was, gives exactly zero.)
-          const double thrust = excess ? thrust_of(eta, B[low], B[high])
-                                           - thrust_of(reference_level[low], B[low], B[high]) :
-                                         0.5 * rho * g * (h[low] * h[low] - above * above);
+          const double eta = h[low] + B[low];
+          // (Both thrusts from the levels, so that still water, whose eta is computed as
+          // the reference level was, gives exactly zero.)
+          const double thrust
+            = thrust_of(eta, B[low], B[high]) - thrust_of(reference_level[low], B[low], B[high]);
           cell_thrust[high] += rises ? thrust : -thrust;
-          cell_band_bottom[high] = std::min(cell_band_bottom[high], B[low]);
-          cell_band_level[high]  = std::max(cell_band_level[high], eta);
-          if (excess)
-            cell_band_reference[high] = std::max(cell_band_reference[high], reference_level[low]);
+          cell_band_bottom[high]    = std::min(cell_band_bottom[high], B[low]);
+          cell_band_level[high]     = std::max(cell_band_level[high], eta);
+          cell_band_reference[high] = std::max(cell_band_reference[high], reference_level[low]);
         }
 
       // To the columns (in proportion to the overlap).
@@ -339,14 +384,23 @@ namespace slidewave
               }
           }
 
-      // The surface points of each column (within half a point spacing of the top) share
-      // its weight and shear; the points in the wet band of a face share its thrust in
-      // proportion to the water pressure at their height (its excess over the initial
-      // level's under the excess form: the same sign all along the face); both in proportion
-      // to the part of the point's domain over the column.
-      const auto surface_weight = [&](const auto &particle, const unsigned int column) {
+      // The weight and shear of a column are shared equally by its samples that soil
+      // covers, and the load of a sample by the points that form the envelope there (their
+      // top within half a point spacing of it): the surface where it is, not the column's
+      // highest point (a point of the neighbouring column whose domain reaches into a lower
+      // column would otherwise take that column's whole load). The points in the wet band
+      // of a face share its thrust in proportion to the (excess) water pressure at their
+      // height, in proportion to the part of the point's domain over the column.
+      const auto on_envelope = [&](const auto &particle, const unsigned int c, const auto &f) {
         const double l_y = particle.get_properties()[domain_half_y];
-        return particle.get_location()[1] + l_y >= surface_height[column] - l_y ? 1. : 0.;
+        const double top = particle.get_location()[1] + l_y;
+        for_each_sample_of(particle.get_location()[0],
+                           particle.get_properties()[domain_half_x],
+                           c,
+                           [&](const unsigned int s) {
+                             if (envelope[s] > no_level && top >= envelope[s] - l_y)
+                               f(s);
+                           });
       };
       const auto face_weight = [&](const auto &particle, const unsigned int column) {
         const double y = particle.get_location()[1];
@@ -354,19 +408,30 @@ namespace slidewave
                  std::max(band_level[column] - y, 0.) - std::max(band_reference[column] - y, 0.)) :
                                                                          0.;
       };
-      std::fill(surface_weights.begin(), surface_weights.end(), 0.);
+      std::fill(sample_count.begin(), sample_count.end(), 0.);
       std::fill(face_weights.begin(), face_weights.end(), 0.);
+      double total_buoyancy = 0.;
       for (const auto &particle : soil.particles())
-        for_each_column_of(particle.get_location()[0],
-                           particle.get_properties()[domain_half_x],
-                           [&](const unsigned int c, const double fraction) {
-                             surface_weights[c] += fraction * surface_weight(particle, c);
-                             face_weights[c] += fraction * face_weight(particle, c);
-                           });
-      dealii::Utilities::MPI::sum(surface_weights, MPI_COMM_WORLD, surface_weights);
+        {
+          total_buoyancy += buoyancy(particle);
+          for_each_column_of(particle.get_location()[0],
+                             particle.get_properties()[domain_half_x],
+                             [&](const unsigned int c, const double fraction) {
+                               on_envelope(particle, c, [&](const unsigned int s) {
+                                 sample_count[s] += 1.;
+                               });
+                               face_weights[c] += fraction * face_weight(particle, c);
+                             });
+        }
+      dealii::Utilities::MPI::sum(sample_count, MPI_COMM_WORLD, sample_count);
       dealii::Utilities::MPI::sum(face_weights, MPI_COMM_WORLD, face_weights);
+      total_buoyancy = dealii::Utilities::MPI::sum(total_buoyancy, MPI_COMM_WORLD);
+      std::fill(covered_samples.begin(), covered_samples.end(), 0.);
+      for (unsigned int s = 0; s < sample_count.size(); ++s)
+        if (sample_count[s] > 0.)
+          covered_samples[s / samples_per_column] += 1.;
       // A face too low to hold a point: its thrust goes to the surface points.
-      for (unsigned int c = 0; c < surface_weights.size(); ++c)
+      for (unsigned int c = 0; c < covered_samples.size(); ++c)
         if (column_thrust[c] != 0. && !(face_weights[c] > 0.))
           {
             column_load_x[c] += column_thrust[c];
@@ -374,16 +439,15 @@ namespace slidewave
           }
 
       soil.set_point_forces([&](const dealii::Particles::ParticleAccessor<2> &particle) {
-        dealii::Tensor<1, 2> force;
+        dealii::Tensor<1, 2> force({0., buoyancy(particle)});
         for_each_column_of(particle.get_location()[0],
                            particle.get_properties()[domain_half_x],
                            [&](const unsigned int c, const double fraction) {
-                             const double surface = fraction * surface_weight(particle, c);
-                             if (surface > 0.)
-                               {
-                                 force[0] += column_load_x[c] * surface / surface_weights[c];
-                                 force[1] += column_load_y[c] * surface / surface_weights[c];
-                               }
+                             on_envelope(particle, c, [&](const unsigned int s) {
+                               const double share = 1. / (covered_samples[c] * sample_count[s]);
+                               force[0] += column_load_x[c] * share;
+                               force[1] += column_load_y[c] * share;
+                             });
                              const double face = fraction * face_weight(particle, c);
                              if (face > 0.)
                                force[0] += column_thrust[c] * face / face_weights[c];
@@ -391,9 +455,10 @@ namespace slidewave
         return force;
       });
 
-      total_load = dealii::Tensor<1, 2>();
-      for (unsigned int c = 0; c < surface_weights.size(); ++c)
-        if (surface_weights[c] > 0.)
+      // What the soil carries: the loads of the columns with soil, and the buoyancy.
+      total_load = dealii::Tensor<1, 2>({0., total_buoyancy});
+      for (unsigned int c = 0; c < covered_samples.size(); ++c)
+        if (covered_samples[c] > 0.)
           total_load
             += dealii::Tensor<1, 2>({column_load_x[c] + column_thrust[c], column_load_y[c]});
     }

@@ -1,24 +1,33 @@
-// The water's loads on the soil (coupling::SoilWaterInterface) against hydrostatics, for a
-// block of soil standing in still water, where the loads are known exactly.
+// The water's loads on the soil (coupling::SoilWaterInterface) under 'Water pressure on
+// soil = hydrostatic', for a block of soil standing in water, where the loads are known
+// exactly.
+//
+// The full hydrostatic pressure rho_w g (eta - z) is applied as two parts that add up to
+// it: the pressure of the still level eta_s (the lowest initial free surface of the wet
+// cells), whose integral over the boundary of the soil below eta_s (the base included, where
+// the pore water presses as everywhere else) is the buoyancy rho_w g V of that soil, applied
+// to each point as a body force rho_w g V_p times the part of its domain below eta_s; and the
+// pressure in excess of eta_s's on the soil's top and faces. The soil's stress then leaves
+// out the still water's pressure rho_w g (eta_s - z) (an isotropic part: the deviator, which
+// decides an undrained clay's failure, is the same), so that still water puts no force at
+// all on the boundary points, whose forces would otherwise load the outer cells unevenly.
 //
 // Grid [0, 2] x [0, 1.5] of 0.1 m cells, 2 x 2 GIMP points per cell; a 1 m x 1 m block
-// [0, 1] x [0, 1] against the left side; water cells = the 20 grid columns; still water at
-// eta = 1.5 m: 0.5 m over the block, 1.5 m beside it. rho_w = 1000, g = 9.81.
-// Exact (per m of thickness):
-//  - the soil surface is 1 m in the block's columns, both as the top of the point domains
-//    and as the mean of their upper envelope (the block fills its columns); the bed is
-//    1 m there and the floor (0) beyond;
-//  - vertical load: the weight of the water over the block, -rho g 0.5 m x 1 m = -4905 N,
-//    shared equally by the surface points (two per column, -24.525 N each);
-//  - horizontal load: the thrust on the block's face, -rho g (1.5^2 - 0.5^2) / 2 =
-//    -9810 N (towards -x), borne by the points of the column next to the face whose
-//    height y lies below the water (all of them), in proportion to rho g (1.5 - y); no
-//    other point gets a horizontal force (beyond round-off);
-//  - dry water beside a dry block (eta = 1 m, the block's top dry): the thrust is
-//    rho g 1^2 / 2 = 4905 N, the vertical load zero.
-// The sums run over a few hundred points: checked to 1e-10 relative (round-off). The
-// interface's own total (load_on_soil) and the sum of the point forces agree. On 1 and 2
-// ranks (same numbers: the points of a column may sit on different ranks).
+// [0, 1] x [0, 1] against the left side; water cells = the 20 grid columns. rho_w = 1000,
+// g = 9.81. Exact (per m of thickness):
+//  - still water at eta = 1.5 m (0.5 m over the block): the bed is the block's top (1 m)
+//    over the block and the floor beside it; every point carries its buoyancy
+//    rho_w g V_p upwards and nothing else; the total is rho_w g x 1 m^2 = 9810 N up;
+//  - still water at eta = 1.0 m (the block's top dry): the same buoyancy, 9810 N;
+//  - still water at eta = 0.5 m (the block half out of the water): the points of the lower
+//    half are buoyant, the upper half not (the level is a boundary between point domains):
+//    4905 N up;
+//  - the level raised from 1.5 m to 1.6 m (still level 1.5 m): the buoyancy, 9810 N up, plus
+//    the excess pressure rho_w g 0.1 m on the top (-981 N) and on the face (-981 N, towards
+//    -x): (-981, 8829) N (tests/unit/coupling_excess_water_loads checks how the excess is
+//    shared among the points).
+// Sums of a few hundred numbers: checked to 1e-10 relative (round-off). The interface's own
+// total (load_on_soil) and the sum of the point forces agree. On 1 and 2 ranks (same numbers).
 #include <cmath>
 #include <cstdio>
 #include <deal.II/base/mpi.h>
@@ -82,53 +91,63 @@ end
     return result;
   }
 
+  /** The loads with the water at @p level, the still level (the initial state) being
+   *  @p still. */
   void
-  check_still_water(mpm::MaterialPointSolver   &soil,
-                    const double                level,
-                    const double                exact_x,
-                    const double                exact_y,
-                    const coupling::SoilSurface surface)
+  check_water(mpm::MaterialPointSolver &soil,
+              const double              still,
+              const double              level,
+              const double              exact_x,
+              const double              exact_y,
+              const double              buoyant_below)
   {
     const water::WaterMesh       mesh = water::WaterMesh::uniform(0., 2., 20);
     water::ShallowWater1D        water(mesh, water::ShallowWaterParameters());
     const std::vector<double>    terrain(20, 0.);
-    coupling::SoilWaterInterface interface(
-      mesh.interfaces(), mesh, terrain, terrain, 1000., surface, 0.);
+    coupling::SoilWaterInterface interface(mesh.interfaces(),
+                                           mesh,
+                                           terrain,
+                                           terrain,
+                                           1000.,
+                                           coupling::SoilSurface::envelope,
+                                           0.,
+                                           coupling::WaterPressure::hydrostatic);
     interface.update_surface(soil);
-    const std::vector<double> &bed       = interface.bed();
-    double                     bed_error = 0.;
+    const std::vector<double> bed       = interface.bed();
+    double                    bed_error = 0.;
     for (unsigned int i = 0; i < 20; ++i)
       bed_error = std::max(bed_error, std::abs(bed[i] - (mesh.center(i) < 1. ? 1. : 0.)));
     if (root)
-      std::printf("still water at eta = %.1f m, soil surface = %s\n",
-                  level,
-                  surface == coupling::SoilSurface::top ? "top" : "envelope");
+      std::printf("still level %.1f m, water at %.1f m\n", still, level);
     check(bed_error < 1e-14, "bed = block top (1 m) over the block, floor beside it");
     water.set_bed(bed);
-    std::vector<double> depth(20), discharge(20, 0.);
-    for (unsigned int i = 0; i < 20; ++i)
-      depth[i] = std::max(level - bed[i], 0.);
-    water.set_state(depth, discharge);
+    const auto set_level = [&](const double eta) {
+      std::vector<double> depth(20), discharge(20, 0.);
+      for (unsigned int i = 0; i < 20; ++i)
+        depth[i] = std::max(eta - bed[i], 0.);
+      water.set_state(depth, discharge);
+    };
+    set_level(still);
+    interface.set_initial_level(water);
+    set_level(level);
     interface.apply_water_loads(soil, water, 0.);
 
     const dealii::Tensor<1, 2> total = soil.total_point_force();
     const dealii::Tensor<1, 2> own   = interface.load_on_soil();
-    // Horizontal forces off the face column, and the smallest and largest vertical share.
-    double stray = 0., share_min = std::numeric_limits<double>::infinity(), share_max = -share_min;
+    // In still water every point carries exactly its buoyancy: rho_w g V_p below the
+    // level, nothing above it, and no horizontal force.
+    double off_buoyancy = 0.;
     for (const auto &particle : soil.particles())
       {
-        const auto p = particle.get_properties();
-        if (particle.get_location()[0] < 0.9)
-          stray = std::max(stray, std::abs(p[mpm::property::point_force_x]));
-        if (p[mpm::property::point_force_y] != 0.)
-          {
-            share_min = std::min(share_min, p[mpm::property::point_force_y]);
-            share_max = std::max(share_max, p[mpm::property::point_force_y]);
-          }
+        const auto   p        = particle.get_properties();
+        const double buoyancy = particle.get_location()[1] < buoyant_below ?
+                                  1000. * 9.81 * p[mpm::property::volume] :
+                                  0.;
+        off_buoyancy          = std::max({off_buoyancy,
+                                          std::abs(p[mpm::property::point_force_x]),
+                                          std::abs(p[mpm::property::point_force_y] - buoyancy)});
       }
-    stray     = dealii::Utilities::MPI::max(stray, MPI_COMM_WORLD);
-    share_min = dealii::Utilities::MPI::min(share_min, MPI_COMM_WORLD);
-    share_max = dealii::Utilities::MPI::max(share_max, MPI_COMM_WORLD);
+    off_buoyancy = dealii::Utilities::MPI::max(off_buoyancy, MPI_COMM_WORLD);
     if (root)
       std::printf("  load on the soil: (%.6f, %.6f) N/m, exact (%.6f, %.6f)\n",
                   total[0],
@@ -136,14 +155,12 @@ end
                   exact_x,
                   exact_y);
     const double scale = std::abs(exact_x) + std::abs(exact_y);
-    check(std::abs(total[0] - exact_x) < 1e-10 * scale, "thrust on the face = hydrostatic");
-    check(std::abs(total[1] - exact_y) < 1e-10 * scale, "vertical load = water's weight");
+    check(std::abs(total[0] - exact_x) < 1e-10 * scale, "horizontal load");
+    check(std::abs(total[1] - exact_y) < 1e-10 * scale, "vertical load");
     check((own - total).norm() < 1e-10 * scale, "interface total = sum of point forces");
-    check(stray < 1e-10 * scale, "no horizontal force away from the face");
-    if (exact_y != 0.)
-      check(std::abs(share_min - share_max) < 1e-10 * scale
-              && std::abs(share_min - exact_y / 20.) < 1e-10 * scale,
-            "weight shared equally by the 20 surface points");
+    if (still == level)
+      check(off_buoyancy < 1e-12 * scale,
+            "every point carries its buoyancy and nothing else (no boundary load)");
   }
 } // namespace
 
@@ -156,11 +173,10 @@ main(int argc, char **argv)
     mpm::MaterialPointSolver soil(block_in_a_tank());
     soil.setup();
     const double rho_g = 1000. * 9.81;
-    for (const auto surface : {coupling::SoilSurface::top, coupling::SoilSurface::envelope})
-      {
-        check_still_water(soil, 1.5, -rho_g * (1.5 * 1.5 - 0.5 * 0.5) / 2., -rho_g * 0.5, surface);
-        check_still_water(soil, 1.0, -rho_g * 0.5, 0., surface);
-      }
+    check_water(soil, 1.5, 1.5, 0., rho_g * 1.0, 2.);
+    check_water(soil, 1.0, 1.0, 0., rho_g * 1.0, 2.);
+    check_water(soil, 0.5, 0.5, 0., rho_g * 0.5, 0.5);
+    check_water(soil, 1.5, 1.6, -rho_g * 0.1, rho_g * (1.0 - 0.1), 2.);
   }
   if (root)
     std::printf(all_passed ? "all checks passed\n" : "SOME CHECKS FAILED\n");

@@ -30,7 +30,13 @@ namespace slidewave
     enum class WaterPressure
     {
       /** The full hydrostatic pressure of the water, rho_w g (eta - z): total-stress
-       *  loading, the still water's weight on the soil's top and its thrust on the faces. */
+       *  loading, the still water's weight on the soil's top and its thrust on the faces.
+       *  Applied as two parts that add up to it: the pressure of the still level eta_s,
+       *  rho_w g (eta_s - z), whose integral over the wetted boundary of the soil below
+       *  eta_s is the buoyancy of that soil (a body force rho_w g V upwards on the points
+       *  below eta_s, consistent with the stress divergence as gravity is), and the
+       *  pressure in excess of it on the boundary (as the excess form, relative to eta_s).
+       *  The soil's stress then excludes the still water's pressure. */
       hydrostatic,
       /** Paper 000, Eq. 10: the pressure in excess of that of the initial water level
        *  eta_0 = h_0 + B_0 of each water cell, rho_w g (eta - eta_0) on the bed: still
@@ -84,12 +90,15 @@ namespace slidewave
                          double                  grid_floor,
                          WaterPressure           pressure = WaterPressure::hydrostatic);
 
-      /** Takes the water's present free surface, h + B per water cell, as the initial level
-       *  eta_0 of the excess pressure (only with WaterPressure::excess_over_initial_level). */
+      /** Takes the water's present state as the reference of the loads: the free surface
+       *  h + B per water cell as the initial level eta_0 of the excess pressure
+       *  (WaterPressure::excess_over_initial_level), or the still level eta_s, the lowest
+       *  free surface of the wet cells, in every cell wet now (WaterPressure::hydrostatic);
+       *  -infinity in the cells dry now. */
       void
       set_initial_level(const water::ShallowWater1D &water);
 
-      /** The initial level eta_0 per water cell (empty under hydrostatic pressure). */
+      /** The reference level per water cell (eta_0, or eta_s where wet at the start). */
       const std::vector<double> &
       initial_level() const
       {
@@ -142,6 +151,10 @@ namespace slidewave
       template <typename Function>
       void
       for_each_column_of(double x, double l, const Function &f) const;
+      /** Calls f(sample) for every envelope sample of column c under [x - l, x + l]. */
+      template <typename Function>
+      void
+      for_each_sample_of(double x, double l, unsigned int c, const Function &f) const;
 
       /** The soil's bed per column: the top or the envelope's mean. */
       const std::vector<double> &
@@ -158,8 +171,18 @@ namespace slidewave
       SoilSurface         surface_definition;
       double              floor;
       WaterPressure       pressure;
-      /** eta_0 per water cell (WaterPressure::excess_over_initial_level). */
+      /** eta_0 per water cell (WaterPressure::excess_over_initial_level), or eta_s where
+       *  the cell was wet at the start (WaterPressure::hydrostatic); -infinity elsewhere. */
       std::vector<double> reference_level;
+      /** Per column, the level below which the points are buoyant (WaterPressure::
+       *  hydrostatic): the still level eta_s everywhere (a flat phreatic surface). */
+      std::vector<double> column_reference;
+      /** Points forming the envelope at each sample (samples_per_column per column), and
+       *  the covered samples per column: the shares of a column's weight and shear. */
+      std::vector<double> sample_count, covered_samples;
+      /** Sets column_reference from reference_level. */
+      void
+      set_column_reference();
       /** The columns are the water cells: no reconstruction, no transfer. */
       bool same_cells;
 
@@ -181,7 +204,6 @@ namespace slidewave
       /** The initial level of the band's water (-infinity under hydrostatic pressure). */
       std::vector<double>  cell_band_reference, band_reference;
       std::vector<double>  column_thrust, band_bottom, band_level, face_weights;
-      std::vector<double>  surface_weights;
       MonotoneCubic        reconstruction;
       dealii::Tensor<1, 2> total_load;
     };

@@ -28,6 +28,8 @@
 //    shared among the points).
 // Sums of a few hundred numbers: checked to 1e-10 relative (round-off). The interface's own
 // total (load_on_soil) and the sum of the point forces agree. On 1 and 2 ranks (same numbers).
+#include "water_load_block.h"
+
 #include <cmath>
 #include <cstdio>
 #include <deal.II/base/mpi.h>
@@ -43,54 +45,6 @@ using namespace slidewave;
 
 namespace
 {
-  bool all_passed = true;
-  bool root       = true;
-
-  void
-  check(const bool condition, const char *what)
-  {
-    if (root)
-      std::printf("  %s: %s\n", what, condition ? "yes" : "no");
-    all_passed = all_passed && condition;
-  }
-
-  mpm::MaterialPointParameters
-  block_in_a_tank()
-  {
-    dealii::ParameterHandler prm;
-    prm.enter_subsection("Material points");
-    mpm::MaterialPointParameters::declare_parameters(prm);
-    prm.leave_subsection();
-    prm.parse_input_from_string(R"(subsection Material points
-set Shape functions = gimp
-set Particles per direction = 2
-subsection Grid
-  set Lower left  = 0, 0
-  set Upper right = 2, 1.5
-  set Cell size   = 0.1
-end
-subsection Material 1
-  set Name            = soil
-  set Model           = linear elastic
-  set Density         = 2000
-  set Young's modulus = 1e6
-  set Poisson ratio   = 0.3
-end
-subsection Region 1
-  set Shape     = rectangle
-  set Rectangle = 0, 0, 1, 1
-  set Material  = soil
-end
-end
-)");
-    mpm::MaterialPointParameters result;
-    prm.enter_subsection("Material points");
-    result.parse_parameters(prm, "Material points");
-    prm.leave_subsection();
-    result.point_forces = true;
-    return result;
-  }
-
   /** The loads with the water at @p level, the still level (the initial state) being
    *  @p still. */
   void

@@ -99,6 +99,7 @@ namespace slidewave
                                            dealii::ParameterHandler &prm)
       : scene(scene_parameters)
       , particle_output(scene_parameters.output_directory)
+      , grid_output(scene_parameters.output_directory)
     {
       prm.enter_subsection(section);
       parameters.parse_parameters(prm, section);
@@ -187,39 +188,6 @@ namespace slidewave
         }
       return {{dealii::Utilities::MPI::max(stress, MPI_COMM_WORLD) / sigma_0.norm(),
                dealii::Utilities::MPI::max(position, MPI_COMM_WORLD)}};
-    }
-
-
-
-    void
-    MaterialPointScene::write_grid_state(const unsigned int index, const double time)
-    {
-      using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
-      // Ghosted copies: the solver's mass vector holds owned entries only.
-      Vector mass(solver->lumped_nodal_mass());
-      mass.update_ghost_values();
-      std::array<Vector, 2> velocity{{solver->nodal_velocity(0), solver->nodal_velocity(1)}};
-      for (auto &v : velocity)
-        v.update_ghost_values();
-
-      dealii::DataOut<2> data_out;
-      data_out.attach_dof_handler(solver->dof_handler());
-      data_out.add_data_vector(mass, "nodal_mass");
-      data_out.add_data_vector(velocity[0], "nodal_velocity_x");
-      data_out.add_data_vector(velocity[1], "nodal_velocity_y");
-      dealii::Vector<float> subdomain(solver->triangulation().n_active_cells());
-      subdomain = static_cast<float>(solver->triangulation().locally_owned_subdomain());
-      data_out.add_data_vector(subdomain, "subdomain");
-      data_out.set_flags(vtu_flags());
-      data_out.build_patches();
-      const std::string record = data_out.write_vtu_with_pvtu_record(
-        scene.output_directory + "/grid/", "grid", index, MPI_COMM_WORLD, 5);
-      grid_files.emplace_back(time, "grid/" + record);
-      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        {
-          std::ofstream pvd(scene.output_directory + "/grid.pvd");
-          dealii::DataOutBase::write_pvd_record(pvd, grid_files);
-        }
     }
 
 
@@ -413,7 +381,7 @@ namespace slidewave
         return;
       dealii::TimerOutput::Scope scope(*timer, "mpm: output");
       if (write_grid)
-        write_grid_state(index, time);
+        grid_output.write(*solver, index, time);
       particle_output.write(*solver, index, time);
     }
 
@@ -427,7 +395,7 @@ namespace slidewave
       record.put("mpm/initial_energy", initial_energy);
       record.put("mpm/total_mass", total_mass);
       record.put_files("mpm/particle_files", particle_output.files);
-      record.put_files("mpm/grid_files", grid_files);
+      record.put_files("mpm/grid_files", grid_output.files);
     }
 
 
@@ -450,7 +418,7 @@ namespace slidewave
       initial_energy        = record.get("mpm/initial_energy");
       total_mass            = record.get("mpm/total_mass");
       particle_output.files = record.get_files("mpm/particle_files");
-      grid_files            = record.get_files("mpm/grid_files");
+      grid_output.files     = record.get_files("mpm/grid_files");
       first_step            = record.get_unsigned("run/step");
       create_solver(timer_output);
       solver->load(prefix);

@@ -10,8 +10,8 @@
 #include <slidewave/core/time_stepped_scene.h>
 #include <slidewave/coupling/coupling_parameters.h>
 #include <slidewave/coupling/soil_water_interface.h>
+#include <slidewave/io/particle_output.h>
 #include <slidewave/mpm/material_point_solver.h>
-#include <slidewave/mpm/particle_output.h>
 #include <slidewave/water/shallow_water_1d.h>
 #include <slidewave/water/water_output.h>
 #include <slidewave/water/water_state_parameters.h>
@@ -153,7 +153,7 @@ namespace slidewave
       std::unique_ptr<water::ShallowWater1D>    water;
       std::unique_ptr<SoilWaterInterface>       interface;
       water::GaugeRecorder                      gauges;
-      mpm::ParticleOutput                       particle_output;
+      io::ParticleOutput                        particle_output;
 
       double initial_volume = 0., initial_toe = 0.;
       /** The soil columns of the interface (their x interfaces). */

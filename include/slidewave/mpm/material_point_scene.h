@@ -7,8 +7,8 @@
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/core/time_stepped_scene.h>
+#include <slidewave/io/particle_output.h>
 #include <slidewave/mpm/material_point_solver.h>
-#include <slidewave/mpm/particle_output.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -96,10 +96,6 @@ namespace slidewave
       void
       create_solver(dealii::TimerOutput &timer);
 
-      /** The background grid with the nodal mass and velocity of the last step. */
-      void
-      write_grid_state(unsigned int index, double time);
-
       /** The run-time guards; throws RunFailure (collective). */
       void
       check_state(unsigned int step, double time) const;
@@ -128,18 +124,18 @@ namespace slidewave
       double           rotation_rate = 1.;
       dealii::Point<2> rotation_centre;
 
-      const SceneParameters                      &scene;
-      ExactSolution                               exact_solution = ExactSolution::none;
-      double                                      bar_length = 25., bar_amplitude = 0.1;
-      double                                      column_height = 1.;
-      double                                      tolerance     = 0.;
-      MaterialPointParameters                     parameters;
-      std::unique_ptr<MaterialPointSolver>        solver;
-      dealii::TimerOutput                        *timer = nullptr;
-      ParticleOutput                              particle_output;
-      std::vector<std::pair<double, std::string>> grid_files;
-      bool                                        write_grid     = false;
-      unsigned int                                check_interval = 10;
+      const SceneParameters               &scene;
+      ExactSolution                        exact_solution = ExactSolution::none;
+      double                               bar_length = 25., bar_amplitude = 0.1;
+      double                               column_height = 1.;
+      double                               tolerance     = 0.;
+      MaterialPointParameters              parameters;
+      std::unique_ptr<MaterialPointSolver> solver;
+      dealii::TimerOutput                 *timer = nullptr;
+      io::ParticleOutput                   particle_output;
+      io::GridOutput                       grid_output;
+      bool                                 write_grid     = false;
+      unsigned int                         check_interval = 10;
       /** Kinetic + elastic energy at the start, and the total mass (for the guards). */
       double initial_energy = 0., total_mass = 0.;
       /** The largest error against the exact solution so far (bar vibration). */

@@ -1,5 +1,5 @@
-#ifndef slidewave_mpm_particle_output_h
-#define slidewave_mpm_particle_output_h
+#ifndef slidewave_io_particle_output_h
+#define slidewave_io_particle_output_h
 
 #include <deal.II/base/data_out_base.h>
 #include <slidewave/mpm/material_point_solver.h>
@@ -9,7 +9,7 @@
 
 namespace slidewave
 {
-  namespace mpm
+  namespace io
   {
     /**
      * VTU flags of the material-point files (points and grid): zlib's fastest level. The
@@ -35,7 +35,7 @@ namespace slidewave
       explicit ParticleOutput(std::string output_directory);
 
       void
-      write(const MaterialPointSolver &solver, unsigned int index, double time);
+      write(const mpm::MaterialPointSolver &solver, unsigned int index, double time);
 
       /** (time, file) of every record so far (saved and restored by checkpoints). */
       std::vector<std::pair<double, std::string>> files;
@@ -43,7 +43,29 @@ namespace slidewave
     private:
       std::string directory;
     };
-  } // namespace mpm
+
+
+
+    /**
+     * The background grid's nodal state as a ParaView time series (`Output grid = true`):
+     * OUTPUT/grid/grid_NNNNN.pvtu (nodal mass and velocity, the owning rank per cell) and
+     * the OUTPUT/grid.pvd record (collective).
+     */
+    class GridOutput
+    {
+    public:
+      explicit GridOutput(std::string output_directory);
+
+      void
+      write(const mpm::MaterialPointSolver &solver, unsigned int index, double time);
+
+      /** (time, file) of every record so far (saved and restored by checkpoints). */
+      std::vector<std::pair<double, std::string>> files;
+
+    private:
+      std::string directory;
+    };
+  } // namespace io
 } // namespace slidewave
 
 #endif

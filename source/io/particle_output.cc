@@ -1,0 +1,86 @@
+#include <array>
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/particles/data_out.h>
+#include <fstream>
+#include <slidewave/io/particle_output.h>
+
+namespace slidewave
+{
+  namespace io
+  {
+    ParticleOutput::ParticleOutput(std::string output_directory)
+      : directory(std::move(output_directory))
+    {
+    }
+
+
+
+    void
+    ParticleOutput::write(const mpm::MaterialPointSolver &solver,
+                          const unsigned int              index,
+                          const double                    time)
+    {
+      // Every property by the name its model's layout gives it, the components of a
+      // vector (velocity, point force) under the vector's name.
+      const auto &layout         = solver.property_layout();
+      const auto  data_names     = layout.output_names();
+      const auto  interpretation = layout.output_interpretation();
+
+      dealii::Particles::DataOut<2> data_out;
+      data_out.set_flags(vtu_flags());
+      data_out.build_patches(solver.particles(), data_names, interpretation);
+      const std::string record = data_out.write_vtu_with_pvtu_record(
+        directory + "/particles/", "particles", index, MPI_COMM_WORLD, 5);
+      files.emplace_back(time, "particles/" + record);
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          std::ofstream pvd(directory + "/particles.pvd");
+          dealii::DataOutBase::write_pvd_record(pvd, files);
+        }
+    }
+
+
+    GridOutput::GridOutput(std::string output_directory)
+      : directory(std::move(output_directory))
+    {
+    }
+
+
+
+    void
+    GridOutput::write(const mpm::MaterialPointSolver &solver,
+                      const unsigned int              index,
+                      const double                    time)
+    {
+      using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
+      // Ghosted copies: the solver's mass vector holds owned entries only.
+      Vector mass(solver.lumped_nodal_mass());
+      mass.update_ghost_values();
+      std::array<Vector, 2> velocity{{solver.nodal_velocity(0), solver.nodal_velocity(1)}};
+      for (auto &v : velocity)
+        v.update_ghost_values();
+
+      dealii::DataOut<2> data_out;
+      data_out.attach_dof_handler(solver.dof_handler());
+      data_out.add_data_vector(mass, "nodal_mass");
+      data_out.add_data_vector(velocity[0], "nodal_velocity_x");
+      data_out.add_data_vector(velocity[1], "nodal_velocity_y");
+      dealii::Vector<float> subdomain(solver.triangulation().n_active_cells());
+      subdomain = static_cast<float>(solver.triangulation().locally_owned_subdomain());
+      data_out.add_data_vector(subdomain, "subdomain");
+      data_out.set_flags(vtu_flags());
+      data_out.build_patches();
+      const std::string record = data_out.write_vtu_with_pvtu_record(
+        directory + "/grid/", "grid", index, MPI_COMM_WORLD, 5);
+      files.emplace_back(time, "grid/" + record);
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          std::ofstream pvd(directory + "/grid.pvd");
+          dealii::DataOutBase::write_pvd_record(pvd, files);
+        }
+    }
+  } // namespace io
+} // namespace slidewave

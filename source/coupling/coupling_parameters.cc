@@ -51,9 +51,12 @@ namespace slidewave
         "hydrostatic",
         Selection("hydrostatic|excess over initial level"),
         "Which water pressure loads the soil (with 'Water loads on soil = true'). "
-        "'hydrostatic': the full pressure of the water, rho_w g (eta - z): the still water's "
-        "weight on the soil's top and its thrust on the faces; with the soil's saturated "
-        "density this is a total-stress analysis in which the soil feels its buoyancy. "
+        "'hydrostatic': the full pressure of the water, rho_w g (eta - z), applied as the "
+        "buoyancy of the soil below the still level eta_s (a body force rho_w g V on the "
+        "points below it) plus the pressure in excess of eta_s's on the soil's top and "
+        "faces; the soil's stress then leaves out the still water's pressure (Terzaghi's "
+        "effective stress; same deviator), and a submerged soil is driven by its buoyant "
+        "unit weight. "
         "'excess over initial level': paper 000, Eq. 10, p = -rho_w g (eta - eta_0), "
         "eta_0 = h_0 + B_0 the free surface of each water cell at the start (after any "
         "gravity loading), kept through the run: still water loads nothing, a wave's crest "

@@ -126,6 +126,7 @@ def plot(rows, png):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    import matplotlib.ticker  # noqa: F401
     fig, axes = plt.subplots(1, 3, figsize=(13, 3.8), constrained_layout=True)
     markers = {"cell size": "o", "water cells": "s", "shape functions": "^",
                "sub-cycling": "D"}
@@ -145,6 +146,10 @@ def plot(rows, png):
         ax.set_xlabel("wall time of the time loop [s]")
         ax.set_ylabel(label)
         ax.grid(alpha=0.3, which="both")
+        # Plain numbers on the time axis, which spans about a decade (no crowded minor labels).
+        ax.xaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1., 2., 5.)))
+        ax.xaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+        ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
     for case, m in markers.items():
         axes[0].plot([], [], m, color="C%d" % list(markers).index(case), label=case)
     axes[0].legend(fontsize=7)

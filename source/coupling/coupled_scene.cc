@@ -523,8 +523,7 @@ namespace slidewave
       record.put("coupling/water_interfaces", water->mesh().interfaces());
       const dealii::Tensor<1, 2> load = interface->load_on_soil();
       record.put("coupling/load_on_soil", std::vector<double>{load[0], load[1]});
-      if (!interface->initial_level().empty())
-        record.put("coupling/initial_level", interface->initial_level());
+      record.put("coupling/initial_level", interface->initial_level());
       record.put("coupling/initial_volume", initial_volume);
       record.put("coupling/initial_toe", initial_toe);
       record.put("coupling/max_volume_balance", max_volume_balance);
@@ -562,8 +561,7 @@ namespace slidewave
       io::restore_state(record, "water", *water);
       const auto &load = record.get_vector("coupling/load_on_soil");
       interface->restore_load_on_soil(dealii::Tensor<1, 2>({load.at(0), load.at(1)}));
-      if (coupling.loads_on_soil)
-        interface->restore_initial_level(record.get_vector("coupling/initial_level"));
+      interface->restore_initial_level(record.get_vector("coupling/initial_level"));
       initial_volume        = record.get("coupling/initial_volume");
       initial_toe           = record.get("coupling/initial_toe");
       max_volume_balance    = record.get("coupling/max_volume_balance");

@@ -76,7 +76,8 @@ namespace slidewave
       envelope.resize(n_columns * samples_per_column);
       sample_count.resize(n_columns * samples_per_column);
       covered_samples.resize(n_columns);
-      column_reference.assign(n_columns, -std::numeric_limits<double>::infinity());
+      // No reference until set_initial_level: the full pressure acts on the boundary.
+      reference_level.assign(n_cells, -std::numeric_limits<double>::infinity());
     }
 
 
@@ -102,21 +103,20 @@ namespace slidewave
                              pressure == WaterPressure::hydrostatic ?
                                        still_level :
                                        water.depth()[i] + water.bed()[i];
-      set_column_reference();
+      set_buoyant_level();
     }
 
 
 
     void
-    SoilWaterInterface::set_column_reference()
+    SoilWaterInterface::set_buoyant_level()
     {
       // The pore water is taken in hydrostatic equilibrium with the still water: one flat
       // phreatic level eta_s under every column (also where the soil stands above the
       // water, or its top was dry at the start), so every point below eta_s is buoyant.
-      double still_level = -std::numeric_limits<double>::infinity();
+      buoyant_level = -std::numeric_limits<double>::infinity();
       for (const double level : reference_level)
-        still_level = std::max(still_level, level);
-      std::fill(column_reference.begin(), column_reference.end(), still_level);
+        buoyant_level = std::max(buoyant_level, level);
     }
 
 
@@ -129,7 +129,7 @@ namespace slidewave
                                      + std::to_string(level.size()) + " values for "
                                      + std::to_string(bed_elevation.size()) + " water cells."));
       reference_level = level;
-      set_column_reference();
+      set_buoyant_level();
     }
 
 
@@ -287,22 +287,14 @@ namespace slidewave
       Assert(reference_level.size() == n, dealii::ExcInternalError());
       constexpr double   no_level = -std::numeric_limits<double>::infinity();
       const unsigned int volume   = soil.property_layout().index("volume");
-      // The buoyancy of a point: rho_w g times the part of its volume below the still level
-      // of the columns its domain overlaps.
+      // The buoyancy of a point: rho_w g times the part of its volume below the still level.
       const auto buoyancy = [&](const auto &particle) {
         if (pressure != WaterPressure::hydrostatic)
           return 0.;
         const auto   p      = particle.get_properties();
         const double bottom = particle.get_location()[1] - p[domain_half_y];
-        double       part   = 0.;
-        for_each_column_of(
-          particle.get_location()[0],
-          p[domain_half_x],
-          [&](const unsigned int c, const double fraction) {
-            part += fraction
-                    * std::clamp((column_reference[c] - bottom) / (2. * p[domain_half_y]), 0., 1.);
-          });
-        return rho * g * p[volume] * part;
+        return rho * g * p[volume]
+               * std::clamp((buoyant_level - bottom) / (2. * p[domain_half_y]), 0., 1.);
       };
 
       // Per water cell: the weight of the water (or of its excess over the initial level)
@@ -410,10 +402,8 @@ namespace slidewave
       };
       std::fill(sample_count.begin(), sample_count.end(), 0.);
       std::fill(face_weights.begin(), face_weights.end(), 0.);
-      double total_buoyancy = 0.;
       for (const auto &particle : soil.particles())
         {
-          total_buoyancy += buoyancy(particle);
           for_each_column_of(particle.get_location()[0],
                              particle.get_properties()[domain_half_x],
                              [&](const unsigned int c, const double fraction) {
@@ -425,7 +415,6 @@ namespace slidewave
         }
       dealii::Utilities::MPI::sum(sample_count, MPI_COMM_WORLD, sample_count);
       dealii::Utilities::MPI::sum(face_weights, MPI_COMM_WORLD, face_weights);
-      total_buoyancy = dealii::Utilities::MPI::sum(total_buoyancy, MPI_COMM_WORLD);
       std::fill(covered_samples.begin(), covered_samples.end(), 0.);
       for (unsigned int s = 0; s < sample_count.size(); ++s)
         if (sample_count[s] > 0.)
@@ -438,8 +427,10 @@ namespace slidewave
             column_thrust[c] = 0.;
           }
 
+      double total_buoyancy = 0.;
       soil.set_point_forces([&](const dealii::Particles::ParticleAccessor<2> &particle) {
         dealii::Tensor<1, 2> force({0., buoyancy(particle)});
+        total_buoyancy += force[1];
         for_each_column_of(particle.get_location()[0],
                            particle.get_properties()[domain_half_x],
                            [&](const unsigned int c, const double fraction) {
@@ -456,7 +447,8 @@ namespace slidewave
       });
 
       // What the soil carries: the loads of the columns with soil, and the buoyancy.
-      total_load = dealii::Tensor<1, 2>({0., total_buoyancy});
+      total_load
+        = dealii::Tensor<1, 2>({0., dealii::Utilities::MPI::sum(total_buoyancy, MPI_COMM_WORLD)});
       for (unsigned int c = 0; c < covered_samples.size(); ++c)
         if (covered_samples[c] > 0.)
           total_load

@@ -2,6 +2,7 @@
 #define slidewave_coupling_soil_water_interface_h
 
 #include <deal.II/base/tensor.h>
+#include <limits>
 #include <slidewave/coupling/monotone_cubic.h>
 #include <slidewave/mpm/material_point_solver.h>
 #include <slidewave/water/shallow_water_1d.h>
@@ -174,15 +175,16 @@ namespace slidewave
       /** eta_0 per water cell (WaterPressure::excess_over_initial_level), or eta_s where
        *  the cell was wet at the start (WaterPressure::hydrostatic); -infinity elsewhere. */
       std::vector<double> reference_level;
-      /** Per column, the level below which the points are buoyant (WaterPressure::
-       *  hydrostatic): the still level eta_s everywhere (a flat phreatic surface). */
-      std::vector<double> column_reference;
+      /** The level below which the points are buoyant (WaterPressure::hydrostatic): the
+       *  still level eta_s, the highest reference level, under every column (a flat
+       *  phreatic surface); -infinity before any water was set. */
+      double buoyant_level = -std::numeric_limits<double>::infinity();
       /** Points forming the envelope at each sample (samples_per_column per column), and
        *  the covered samples per column: the shares of a column's weight and shear. */
       std::vector<double> sample_count, covered_samples;
-      /** Sets column_reference from reference_level. */
+      /** Sets buoyant_level from reference_level. */
       void
-      set_column_reference();
+      set_buoyant_level();
       /** The columns are the water cells: no reconstruction, no transfer. */
       bool same_cells;
 

@@ -4,7 +4,6 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <functional>
-#include <string>
 #include <vector>
 
 namespace slidewave

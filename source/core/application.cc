@@ -9,6 +9,7 @@
 #include <slidewave/core/parameter_documentation.h>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/coupling/coupled_scene.h>
+#include <slidewave/depth_averaged/depth_averaged_scene.h>
 #include <slidewave/mpm/material_point_scene.h>
 #include <slidewave/water/water_scene.h>
 #include <sstream>
@@ -164,6 +165,27 @@ namespace slidewave
                          "a directory that can be created "
                          "and written");
     }
+
+
+    /** Builds the scene of a physics (which reads and checks its parameters); runs it
+     *  unless only validating. Returns an ExitStatus. */
+    template <class Scene>
+    int
+    run_scene(const SceneParameters    &scene,
+              dealii::ParameterHandler &prm,
+              const bool                validate_only,
+              const std::string        &input_file,
+              std::ostream             &out)
+    {
+      Scene physics(scene, prm);
+      if (validate_only)
+        {
+          out << input_file << ": valid\n";
+          return success;
+        }
+      prepare_output_directory(scene.output_directory, input_file);
+      return physics.run() ? success : verification_error;
+    }
   } // namespace
 
 
@@ -175,6 +197,7 @@ namespace slidewave
     water::WaterScene::declare_parameters(prm);
     mpm::MaterialPointScene::declare_parameters(prm);
     coupling::CoupledScene::declare_parameters(prm);
+    depth_averaged::DepthAveragedScene::declare_parameters(prm);
   }
 
 
@@ -294,36 +317,15 @@ namespace slidewave
 
         switch (scene.physics)
           {
-              case Physics::shallow_water: {
-                water::WaterScene water_scene(scene, prm);
-                if (validate_only)
-                  {
-                    out << input_file << ": valid\n";
-                    return success;
-                  }
-                prepare_output_directory(scene.output_directory, input_file);
-                return water_scene.run() ? success : verification_error;
-              }
-              case Physics::material_points: {
-                mpm::MaterialPointScene scene_of_material_points(scene, prm);
-                if (validate_only)
-                  {
-                    out << input_file << ": valid\n";
-                    return success;
-                  }
-                prepare_output_directory(scene.output_directory, input_file);
-                return scene_of_material_points.run() ? success : verification_error;
-              }
-              case Physics::coupled: {
-                coupling::CoupledScene coupled_scene(scene, prm);
-                if (validate_only)
-                  {
-                    out << input_file << ": valid\n";
-                    return success;
-                  }
-                prepare_output_directory(scene.output_directory, input_file);
-                return coupled_scene.run() ? success : verification_error;
-              }
+            case Physics::shallow_water:
+              return run_scene<water::WaterScene>(scene, prm, validate_only, input_file, out);
+            case Physics::material_points:
+              return run_scene<mpm::MaterialPointScene>(scene, prm, validate_only, input_file, out);
+            case Physics::coupled:
+              return run_scene<coupling::CoupledScene>(scene, prm, validate_only, input_file, out);
+            case Physics::depth_averaged:
+              return run_scene<depth_averaged::DepthAveragedScene>(
+                scene, prm, validate_only, input_file, out);
             case Physics::none:
               break;
           }

@@ -15,14 +15,17 @@ namespace slidewave
 
     prm.declare_entry("Physics",
                       "none",
-                      Selection("none|shallow water|material points|coupled"),
+                      Selection("none|shallow water|material points|coupled|depth averaged"),
                       "The physics this scene switches on. 'shallow water': the 1D "
                       "well-balanced finite-volume water column of paper 000 (subsection "
                       "'Shallow water'). 'material points': the 2D plane-strain material "
                       "point method for soil of paper 000 (subsection 'Material points'). "
                       "'coupled': both, the soil moving the water's bed and the water "
                       "loading the soil (paper 000, Algorithm 1; subsections 'Material "
-                      "points', 'Shallow water' and 'Coupling'). A scene must choose one.");
+                      "points', 'Shallow water' and 'Coupling'). 'depth averaged': the "
+                      "depth-averaged material point method for flow-like landslides over "
+                      "a terrain of paper 001 (subsection 'Depth averaged'). A scene must "
+                      "choose one.");
     prm.declare_entry("Output directory",
                       "",
                       dealii::Patterns::Anything(),
@@ -115,11 +118,13 @@ namespace slidewave
       physics = Physics::material_points;
     else if (physics_name == "coupled")
       physics = Physics::coupled;
+    else if (physics_name == "depth averaged")
+      physics = Physics::depth_averaged;
     else
       throw InputError("Physics",
                        physics_name,
-                       "one of 'shallow water', 'material points', 'coupled' (a scene must "
-                       "choose its physics)");
+                       "one of 'shallow water', 'material points', 'coupled', 'depth "
+                       "averaged' (a scene must choose its physics)");
 
     scene_directory  = std::filesystem::path(input_file).parent_path().string();
     output_directory = prm.get("Output directory");

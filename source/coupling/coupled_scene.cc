@@ -273,7 +273,7 @@ namespace slidewave
       if (scene.test_mode)
         return;
       dealii::TimerOutput::Scope scope(*timer, "coupled: output");
-      particle_output.write(*soil, index, time);
+      particle_output.write(soil->particles(), soil->property_layout(), index, time);
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         {
           char name[64];

@@ -8,9 +8,14 @@ namespace slidewave
 {
   namespace grid
   {
-    NodalWorkspace::NodalWorkspace(const BackgroundGrid &grid, const bool with_node_positions)
+    NodalWorkspace::NodalWorkspace(const BackgroundGrid &grid,
+                                   const bool            with_node_positions,
+                                   const bool            with_resistance,
+                                   const bool            with_depth)
       : grid(grid)
       , with_positions(with_node_positions)
+      , with_resistance(with_resistance)
+      , with_depth(with_depth)
     {
     }
 
@@ -30,6 +35,29 @@ namespace slidewave
           force[d].reinit(nodal_mass);
           velocity[d].reinit(nodal_mass);
           velocity_old[d].reinit(nodal_mass);
+        }
+      if (with_resistance)
+        resistance.reinit(nodal_mass);
+      if (with_depth)
+        {
+          // The lumped area of a node: a quarter of every cell around it.
+          depth.reinit(nodal_mass);
+          std::vector<dealii::types::global_dof_index> indices(4);
+          for (const auto &cell : dofs.active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                cell->get_dof_indices(indices);
+                for (const auto i : indices)
+                  depth[i] += 0.25 * cell->measure();
+              }
+          depth.compress(dealii::VectorOperation::add);
+          depth.update_ghost_values();
+          const auto &part = *depth.get_partitioner();
+          inverse_area.assign(part.locally_owned_size() + part.n_ghost_indices(), 0.);
+          for (unsigned int i = 0; i < inverse_area.size(); ++i)
+            inverse_area[i] = depth.local_element(i) > 0. ? 1. / depth.local_element(i) : 0.;
+          depth.zero_out_ghost_values();
+          depth = 0.;
         }
       if (with_positions)
         {
@@ -82,6 +110,10 @@ namespace slidewave
     void
     NodalWorkspace::clear_active_nodes()
     {
+      // The depth was sent to the ghost nodes (update_ghost_values): those values must not
+      // return to their owners with the next compress.
+      if (with_depth)
+        depth.zero_out_ghost_values();
       for (const unsigned int i : active_nodes)
         {
           nodal_mass.local_element(i) = 0.;
@@ -92,6 +124,10 @@ namespace slidewave
               velocity[d].local_element(i)     = 0.;
               velocity_old[d].local_element(i) = 0.;
             }
+          if (with_resistance)
+            resistance.local_element(i) = 0.;
+          if (with_depth)
+            depth.local_element(i) = 0.;
           node_is_active[i] = 0;
         }
       active_nodes.clear();

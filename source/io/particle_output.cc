@@ -1,4 +1,3 @@
-#include <array>
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/la_parallel_vector.h>
@@ -19,19 +18,19 @@ namespace slidewave
 
 
     void
-    ParticleOutput::write(const mpm::MaterialPointSolver &solver,
-                          const unsigned int              index,
-                          const double                    time)
+    ParticleOutput::write(const dealii::Particles::ParticleHandler<2> &particles,
+                          const particles::PropertyLayout             &layout,
+                          const unsigned int                           index,
+                          const double                                 time)
     {
       // Every property by the name its model's layout gives it, the components of a
       // vector (velocity, point force) under the vector's name.
-      const auto &layout         = solver.property_layout();
-      const auto  data_names     = layout.output_names();
-      const auto  interpretation = layout.output_interpretation();
+      const auto data_names     = layout.output_names();
+      const auto interpretation = layout.output_interpretation();
 
       dealii::Particles::DataOut<2> data_out;
       data_out.set_flags(vtu_flags());
-      data_out.build_patches(solver.particles(), data_names, interpretation);
+      data_out.build_patches(particles, data_names, interpretation);
       const std::string record = data_out.write_vtu_with_pvtu_record(
         directory + "/particles/", "particles", index, MPI_COMM_WORLD, 5);
       files.emplace_back(time, "particles/" + record);
@@ -51,25 +50,18 @@ namespace slidewave
 
 
     void
-    GridOutput::write(const mpm::MaterialPointSolver &solver,
-                      const unsigned int              index,
-                      const double                    time)
+    GridOutput::write(const dealii::DoFHandler<2> &dofs,
+                      const std::vector<Field>    &fields,
+                      const unsigned int           index,
+                      const double                 time)
     {
-      using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
-      // Ghosted copies: the solver's mass vector holds owned entries only.
-      Vector mass(solver.lumped_nodal_mass());
-      mass.update_ghost_values();
-      std::array<Vector, 2> velocity{{solver.nodal_velocity(0), solver.nodal_velocity(1)}};
-      for (auto &v : velocity)
-        v.update_ghost_values();
-
       dealii::DataOut<2> data_out;
-      data_out.attach_dof_handler(solver.dof_handler());
-      data_out.add_data_vector(mass, "nodal_mass");
-      data_out.add_data_vector(velocity[0], "nodal_velocity_x");
-      data_out.add_data_vector(velocity[1], "nodal_velocity_y");
-      dealii::Vector<float> subdomain(solver.triangulation().n_active_cells());
-      subdomain = static_cast<float>(solver.triangulation().locally_owned_subdomain());
+      data_out.attach_dof_handler(dofs);
+      for (const auto &[name, vector] : fields)
+        data_out.add_data_vector(*vector, name);
+      const auto           &tria = dofs.get_triangulation();
+      dealii::Vector<float> subdomain(tria.n_active_cells());
+      subdomain = static_cast<float>(tria.locally_owned_subdomain());
       data_out.add_data_vector(subdomain, "subdomain");
       data_out.set_flags(vtu_flags());
       data_out.build_patches();

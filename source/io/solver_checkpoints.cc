@@ -5,33 +5,6 @@ namespace slidewave
   namespace io
   {
     void
-    save_state(CheckpointRecord               &record,
-               const std::string              &name,
-               const mpm::MaterialPointSolver &soil)
-    {
-      const auto state = soil.state();
-      record.put(name + "/time", state.time);
-      record.put(name + "/lost_mass", state.lost_mass);
-      record.put(name + "/steps", state.n_steps);
-    }
-
-
-
-    void
-    restore_state(const CheckpointRecord   &record,
-                  const std::string        &name,
-                  mpm::MaterialPointSolver &soil)
-    {
-      mpm::MaterialPointSolver::State state;
-      state.time      = record.get(name + "/time");
-      state.lost_mass = record.get(name + "/lost_mass");
-      state.n_steps   = record.get_unsigned(name + "/steps");
-      soil.set_state(state);
-    }
-
-
-
-    void
     save_state(CheckpointRecord            &record,
                const std::string           &name,
                const water::ShallowWater1D &water)

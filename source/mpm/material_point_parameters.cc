@@ -2,6 +2,8 @@
 #include <deal.II/base/utilities.h>
 #include <iostream>
 #include <slidewave/core/input_error.h>
+#include <slidewave/grid/grid_extent.h>
+#include <slidewave/grid/load_balancing_parameters.h>
 #include <slidewave/mpm/material_point_parameters.h>
 #include <sstream>
 
@@ -124,15 +126,7 @@ namespace slidewave
                         "stresses follow from it as usual (strain rate, Jaumann rate, "
                         "B-bar).");
       prm.enter_subsection("Grid");
-      {
-        prm.declare_entry("Lower left", "0, 0", Anything(), "Corner x, y of the domain [m].");
-        prm.declare_entry("Upper right", "1, 1", Anything(), "Corner x, y of the domain [m].");
-        prm.declare_entry("Cell size",
-                          "0.05",
-                          Double(),
-                          "Side of the square background cells [m]; the domain sides must "
-                          "be (close to) multiples of it.");
-      }
+      grid::GridExtent::declare_parameters(prm);
       prm.leave_subsection();
       prm.enter_subsection("Adaptive grid");
       {
@@ -159,24 +153,7 @@ namespace slidewave
       }
       prm.leave_subsection();
       prm.enter_subsection("Load balancing");
-      {
-        prm.declare_entry("Particle weight",
-                          "1000000",
-                          Integer(0),
-                          "Cost of a material point relative to a cell's 1000 when the grid "
-                          "is partitioned among MPI ranks (the work of a rank is 1000 per "
-                          "cell plus this per point; a cell's weight is capped at 2^31 - 1, "
-                          "p4est's limit). A step's grid work is over the nodes the points "
-                          "talk to, so an empty cell costs next to nothing: the default makes "
-                          "1000 empty cells weigh as much as a point (doc/mpm.md, "
-                          "Throughput).");
-        prm.declare_entry("Imbalance threshold",
-                          "1.1",
-                          Double(0.),
-                          "Repartition when the most loaded rank has more than this times "
-                          "the mean work (0: never, except when an adaptive grid changes).");
-        prm.declare_entry("Interval", "50", Integer(1), "Steps between checks of the imbalance.");
-      }
+      grid::LoadBalancingParameters::declare_parameters(prm);
       prm.leave_subsection();
       prm.enter_subsection("Boundary conditions");
       for (const std::string side : {"Left", "Right", "Bottom", "Top"})
@@ -274,33 +251,11 @@ namespace slidewave
 
       prm.enter_subsection("Grid");
       {
-        const auto a = parse_numbers(path + "/Grid/Lower left", prm.get("Lower left"), 2);
-        const auto b = parse_numbers(path + "/Grid/Upper right", prm.get("Upper right"), 2);
-        lower_left   = dealii::Point<2>(a[0], a[1]);
-        upper_right  = dealii::Point<2>(b[0], b[1]);
-        cell_size    = prm.get_double("Cell size");
-        require_positive(path + "/Grid/Cell size", cell_size);
-        if (!(b[0] > a[0]) || !(b[1] > a[1]))
-          throw InputError(path + "/Grid/Upper right",
-                           prm.get("Upper right"),
-                           "a corner above and to the right of 'Lower left'");
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            const double n = (b[d] - a[d]) / cell_size;
-            if (std::abs(n - std::round(n)) > 1e-6 * n)
-              throw InputError(path + "/Grid/Cell size",
-                               to_string(cell_size),
-                               "a size that divides the domain sides (" + to_string(b[0] - a[0])
-                                 + " x " + to_string(b[1] - a[1]) + " m)");
-          }
-        // The supported size: beyond it the grid alone takes most of a machine's memory.
-        const double n_cells
-          = std::round((b[0] - a[0]) / cell_size) * std::round((b[1] - a[1]) / cell_size);
-        if (n_cells > 1e7)
-          throw InputError(path + "/Grid/Cell size",
-                           to_string(cell_size),
-                           "a size giving at most 10^7 grid cells (this one gives "
-                             + to_string(n_cells) + ")");
+        grid::GridExtent extent;
+        extent.parse_parameters(prm, path + "/Grid");
+        lower_left  = extent.lower_left;
+        upper_right = extent.upper_right;
+        cell_size   = extent.cell_size;
       }
       prm.leave_subsection();
 
@@ -331,9 +286,11 @@ namespace slidewave
 
       prm.enter_subsection("Load balancing");
       {
-        adaptivity.particle_weight     = prm.get_integer("Particle weight");
-        adaptivity.imbalance_threshold = prm.get_double("Imbalance threshold");
-        balance_interval               = prm.get_integer("Interval");
+        grid::LoadBalancingParameters balancing;
+        balancing.parse_parameters(prm);
+        adaptivity.particle_weight     = balancing.particle_weight;
+        adaptivity.imbalance_threshold = balancing.imbalance_threshold;
+        balance_interval               = balancing.interval;
       }
       prm.leave_subsection();
 

@@ -1,3 +1,4 @@
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -381,8 +382,22 @@ namespace slidewave
         return;
       dealii::TimerOutput::Scope scope(*timer, "mpm: output");
       if (write_grid)
-        grid_output.write(*solver, index, time);
-      particle_output.write(*solver, index, time);
+        {
+          // Ghosted copies: the solver's mass vector holds owned entries only.
+          using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
+          Vector mass(solver->lumped_nodal_mass());
+          mass.update_ghost_values();
+          std::array<Vector, 2> velocity{{solver->nodal_velocity(0), solver->nodal_velocity(1)}};
+          for (auto &v : velocity)
+            v.update_ghost_values();
+          grid_output.write(solver->dof_handler(),
+                            {{"nodal_mass", &mass},
+                             {"nodal_velocity_x", &velocity[0]},
+                             {"nodal_velocity_y", &velocity[1]}},
+                            index,
+                            time);
+        }
+      particle_output.write(solver->particles(), solver->property_layout(), index, time);
     }
 
 

@@ -85,6 +85,7 @@ namespace slidewave
                           const double            hx,
                           const double            hy) {
                      model.fill_new_point(properties, position, region_index, hx, hy);
+                     return true;
                    });
       weights_from_regions = false;
       balance_load();

@@ -10,7 +10,7 @@ namespace slidewave
   namespace mpm
   {
     void
-    MaterialRegion::declare_parameters(dealii::ParameterHandler &prm)
+    MaterialRegion::declare_parameters(dealii::ParameterHandler &prm, const bool with_material)
     {
       using namespace dealii::Patterns;
       prm.declare_entry("Shape",
@@ -26,10 +26,11 @@ namespace slidewave
                         Anything(),
                         "Vertices 'x1, y1; x2, y2; ...' [m], at least three, in order "
                         "around the polygon.");
-      prm.declare_entry("Material",
-                        "",
-                        Anything(),
-                        "Name of the material filling the region (a 'Material N/Name').");
+      if (with_material)
+        prm.declare_entry("Material",
+                          "",
+                          Anything(),
+                          "Name of the material filling the region (a 'Material N/Name').");
       prm.declare_entry("Initial velocity",
                         "0; 0",
                         Anything(),
@@ -40,7 +41,9 @@ namespace slidewave
 
 
     bool
-    MaterialRegion::parse_parameters(dealii::ParameterHandler &prm, const std::string &path)
+    MaterialRegion::parse_parameters(dealii::ParameterHandler &prm,
+                                     const std::string        &path,
+                                     const bool                with_material)
     {
       const std::string shape = prm.get("Shape");
       if (shape == "none")
@@ -75,9 +78,12 @@ namespace slidewave
           if (polygon.size() < 3)
             throw InputError(path + "/Polygon", prm.get("Polygon"), "at least three vertices");
         }
-      material_name = dealii::Utilities::trim(prm.get("Material"));
-      if (material_name.empty())
-        throw InputError(path + "/Material", "", "the name of a declared material");
+      if (with_material)
+        {
+          material_name = dealii::Utilities::trim(prm.get("Material"));
+          if (material_name.empty())
+            throw InputError(path + "/Material", "", "the name of a declared material");
+        }
       const std::string velocity = prm.get("Initial velocity");
       const auto        parts    = dealii::Utilities::split_string_list(velocity, ';');
       // deal.II prints muparser's diagnosis to std::cerr before it throws: keep it quiet,

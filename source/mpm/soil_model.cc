@@ -2,6 +2,7 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <limits>
+#include <slidewave/core/rank_reports.h>
 #include <slidewave/mpm/soil_model.h>
 #include <slidewave/mpm/transfer_kernels.templates.h>
 #include <sstream>
@@ -288,12 +289,7 @@ namespace slidewave
       if (problem.empty())
         problem = cloud.wall_crossing;
       // Every rank learns the problem of the lowest rank that has one.
-      const unsigned int my_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-      const unsigned int first   = dealii::Utilities::MPI::min(
-        problem.empty() ? dealii::numbers::invalid_unsigned_int : my_rank, MPI_COMM_WORLD);
-      if (first == dealii::numbers::invalid_unsigned_int)
-        return "";
-      return dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, problem, first);
+      return rank_reports::first_nonempty(problem);
     }
 
 
@@ -349,11 +345,7 @@ namespace slidewave
             }
         }
       // The rank with the fastest point tells everybody.
-      const auto         my_rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-      const double       global  = dealii::Utilities::MPI::max(fastest, MPI_COMM_WORLD);
-      const unsigned int owner   = dealii::Utilities::MPI::min(
-        fastest == global ? my_rank : dealii::numbers::invalid_unsigned_int, MPI_COMM_WORLD);
-      return dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, out.str(), owner);
+      return rank_reports::of_largest(fastest, out.str());
     }
 
 

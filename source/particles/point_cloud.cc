@@ -75,7 +75,8 @@ namespace slidewave
                                        const unsigned int      region_index,
                                        const unsigned int      lattice_index) {
                                      std::fill(values.begin(), values.end(), 0.);
-                                     fill(values, position, region_index, hx, hy);
+                                     if (!fill(values, position, region_index, hx, hy))
+                                       return;
                                      // Identifiers that do not depend on the partition: the
                                      // global index of the cell and the position in it.
                                      const dealii::types::particle_index id

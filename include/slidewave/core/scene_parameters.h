@@ -15,7 +15,8 @@ namespace slidewave
     none,
     shallow_water,
     material_points,
-    coupled ///< material points under shallow water (paper 000, Algorithm 1)
+    coupled,       ///< material points under shallow water (paper 000, Algorithm 1)
+    depth_averaged ///< depth-averaged material points over a terrain (paper 001)
   };
 
   /**

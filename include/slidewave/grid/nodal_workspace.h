@@ -34,14 +34,22 @@ namespace slidewave
     public:
       using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
 
-      /** Sums per node in node_sums: mass, momentum x, y, force x, y. */
-      static constexpr unsigned int n_sums = 5;
+      /** Sums per node in node_sums: mass, momentum x, y, force x, y, and for the
+       *  depth-averaged flow the basal resistance (Voellmy's friction) and the volume of
+       *  the columns (zero for other models). */
+      static constexpr unsigned int n_sums = 7;
       /** Values per node in node_velocities: v^new x, y, v^new - v^old x, y. */
       static constexpr unsigned int n_velocities = 4;
 
       /** @p with_node_positions: keep the positions of the owned nodes (a prescribed
-       *  velocity field needs them). */
-      NodalWorkspace(const BackgroundGrid &grid, bool with_node_positions);
+       *  velocity field needs them); @p with_resistance: a model with a basal resistance
+       *  (the vector resistance is allocated only then); @p with_depth: a model whose
+       *  points' depth is projected on the nodes (the vectors depth and the lumped area
+       *  are allocated only then). */
+      NodalWorkspace(const BackgroundGrid &grid,
+                     bool                  with_node_positions,
+                     bool                  with_resistance = false,
+                     bool                  with_depth      = false);
 
       /** Vectors, arrays, import nodes and hanging nodes of the current grid. */
       void
@@ -134,10 +142,21 @@ namespace slidewave
       /** Lumped mass, momentum, force, velocity after and before the grid update. */
       Vector                nodal_mass;
       std::array<Vector, 2> momentum, force, velocity, velocity_old;
+      /** The largest force the basal friction can exert on the node [N], for models with a
+       *  basal resistance (otherwise empty). */
+      Vector resistance;
+      /** sum_p V_p N_i over the lumped area of node i: the depth the columns give the node
+       *  (models that project the depth; otherwise empty). */
+      Vector depth;
+      /** 1 / the lumped area of each local node (a quarter of each cell around it), for
+       *  models that project the depth. */
+      std::vector<double> inverse_area;
 
     private:
       const BackgroundGrid &grid;
       const bool            with_positions;
+      const bool            with_resistance;
+      const bool            with_depth;
 
       std::vector<unsigned int> active_nodes;
       /** Zero between steps. */

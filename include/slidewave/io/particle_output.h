@@ -2,7 +2,10 @@
 #define slidewave_io_particle_output_h
 
 #include <deal.II/base/data_out_base.h>
-#include <slidewave/mpm/material_point_solver.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/particles/particle_handler.h>
+#include <slidewave/particles/property_layout.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,7 +38,10 @@ namespace slidewave
       explicit ParticleOutput(std::string output_directory);
 
       void
-      write(const mpm::MaterialPointSolver &solver, unsigned int index, double time);
+      write(const dealii::Particles::ParticleHandler<2> &particles,
+            const particles::PropertyLayout             &layout,
+            unsigned int                                 index,
+            double                                       time);
 
       /** (time, file) of every record so far (saved and restored by checkpoints). */
       std::vector<std::pair<double, std::string>> files;
@@ -48,7 +54,7 @@ namespace slidewave
 
     /**
      * The background grid's nodal state as a ParaView time series (`Output grid = true`):
-     * OUTPUT/grid/grid_NNNNN.pvtu (nodal mass and velocity, the owning rank per cell) and
+     * OUTPUT/grid/grid_NNNNN.pvtu (the nodal fields a scene gives, the owning rank per cell) and
      * the OUTPUT/grid.pvd record (collective).
      */
     class GridOutput
@@ -56,8 +62,16 @@ namespace slidewave
     public:
       explicit GridOutput(std::string output_directory);
 
+      /** A named nodal field on the grid (a ghosted vector of the scalar Q1 dofs). */
+      using Field
+        = std::pair<std::string, const dealii::LinearAlgebra::distributed::Vector<double> *>;
+
+      /** Writes @p fields on the grid of @p dofs, and the owning rank per cell. */
       void
-      write(const mpm::MaterialPointSolver &solver, unsigned int index, double time);
+      write(const dealii::DoFHandler<2> &dofs,
+            const std::vector<Field>    &fields,
+            unsigned int                 index,
+            double                       time);
 
       /** (time, file) of every record so far (saved and restored by checkpoints). */
       std::vector<std::pair<double, std::string>> files;

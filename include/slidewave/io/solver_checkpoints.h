@@ -2,7 +2,6 @@
 #define slidewave_io_solver_checkpoints_h
 
 #include <slidewave/io/checkpoint.h>
-#include <slidewave/mpm/material_point_solver.h>
 #include <slidewave/water/shallow_water_1d.h>
 #include <string>
 
@@ -11,20 +10,33 @@ namespace slidewave
   namespace io
   {
     /**
-     * The material points' state besides the points and the grid (which go to the
-     * checkpoint's data files): the solver's time, step counter and lost mass, under
-     * "<name>/" (collective: the lost mass is summed over the ranks).
+     * A material-point solver's state besides the points and the grid (which go to the
+     * checkpoint's data files): its time, step counter and lost mass, under "<name>/"
+     * (collective: the lost mass is summed over the ranks). For every solver whose
+     * state() has the members time, lost_mass and n_steps (mpm::MaterialPointSolver,
+     * depth_averaged::DepthAveragedSolver).
      */
+    template <class Solver>
     void
-    save_state(CheckpointRecord               &record,
-               const std::string              &name,
-               const mpm::MaterialPointSolver &soil);
+    save_state(CheckpointRecord &record, const std::string &name, const Solver &solver)
+    {
+      const auto state = solver.state();
+      record.put(name + "/time", state.time);
+      record.put(name + "/lost_mass", state.lost_mass);
+      record.put(name + "/steps", state.n_steps);
+    }
 
-    /** What save_state() put under "<name>/", after MaterialPointSolver::load(). */
+    /** What save_state() put under "<name>/", after the solver's load(). */
+    template <class Solver>
     void
-    restore_state(const CheckpointRecord   &record,
-                  const std::string        &name,
-                  mpm::MaterialPointSolver &soil);
+    restore_state(const CheckpointRecord &record, const std::string &name, Solver &solver)
+    {
+      typename Solver::State state;
+      state.time      = record.get(name + "/time");
+      state.lost_mass = record.get(name + "/lost_mass");
+      state.n_steps   = record.get_unsigned(name + "/steps");
+      solver.set_state(state);
+    }
 
     /** The water's whole state under "<name>/": depth, discharge and bed per cell and the
      *  volume that entered through the ends. */

@@ -22,16 +22,19 @@ namespace slidewave
       /** Largest number of regions a scene may declare ("Region 1" ... ). */
       static constexpr unsigned int max_regions = 4;
 
-      /** Declares the entries of one "Region N" subsection. */
+      /** Declares the entries of one "Region N" subsection; @p with_material: it names
+       *  its material (a model with one material has none). */
       static void
-      declare_parameters(dealii::ParameterHandler &prm);
+      declare_parameters(dealii::ParameterHandler &prm, bool with_material = true);
 
       /**
        * Reads one region (the handler inside its subsection); returns false when the
        * region is unused (Shape = none). @p path names the subsection in errors.
        */
       bool
-      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &path,
+                       bool                      with_material = true);
 
       /** Whether @p p lies inside the region (boundary included). */
       bool

@@ -42,6 +42,11 @@ namespace slidewave
       static constexpr unsigned int domain_half_x = property::domain_half_x;
       static constexpr unsigned int domain_half_y = property::domain_half_y;
 
+      /** The soil has no basal resistance (TransferKernels). */
+      static constexpr bool has_basal_resistance = false;
+      /** Nor a depth projected on the nodes. */
+      static constexpr bool has_nodal_depth = false;
+
       using ParticleRange = dealii::Particles::ParticleHandler<2>::particle_iterator_range;
 
       explicit SoilModel(const MaterialPointParameters &parameters);
@@ -64,7 +69,7 @@ namespace slidewave
 
       template <typename Properties>
       ScatterTerms
-      scatter_terms(const Properties &p) const
+      scatter_terms(const Properties &p, const dealii::Point<2> & /*location*/) const
       {
         return {p[property::mass],
                 p[property::velocity_x],

@@ -31,9 +31,13 @@ namespace slidewave
      *
      * - the property indices `mass`, `volume`, `velocity_x`, `velocity_y`,
      *   `domain_half_x`, `domain_half_y` (static constexpr unsigned int);
-     * - `ScatterTerms scatter_terms(const Properties &p) const` (what the point scatters,
-     *   read once per point) and `void nodal_force(const ScatterTerms &, const
-     *   NodeWeights &, unsigned int k, double m_k, double &f_x, double &f_y) const` (the
+     * - `static constexpr bool has_basal_resistance`; if true, `double
+     *   basal_resistance(const ScatterTerms &) const`: the largest friction force the
+     *   point's base can exert [N], scattered to the nodes and applied there as a force
+     *   that opposes the nodal velocity but never reverses it (update_grid);
+     * - `ScatterTerms scatter_terms(const Properties &p, const Point<2> &x) const` (what
+     *   the point at @p x scatters, read once per point) and `void nodal_force(const ScatterTerms
+     * &, const NodeWeights &, unsigned int k, double m_k, double &f_x, double &f_y) const` (the
      *   point's force on its k-th node);
      * - `void update_cell(const particle_iterator_range &, const dealii::Tensor<2, 2> *L,
      *   double dt) const`: the constitutive update of the points of one cell from their

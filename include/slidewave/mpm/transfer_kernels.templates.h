@@ -71,6 +71,10 @@ namespace slidewave
       // The workspace's sums as a plain pointer, taken once: the point loop then indexes
       // it directly instead of going through the workspace on every node.
       double *const all_sums = nodes.sums(0);
+      // Only models that may project their depth on the nodes ask whether they do.
+      bool project_depth = false;
+      if constexpr (Model::has_nodal_depth)
+        project_depth = model.projects_depth();
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
         const unsigned int cell_index = cell->active_cell_index();
         if (whole_patch)
@@ -83,7 +87,8 @@ namespace slidewave
         for (const auto &particle : particles_in_cell)
           {
             shape_weights(particle, cell_index, w);
-            const auto terms = model.scatter_terms(particle.get_properties());
+            const auto terms
+              = model.scatter_terms(particle.get_properties(), particle.get_location());
             for (unsigned int k = 0; k < w.n; ++k)
               {
                 // Everything read from the weights before anything is written to the
@@ -97,6 +102,11 @@ namespace slidewave
                 sums[2] += mk * terms.vy;
                 sums[3] += fx;
                 sums[4] += fy;
+                if constexpr (Model::has_basal_resistance)
+                  sums[5] += w.value[k] * model.basal_resistance(terms);
+                if constexpr (Model::has_nodal_depth)
+                  if (project_depth)
+                    sums[6] += w.value[k] * terms.V;
               }
           }
       });
@@ -109,6 +119,10 @@ namespace slidewave
           nodes.momentum[1].local_element(i) = sums[2];
           nodes.force[0].local_element(i)    = sums[3];
           nodes.force[1].local_element(i)    = sums[4];
+          if constexpr (Model::has_basal_resistance)
+            nodes.resistance.local_element(i) = sums[5];
+          if (project_depth)
+            nodes.depth.local_element(i) = sums[6];
           std::fill(sums, sums + grid::NodalWorkspace::n_sums, 0.);
         }
       nodes.complete_active_nodes();
@@ -118,12 +132,28 @@ namespace slidewave
           nodes.condense_hanging_nodes(nodes.momentum[d]);
           nodes.condense_hanging_nodes(nodes.force[d]);
         }
+      if constexpr (Model::has_basal_resistance)
+        nodes.condense_hanging_nodes(nodes.resistance);
+      if (project_depth)
+        nodes.condense_hanging_nodes(nodes.depth);
       lap(StepTimeline::scatter);
       nodes.nodal_mass.compress(dealii::VectorOperation::add);
       for (unsigned int d = 0; d < 2; ++d)
         {
           nodes.momentum[d].compress(dealii::VectorOperation::add);
           nodes.force[d].compress(dealii::VectorOperation::add);
+        }
+      if constexpr (Model::has_basal_resistance)
+        nodes.resistance.compress(dealii::VectorOperation::add);
+      if (project_depth)
+        {
+          // The nodal volume over the node's lumped area: the depth the columns give the
+          // node, read by the gather at owned and ghost nodes.
+          nodes.depth.compress(dealii::VectorOperation::add);
+          for (const unsigned int i : nodes.active())
+            nodes.depth.local_element(i) *= nodes.inverse_area[i];
+          nodes.depth.update_ghost_values();
+          nodes.interpolate_hanging_nodes(nodes.depth);
         }
       lap(StepTimeline::exchange_sums);
     }
@@ -166,6 +196,22 @@ namespace slidewave
                       velocity[d].local_element(i)     = 0.;
                     }
                 }
+              if constexpr (Model::has_basal_resistance)
+                if (m > tiny)
+                  {
+                    // Basal friction as a nodal force of at most R_i opposing the motion
+                    // the node would have without it: it takes |v| dt R_i / m off the
+                    // speed, down to zero, never past it. So friction stops a node but
+                    // cannot reverse it, and a node at rest stays there while the other
+                    // forces stay below R_i (static friction).
+                    const double vx              = velocity[0].local_element(i);
+                    const double vy              = velocity[1].local_element(i);
+                    const double speed           = std::sqrt(vx * vx + vy * vy);
+                    const double loss            = dt * nodes.resistance.local_element(i) / m;
+                    const double scale           = speed > loss ? 1. - loss / speed : 0.;
+                    velocity[0].local_element(i) = scale * vx;
+                    velocity[1].local_element(i) = scale * vy;
+                  }
             }
         }
       constraints.apply(velocity[0], velocity[1]);
@@ -279,7 +325,10 @@ namespace slidewave
       // the velocity gradients come from the same nodal velocities, so the stresses are
       // updated in the same pass.
       NodeWeights  w;
-      const double flip = settings.flip_fraction;
+      const double flip          = settings.flip_fraction;
+      bool         project_depth = false;
+      if constexpr (Model::has_nodal_depth)
+        project_depth = with_stresses && model.projects_depth();
       // The workspace's velocities as a plain pointer, taken once (see particles_to_grid).
       const double *const all_velocities = nodes.velocities(0);
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
@@ -304,7 +353,17 @@ namespace slidewave
                 L[1][0] += vy * w.grad_x[e];
                 L[1][1] += vy * w.grad_y[e];
               }
-            auto p               = particle.get_properties();
+            auto p = particle.get_properties();
+            if constexpr (Model::has_nodal_depth)
+              if (project_depth)
+                {
+                  // The depth the columns around give the point, at the start of the step;
+                  // the model's update then adds the step's own change.
+                  double h = 0.;
+                  for (unsigned int e = 0; e < w.n; ++e)
+                    h += w.value[e] * nodes.depth.local_element(w.node[e]);
+                  p[Model::depth] = h;
+                }
             p[Model::velocity_x] = flip * (p[Model::velocity_x] + dv[0]) + (1. - flip) * v_new[0];
             p[Model::velocity_y] = flip * (p[Model::velocity_y] + dv[1]) + (1. - flip) * v_new[1];
             positions[particle.get_local_index()]

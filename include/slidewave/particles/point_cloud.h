@@ -59,8 +59,9 @@ namespace slidewave
                                const Function                           &f) const;
 
       /** What create() asks of the model for each point: its properties (zeroed before)
-       *  from its position, region index and the cell's size. */
-      using PropertyFill = std::function<void(std::vector<double>    &properties,
+       *  from its position, region index and the cell's size; false: no point there (no
+       *  material, e.g. a depth of zero). */
+      using PropertyFill = std::function<bool(std::vector<double>    &properties,
                                               const dealii::Point<2> &position,
                                               unsigned int            region_index,
                                               double                  hx,

@@ -63,6 +63,18 @@ namespace slidewave
         return g;
       }
 
+      /** value() and gradient() with one lookup. */
+      double
+      value_and_gradient(const dealii::Point<2> &p, dealii::Tensor<1, 2> &g) const
+      {
+        double             fx, fy;
+        const unsigned int k = locate(p, fx, fy);
+        const double       a = z[k], b = z[k + 1], c = z[k + nx], d = z[k + nx + 1];
+        g[0] = ((1. - fy) * (b - a) + fy * (d - c)) / dx;
+        g[1] = ((1. - fx) * (c - a) + fx * (d - b)) / dy;
+        return (1. - fy) * ((1. - fx) * a + fx * b) + fy * ((1. - fx) * c + fx * d);
+      }
+
       bool
       contains(const dealii::Point<2> &p) const;
 

@@ -1,0 +1,259 @@
+#ifndef slidewave_depth_averaged_depth_averaged_model_h
+#define slidewave_depth_averaged_depth_averaged_model_h
+
+#include <cmath>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/particles/particle_handler.h>
+#include <memory>
+#include <slidewave/depth_averaged/depth_averaged_parameters.h>
+#include <slidewave/mpm/shape_functions.h>
+#include <slidewave/particles/point_cloud.h>
+#include <slidewave/particles/property_layout.h>
+#include <slidewave/terrain/elevation_grid.h>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace depth_averaged
+  {
+    /** What a column of the depth-averaged flow carries, as indices into its properties. */
+    namespace property
+    {
+      enum Index : unsigned int
+      {
+        mass,       ///< m_p [kg], fixed (Eq. 17)
+        volume,     ///< V_p = m_p / rho = h_p A_p [m^3], fixed (incompressible)
+        depth,      ///< h_p [m] (Eq. 38)
+        velocity_x, ///< depth-averaged v_p [m/s]
+        velocity_y,
+        stress_xx, ///< the Bingham stress sigma of Eq. 3 [Pa]
+        stress_yy,
+        stress_xy,
+        effective_stress_xx, ///< sigma^nabla of Eq. 14 [Pa], refreshed for output
+        effective_stress_yy,
+        effective_stress_xy,
+        initial_x, ///< position at t = 0 [m]
+        initial_y,
+        domain_half_x, ///< GIMP: half-lengths of the point's domain [m]
+        domain_half_y,
+        n_properties
+      };
+    } // namespace property
+
+    /**
+     * The depth-averaged flow of paper 001 as a particle model of the material point
+     * engine (TransferKernels<DepthAveragedModel>): each point is a column of material
+     * with mass m_p, volume V_p = h_p A_p, depth h_p, depth-averaged velocity and Bingham
+     * stress. Its per-point terms:
+     *
+     * - the nodal force of Eq. 28: -V_p sigma^nabla_p grad N_i (sigma^nabla of Eq. 14, or
+     *   its still-level form, Eq. 41) plus rho V_p b_p N_i with b = -g grad Z (or
+     *   -g (1 - H/h) grad Z about the still level);
+     * - the basal resistance A_p tau_b of Voellmy's law (Eq. 2), applied by the engine
+     *   at the nodes against the motion (TransferKernels::update_grid);
+     * - the update of USL (Eqs. 36–38): the depth h_p / (1 + tr(delta eps_p)) and the
+     *   Bingham stress of the new rate (Eqs. 3–9, depth_averaged/bingham.h);
+     * - the wave speed sqrt(g h_p) of the time step (Eq. 22 with |v_p| + sqrt(g h_p)).
+     *
+     * The terrain is a terrain::ElevationGrid: Z and grad Z at a point are one bilinear
+     * lookup.
+     */
+    class DepthAveragedModel
+    {
+    public:
+      static constexpr unsigned int mass          = property::mass;
+      static constexpr unsigned int volume        = property::volume;
+      static constexpr unsigned int velocity_x    = property::velocity_x;
+      static constexpr unsigned int velocity_y    = property::velocity_y;
+      static constexpr unsigned int domain_half_x = property::domain_half_x;
+      static constexpr unsigned int domain_half_y = property::domain_half_y;
+      static constexpr unsigned int depth         = property::depth;
+      /** Voellmy's friction acts at the nodes (TransferKernels::update_grid). */
+      static constexpr bool has_basal_resistance = true;
+      /** The depth may be projected on the nodes and read back ('Depth update'). */
+      static constexpr bool has_nodal_depth = true;
+
+      bool
+      projects_depth() const
+      {
+        return prm.depth_update == DepthUpdate::projection;
+      }
+
+      using ParticleRange = dealii::Particles::ParticleHandler<2>::particle_iterator_range;
+
+      DepthAveragedModel(const DepthAveragedParameters &parameters,
+                         const terrain::ElevationGrid  &terrain);
+
+      const particles::PropertyLayout &
+      layout() const
+      {
+        return property_layout;
+      }
+
+      const terrain::ElevationGrid &
+      terrain() const
+      {
+        return elevation;
+      }
+
+      /** What a point scatters (Eqs. 27–28), read once per point. */
+      struct ScatterTerms
+      {
+        double m, vx, vy, V;
+        /** sigma^nabla (Eq. 14, or about the still level, Eq. 41). */
+        double sxx, syy, sxy;
+        /** The body force per unit mass. */
+        double bx, by;
+        /** A_p tau_b, the basal friction force the column can exert (Eq. 2). */
+        double resistance;
+      };
+
+      template <typename Properties>
+      ScatterTerms
+      scatter_terms(const Properties &p, const dealii::Point<2> &x) const
+      {
+        const double         h = p[property::depth];
+        dealii::Tensor<1, 2> grad_z;
+        const double         z = elevation.value_and_gradient(x, grad_z);
+        // The pressure and the weight's slope term (Eqs. 14-15), or both about the still
+        // level H (Eq. 41): 1/2 rho g (h^2 - H^2) / h and -g (1 - H / h) grad Z.
+        double pressure = half_rho_g * h, slope = g;
+        if (still_level_form)
+          {
+            const double H = std::max(still_level - z, 0.);
+            // (h - H)(h + H) / h: exactly zero when h = H.
+            pressure = half_rho_g * (h - H) * (h + H) / h;
+            slope    = g * (1. - H / h);
+          }
+        const double vx = p[property::velocity_x], vy = p[property::velocity_y];
+        double       resistance = 0.;
+        if (friction)
+          {
+            // Voellmy (Eq. 2) on the column's area A_p = V_p / h_p.
+            const double speed_squared = vx * vx + vy * vy;
+            resistance
+              = p[property::volume] / h
+                * ((atmospheric_pressure + rho_g * h) * tan_phi + rho_g_over_xi * speed_squared);
+          }
+        return {p[property::mass],
+                vx,
+                vy,
+                p[property::volume],
+                p[property::stress_xx] - pressure,
+                p[property::stress_yy] - pressure,
+                p[property::stress_xy],
+                -slope * grad_z[0],
+                -slope * grad_z[1],
+                resistance};
+      }
+
+      /** The point's force on its k-th node (Eq. 28 without the friction): the internal
+       *  force -V_p sigma^nabla grad N and the weight's slope term m N b. */
+      void
+      nodal_force(const ScatterTerms     &t,
+                  const mpm::NodeWeights &w,
+                  const unsigned int      k,
+                  const double            mk,
+                  double                 &fx,
+                  double                 &fy) const
+      {
+        fx = -t.V * (t.sxx * w.grad_x[k] + t.sxy * w.grad_y[k]) + mk * t.bx;
+        fy = -t.V * (t.sxy * w.grad_x[k] + t.syy * w.grad_y[k]) + mk * t.by;
+      }
+
+      double
+      basal_resistance(const ScatterTerms &t) const
+      {
+        return t.resistance;
+      }
+
+      /** USL (Eqs. 36–38): new depths and Bingham stresses of the points of one cell. */
+      void
+      update_cell(const ParticleRange        &particles_in_cell,
+                  const dealii::Tensor<2, 2> *L,
+                  double                      dt) const;
+
+      /** sqrt(g h_p), the speed of gravity waves in the column. */
+      template <typename Properties>
+      double
+      wave_speed(const Properties &p) const
+      {
+        return std::sqrt(g * std::max(p[property::depth], 0.));
+      }
+
+      /** Nodes with less mass than this are empty. */
+      double
+      empty_node_mass() const;
+
+      /** The properties of a new point at @p position in a cell hx x hy; false where the
+       *  release has no material (h <= 0). */
+      bool
+      fill_new_point(std::vector<double>    &properties,
+                     const dealii::Point<2> &position,
+                     double                  hx,
+                     double                  hy) const;
+
+      /** sigma^nabla of every point, for output (Eq. 14 or 41). */
+      void
+      refresh_effective_stress(particles::PointCloud &cloud) const;
+
+      /** Integral quantities, reduced over all ranks (collective). */
+      struct Integrals
+      {
+        double       mass = 0., lost_mass = 0., momentum_x = 0., momentum_y = 0.;
+        double       kinetic_energy = 0., potential_energy = 0.;
+        double       max_speed = 0., max_depth = 0., max_travel = 0.;
+        double       centroid_x = 0., centroid_y = 0.;
+        double       x_min = 0., x_max = 0., y_min = 0., y_max = 0.;
+        double       covered_area = 0.;
+        unsigned int n_particles  = 0;
+      };
+
+      Integrals
+      integrals(const particles::PointCloud &cloud) const;
+
+      /** L1 (sum over the points of |e| A_p) and L-infinity norms of the errors of h, h u
+       *  and h v against material at rest with depth @p exact_depth(x) (collective). */
+      struct StillStateErrors
+      {
+        double l1[3]   = {0., 0., 0.};
+        double linf[3] = {0., 0., 0.};
+      };
+
+      StillStateErrors
+      still_state_errors(const particles::PointCloud                           &cloud,
+                         const std::function<double(const dealii::Point<2> &)> &exact_depth) const;
+
+      /**
+       * A description of the first point with a non-finite state or a depth that is not
+       * positive, on any rank, or "" (collective).
+       */
+      std::string
+      find_invalid_particle(const particles::PointCloud &cloud) const;
+
+      /** "material point ID at (x y) with speed S m/s and depth h m" for the fastest
+       *  point (collective). */
+      std::string
+      describe_fastest_particle(const particles::PointCloud &cloud) const;
+
+    private:
+      const DepthAveragedParameters &prm;
+      const terrain::ElevationGrid  &elevation;
+      particles::PropertyLayout      property_layout;
+      /** The initial depth h(x, y) or surface h + Z(x, y) of the release. */
+      std::unique_ptr<dealii::FunctionParser<2>> initial_function;
+
+      // Constants of the per-point terms, computed once.
+      const double g, half_rho_g, rho_g;
+      const bool   still_level_form;
+      const double still_level;
+      const bool   friction;
+      const double tan_phi, rho_g_over_xi, atmospheric_pressure;
+    };
+  } // namespace depth_averaged
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,103 @@
+#ifndef slidewave_depth_averaged_depth_averaged_parameters_h
+#define slidewave_depth_averaged_depth_averaged_parameters_h
+
+#include <array>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <memory>
+#include <slidewave/core/parsed_expression.h>
+#include <slidewave/grid/grid_boundary.h>
+#include <slidewave/grid/load_balancing_parameters.h>
+#include <slidewave/mpm/material_region.h>
+#include <slidewave/mpm/shape_functions.h>
+#include <string>
+
+namespace slidewave
+{
+  namespace depth_averaged
+  {
+    /** The pressure term of the momentum balance (paper 001, §4.1). */
+    enum class HydrostaticTerm
+    {
+      standard,   ///< sigma^nabla = sigma - 1/2 rho g h 1 and b = -g grad Z (Eqs. 14–15)
+      still_level ///< about a known still level: 1/2 g (h^2 - H^2) and -g (h - H) grad Z (Eq. 41)
+    };
+
+    /** How a column's depth follows the flow ('Depth update'). */
+    enum class DepthUpdate
+    {
+      strain,    ///< h_p / (1 + tr(delta eps_p)) every step (paper 001, Eq. 38)
+      projection ///< from the columns' volumes on the nodes, then Eq. 38 for the step
+    };
+
+    /**
+     * Subsection "Depth averaged": the flow of paper 001 on a plan-view grid over a terrain
+     * Z(x, y): the grid and its sides, the material (density, Bingham viscosity and yield
+     * stress), Voellmy's basal friction, the terrain, the released material, the numerical
+     * options and load balancing. Everything is read and checked here; a bad value is an
+     * InputError naming the parameter, the value and what is allowed.
+     */
+    struct DepthAveragedParameters
+    {
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      /** Reads the subsection (the handler inside it); @p path names it in errors. */
+      void
+      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+
+      /** @name Grid (plan view) */
+      dealii::Point<2> lower_left, upper_right;
+      double           cell_size = 0.2;
+      /** Left, right, bottom, top (ids 0-3): roller = 'wall', free = 'open'. */
+      std::array<grid::GridBoundary, 4> sides{{grid::GridBoundary::roller,
+                                               grid::GridBoundary::roller,
+                                               grid::GridBoundary::roller,
+                                               grid::GridBoundary::roller}};
+
+      /** @name Physics */
+      double gravity      = 9.81;
+      double density      = 1200.;
+      double viscosity    = 0.;
+      double yield_stress = 0.;
+      /** Papanastasiou's m [s]; 0: the plain Bingham law. */
+      double regularization = 100.;
+      bool   friction       = false;
+      /** [rad] */
+      double friction_angle = 0.;
+      /** xi [m/s^2]; 0: no turbulent term. */
+      double turbulence           = 0.;
+      double atmospheric_pressure = 0.;
+
+      HydrostaticTerm hydrostatic_term = HydrostaticTerm::standard;
+      /** The still level's elevation H + Z [m] (still_level). */
+      double still_level = 0.;
+
+      /** @name Terrain */
+      std::string elevation;
+      /** Spacing of the elevation grid the expression is sampled on [m]. */
+      double terrain_spacing = 0.;
+
+      /** @name Released material */
+      mpm::MaterialRegion release;
+      /** Exactly one of them is set: the depth h(x, y), or the surface h + Z. */
+      std::string  depth, surface;
+      unsigned int particles_per_direction = 2;
+
+      /** @name Numerics */
+      DepthUpdate        depth_update   = DepthUpdate::strain;
+      mpm::ShapeFunction shape_function = mpm::ShapeFunction::q1;
+      /** 0: PIC (Eq. 33), 1: FLIP (Eq. 34), between: a blend. */
+      double flip_fraction = 0.;
+      /** C of Eq. 22, with the wave speed |v| + sqrt(g h). */
+      double courant_number  = 0.5;
+      double fixed_time_step = 0.;
+
+      /** @name Load balancing */
+      grid::LoadBalancingParameters balancing;
+      bool                          detailed_timing = false;
+    };
+  } // namespace depth_averaged
+} // namespace slidewave
+
+#endif

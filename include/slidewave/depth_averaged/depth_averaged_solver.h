@@ -1,0 +1,179 @@
+#ifndef slidewave_depth_averaged_depth_averaged_solver_h
+#define slidewave_depth_averaged_depth_averaged_solver_h
+
+#include <array>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/particles/particle_handler.h>
+#include <slidewave/depth_averaged/depth_averaged_model.h>
+#include <slidewave/depth_averaged/depth_averaged_parameters.h>
+#include <slidewave/grid/background_grid.h>
+#include <slidewave/grid/cell_patches.h>
+#include <slidewave/grid/nodal_workspace.h>
+#include <slidewave/grid/velocity_constraints.h>
+#include <slidewave/mpm/rigid_wall.h>
+#include <slidewave/mpm/transfer_kernels.h>
+#include <slidewave/particles/point_cloud.h>
+#include <slidewave/terrain/elevation_grid.h>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace depth_averaged
+  {
+    /**
+     * The depth-averaged material point method of paper 001 (§3): the columns in deal.II's
+     * ParticleHandler on a plan-view grid of Q1 cells over the terrain, and per step
+     *
+     *   1. particles to grid: lumped mass, momentum, internal and external forces and the
+     *      basal resistance (Eqs. 27–31);
+     *   2. grid update: explicit velocities (Eq. 32) with Voellmy's friction at the nodes,
+     *      walls;
+     *   3. grid to particles: PIC (Eq. 33), FLIP (Eq. 34) or a blend, positions (Eq. 35);
+     *   4. USL: depth (Eq. 38) and Bingham stress (Eqs. 36–37) from the new nodal
+     *      velocities.
+     *
+     * The same engine as the soil (grid::BackgroundGrid, particles::PointCloud,
+     * grid::NodalWorkspace, the constraints and patches, mpm::TransferKernels) with the
+     * model DepthAveragedModel. The terrain is sampled once onto a terrain::ElevationGrid.
+     */
+    class DepthAveragedSolver
+    {
+    public:
+      explicit DepthAveragedSolver(const DepthAveragedParameters &parameters);
+
+      /** Creates the grid and fills the release with columns at @p start_time. */
+      void
+      setup(double start_time);
+
+      /** Writes the grid and the points under @p prefix (collective). */
+      void
+      save(const std::string &prefix);
+
+      /** Instead of setup(): the grid and points written by save(), on any number of ranks. */
+      void
+      load(const std::string &prefix);
+
+      /** Time, lost mass (summed over ranks) and step counter. */
+      struct State
+      {
+        double       time = 0., lost_mass = 0.;
+        unsigned int n_steps = 0;
+      };
+
+      State
+      state() const;
+
+      void
+      set_state(const State &state);
+
+      /** The smaller of h / max_p (|v_p| + sqrt(g h_p)) (Eq. 22 with C = 1) and the
+       *  viscous limit rho h^2 / (4 (2 mu + tau_Y m)) (collective). */
+      double
+      stability_limit() const;
+
+      /** C times the limit (Eq. 22), or the fixed step. */
+      double
+      stable_time_step() const;
+
+      void
+      set_timer(dealii::TimerOutput &timer_output);
+
+      /** One step of length @p dt. */
+      void
+      advance(double dt);
+
+      /** Scatters the points and returns the nodal totals {mass, momentum x, y}. */
+      std::array<double, 3>
+      nodal_totals();
+
+      /** Lumped nodal depth sum_p V_p N_i / sum of the cells' areas at node i, ghosted. */
+      dealii::LinearAlgebra::distributed::Vector<double>
+      nodal_depth() const;
+
+      /** The terrain at the nodes (ghosted). */
+      dealii::LinearAlgebra::distributed::Vector<double>
+      nodal_elevation() const;
+
+      /** Max over mean of the ranks' work (collective). */
+      double
+      load_imbalance() const;
+
+      const DepthAveragedModel &
+      model() const
+      {
+        return flow;
+      }
+
+      particles::PointCloud &
+      point_cloud()
+      {
+        return cloud;
+      }
+
+      const particles::PointCloud &
+      point_cloud() const
+      {
+        return cloud;
+      }
+
+      const dealii::Particles::ParticleHandler<2> &
+      particles() const
+      {
+        return cloud.particles();
+      }
+
+      const dealii::DoFHandler<2> &
+      dof_handler() const
+      {
+        return grid.dof_handler();
+      }
+
+      const dealii::parallel::distributed::Triangulation<2> &
+      triangulation() const
+      {
+        return grid.triangulation();
+      }
+
+      /** Nodal velocities after the last grid update (ghosted). */
+      const dealii::LinearAlgebra::distributed::Vector<double> &
+      nodal_velocity(const unsigned int component) const
+      {
+        return nodes.velocity[component];
+      }
+
+    private:
+      unsigned int
+      cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
+                  dealii::Triangulation<2>::CellStatus           status) const;
+
+      void
+      balance_load();
+
+      DepthAveragedParameters                  prm;
+      terrain::ElevationGrid                   elevation;
+      DepthAveragedModel                       flow;
+      grid::BackgroundGrid                     grid;
+      particles::PointCloud                    cloud;
+      grid::NodalWorkspace                     nodes;
+      std::vector<mpm::RigidWall>              no_walls;
+      grid::VelocityConstraints                constraints;
+      grid::CellPatches                        patches;
+      std::vector<mpm::MaterialRegion>         release;
+      mpm::TransferKernels<DepthAveragedModel> kernels;
+      dealii::TimerOutput                     *timer = nullptr;
+
+      double       time    = 0.;
+      unsigned int n_steps = 0;
+      /** Set-up: cells weigh the points the release will put there. */
+      bool weights_from_release = false;
+    };
+  } // namespace depth_averaged
+
+  extern template class mpm::TransferKernels<depth_averaged::DepthAveragedModel>;
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,312 @@
+#include <cmath>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+#include <iostream>
+#include <slidewave/core/input_error.h>
+#include <slidewave/depth_averaged/depth_averaged_parameters.h>
+#include <slidewave/grid/grid_extent.h>
+#include <sstream>
+
+namespace slidewave
+{
+  namespace depth_averaged
+  {
+    void
+    DepthAveragedParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.declare_entry("Gravity", "9.81", Double(0.), "g [m/s^2], along -z.");
+      prm.declare_entry("Hydrostatic term",
+                        "standard",
+                        Selection("standard|still level"),
+                        "'standard': the pressure 1/2 rho g h merged into the effective "
+                        "stress and the body force -rho g h grad Z (paper 001, Eqs. 14-15). "
+                        "'still level': both written about a known still level H + Z = "
+                        "'Still level' (Eq. 41): 1/2 rho g (h^2 - H^2) and -rho g (h - H) "
+                        "grad Z, which vanish exactly for material at rest at that level "
+                        "(H = 0 where the terrain is above it).");
+      prm.declare_entry("Still level",
+                        "0",
+                        Double(),
+                        "Elevation of the still level [m] ('Hydrostatic term = still level').");
+      prm.declare_entry("Shape functions",
+                        "q1",
+                        Selection("q1|gimp|cpgimp"),
+                        "'q1': bilinear (paper 001, Eqs. 20-21). 'gimp', 'cpgimp': the "
+                        "generalized interpolation of paper 000, Eq. 11 (the domain of "
+                        "'cpgimp' follows the column's stretch).");
+      prm.declare_entry("FLIP fraction",
+                        "0",
+                        Double(0., 1.),
+                        "Velocity update of the points: 0 = PIC (paper 001, Eq. 33, the "
+                        "paper's choice), 1 = FLIP (Eq. 34), between = the blend.");
+      prm.declare_entry("Courant number",
+                        "0.5",
+                        Double(0.),
+                        "C of Eq. 22: dt = C h / max_p (|v_p| + sqrt(g h_p)), at most "
+                        "0.7071 (the explicit step on a 2D grid of bilinear cells).");
+      prm.declare_entry("Depth update",
+                        "strain",
+                        Selection("strain|projection"),
+                        "'strain': h_p / (1 + tr(delta eps_p)) each step (paper 001, Eq. 38), "
+                        "the depth carried by the point. 'projection': each step the depth "
+                        "starts from the columns' volumes projected on the nodes, "
+                        "h_i = sum_p V_p N_i / a_i (a_i the node's lumped area), read back at "
+                        "the point, then Eq. 38 adds the step's change: the depth stays "
+                        "consistent with where the columns are (doc/depth-averaged.md, "
+                        "Shallow-water limit), but a depth that varies within a cell is "
+                        "smoothed (a lake at rest over a bump is no longer exact).");
+      prm.declare_entry("Fixed time step",
+                        "0",
+                        Double(0.),
+                        "If > 0, this step instead of Eq. 22 (checked against its limit at "
+                        "the start).");
+      prm.declare_entry("Detailed timing",
+                        "false",
+                        Bool(),
+                        "Time the parts of each step as rows 'depth averaged step: ...' of "
+                        "the timer summary.");
+
+      prm.enter_subsection("Grid");
+      {
+        grid::GridExtent::declare_parameters(prm, "0.2");
+        for (const std::string side : {"Left", "Right", "Bottom", "Top"})
+          prm.declare_entry(side + " side",
+                            "wall",
+                            Selection("wall|open"),
+                            "'wall': zero normal velocity (free slip). 'open': material "
+                            "leaves the domain and is counted as lost mass.");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Material");
+      {
+        prm.declare_entry("Density", "1200", Double(0.), "rho [kg/m^3].");
+        prm.declare_entry("Viscosity",
+                          "0",
+                          Double(0.),
+                          "mu of the depth-integrated Bingham law [Pa s] (Eq. 3).");
+        prm.declare_entry("Yield stress",
+                          "0",
+                          Double(0.),
+                          "tau_Y of the Bingham law [Pa] (Eq. 3). mu = tau_Y = 0: an "
+                          "inviscid fluid, the shallow water equations.");
+        prm.declare_entry("Regularization time",
+                          "100",
+                          Double(0.),
+                          "m [s] of Papanastasiou's regularization of the yield stress: "
+                          "tau_Y (1 - exp(-m sqrt(I_2))) / sqrt(I_2) instead of "
+                          "tau_Y / sqrt(I_2), the same once m sqrt(I_2) >> 1 and a finite "
+                          "viscosity tau_Y m at rest. 0: the plain law of Eq. 3, whose "
+                          "stress at rest is undetermined: in an explicit step, round-off "
+                          "sets still material moving (doc/depth-averaged.md). The time "
+                          "step respects the viscous limit of 2 mu + tau_Y m.");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Basal friction");
+      {
+        prm.declare_entry("Model",
+                          "none",
+                          Selection("none|Voellmy"),
+                          "'Voellmy' (paper 001, Eq. 2): a basal shear stress of "
+                          "p_A tan(phi) + rho g h tan(phi) + rho g |v|^2 / xi against the "
+                          "motion, applied at the nodes so that it can stop the material "
+                          "but never reverse it (doc/depth-averaged.md).");
+        prm.declare_entry("Friction angle", "0", Double(0., 89.), "phi [degrees].");
+        prm.declare_entry("Turbulence coefficient",
+                          "0",
+                          Double(0.),
+                          "xi [m/s^2]; 0: no turbulent term.");
+        prm.declare_entry("Atmospheric pressure",
+                          "0",
+                          Double(0.),
+                          "p_A of Eq. 2 [Pa] (the paper's term; 0 leaves the purely "
+                          "frictional and turbulent parts).");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Terrain");
+      {
+        prm.declare_entry("Elevation",
+                          "0",
+                          Anything(),
+                          "Z(x, y) [m], a muparser expression of x and y (pi defined). It is "
+                          "sampled once on a grid of 'Spacing' and interpolated bilinearly "
+                          "(terrain::ElevationGrid): a plane is exact.");
+        prm.declare_entry("Spacing",
+                          "0",
+                          Double(0.),
+                          "Spacing of the elevation grid [m]; 0: a quarter of the cell size.");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Release");
+      {
+        mpm::MaterialRegion::declare_parameters(prm, /*with_material=*/false);
+        prm.declare_entry("Depth",
+                          "",
+                          Anything(),
+                          "Initial depth h(x, y) [m] of the material in the region, a "
+                          "muparser expression; no point where it is 0 or less. Give "
+                          "either this or 'Surface'.");
+        prm.declare_entry("Surface",
+                          "",
+                          Anything(),
+                          "Initial surface h + Z(x, y) [m] instead of the depth: h = "
+                          "surface - Z with the terrain as interpolated (a still level is "
+                          "then exact to the last bit).");
+        prm.declare_entry("Particles per direction",
+                          "2",
+                          Integer(1, 10),
+                          "n x n material points per cell at the centres of n x n sub-cells "
+                          "(paper 001, Eqs. 17-18: V_p = h_p A_p, m_p = rho V_p).");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Load balancing");
+      grid::LoadBalancingParameters::declare_parameters(prm);
+      prm.leave_subsection();
+    }
+
+
+
+    namespace
+    {
+      /** Checks that @p expression parses as a function of x and y. */
+      void
+      check_expression(const std::string &parameter, const std::string &expression)
+      {
+        // deal.II prints muparser's diagnosis to std::cerr before it throws: keep it
+        // quiet, the InputError says what is wrong.
+        std::ostringstream        diagnosis;
+        std::streambuf           *cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
+        dealii::FunctionParser<2> f(1);
+        try
+          {
+            f.initialize("x,y", expression, {{"pi", M_PI}});
+            f.value(dealii::Point<2>());
+            std::cerr.rdbuf(cerr_buffer);
+          }
+        catch (...)
+          {
+            std::cerr.rdbuf(cerr_buffer);
+            throw InputError(parameter, expression, "an expression of x and y (muparser syntax)");
+          }
+      }
+    } // namespace
+
+
+
+    void
+    DepthAveragedParameters::parse_parameters(dealii::ParameterHandler &prm,
+                                              const std::string        &path)
+    {
+      gravity = prm.get_double("Gravity");
+      require_positive(path + "/Gravity", gravity);
+      hydrostatic_term        = prm.get("Hydrostatic term") == "still level" ?
+                                  HydrostaticTerm::still_level :
+                                  HydrostaticTerm::standard;
+      still_level             = prm.get_double("Still level");
+      const std::string shape = prm.get("Shape functions");
+      shape_function          = shape == "gimp"   ? mpm::ShapeFunction::gimp :
+                                shape == "cpgimp" ? mpm::ShapeFunction::cpgimp :
+                                                    mpm::ShapeFunction::q1;
+      flip_fraction           = prm.get_double("FLIP fraction");
+      courant_number          = prm.get_double("Courant number");
+      if (!(courant_number > 0. && courant_number <= 0.70710678118654752))
+        throw InputError(path + "/Courant number",
+                         prm.get("Courant number"),
+                         "a number in (0, 0.7071]: the explicit step on a 2D grid of "
+                         "bilinear cells with lumped mass is stable only up to 1/sqrt(2)");
+      fixed_time_step = prm.get_double("Fixed time step");
+      depth_update
+        = prm.get("Depth update") == "projection" ? DepthUpdate::projection : DepthUpdate::strain;
+      detailed_timing = prm.get_bool("Detailed timing");
+
+      prm.enter_subsection("Grid");
+      {
+        grid::GridExtent extent;
+        extent.parse_parameters(prm, path + "/Grid");
+        lower_left     = extent.lower_left;
+        upper_right    = extent.upper_right;
+        cell_size      = extent.cell_size;
+        unsigned int d = 0;
+        for (const std::string side : {"Left", "Right", "Bottom", "Top"})
+          sides[d++] = prm.get(side + " side") == "open" ? grid::GridBoundary::free :
+                                                           grid::GridBoundary::roller;
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Material");
+      {
+        density = prm.get_double("Density");
+        require_positive(path + "/Material/Density", density);
+        viscosity      = prm.get_double("Viscosity");
+        yield_stress   = prm.get_double("Yield stress");
+        regularization = prm.get_double("Regularization time");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Basal friction");
+      {
+        friction             = prm.get("Model") == "Voellmy";
+        friction_angle       = prm.get_double("Friction angle") * M_PI / 180.;
+        turbulence           = prm.get_double("Turbulence coefficient");
+        atmospheric_pressure = prm.get_double("Atmospheric pressure");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Terrain");
+      {
+        elevation = dealii::Utilities::trim(prm.get("Elevation"));
+        check_expression(path + "/Terrain/Elevation", elevation);
+        terrain_spacing = prm.get_double("Spacing");
+        if (terrain_spacing == 0.)
+          terrain_spacing = 0.25 * cell_size;
+        if (terrain_spacing > cell_size)
+          throw InputError(path + "/Terrain/Spacing",
+                           prm.get("Spacing"),
+                           "0 or a spacing at most the cell size (" + to_string(cell_size)
+                             + " m): the terrain must be resolved at least as finely as the "
+                               "flow");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Release");
+      {
+        const std::string release_path = path + "/Release";
+        release                        = mpm::MaterialRegion();
+        if (!release.parse_parameters(prm, release_path, /*with_material=*/false))
+          throw InputError(release_path + "/Shape",
+                           "none",
+                           "'rectangle' or 'polygon': the area the material is released from");
+        const auto box = release.bounding_box();
+        for (unsigned int d = 0; d < 2; ++d)
+          if (box.first[d] < lower_left[d] - 1e-12 || box.second[d] > upper_right[d] + 1e-12)
+            throw InputError(release_path + "/Shape",
+                             prm.get("Shape"),
+                             "a release area inside the grid [" + to_string(lower_left[0]) + ", "
+                               + to_string(upper_right[0]) + "] x [" + to_string(lower_left[1])
+                               + ", " + to_string(upper_right[1]) + "]");
+        depth   = dealii::Utilities::trim(prm.get("Depth"));
+        surface = dealii::Utilities::trim(prm.get("Surface"));
+        if (depth.empty() == surface.empty())
+          throw InputError(release_path + "/Depth",
+                           depth,
+                           "exactly one of 'Depth' and 'Surface' (here "
+                             + std::string(depth.empty() ? "neither is" : "both are") + " given)");
+        if (!depth.empty())
+          check_expression(release_path + "/Depth", depth);
+        else
+          check_expression(release_path + "/Surface", surface);
+        particles_per_direction = prm.get_integer("Particles per direction");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Load balancing");
+      balancing.parse_parameters(prm);
+      prm.leave_subsection();
+    }
+  } // namespace depth_averaged
+} // namespace slidewave

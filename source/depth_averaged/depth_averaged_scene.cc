@@ -1,0 +1,610 @@
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/run_control.h>
+#include <slidewave/core/timed_run.h>
+#include <slidewave/depth_averaged/depth_averaged_scene.h>
+#include <slidewave/io/solver_checkpoints.h>
+#include <slidewave/water/dam_break_solutions.h>
+#include <sstream>
+
+namespace slidewave
+{
+  namespace depth_averaged
+  {
+    namespace
+    {
+      const std::string section = "Depth averaged";
+    }
+
+
+
+    void
+    DepthAveragedScene::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.enter_subsection(section);
+      DepthAveragedParameters::declare_parameters(prm);
+      prm.declare_entry("Check interval",
+                        "10",
+                        Integer(1),
+                        "Every this many steps (and before every output) the columns are "
+                        "checked for non-finite values and depths that are not positive, "
+                        "for points that crossed a wall, and the kinetic energy against the "
+                        "energy released (initial kinetic + potential energy minus the "
+                        "potential energy now); a failed check stops the run (exit status "
+                        "2) with the step, time and point.");
+      prm.declare_entry("Output point table",
+                        "false",
+                        Bool(),
+                        "Also write the columns as a table at each output time, "
+                        "points/points_NNNNN.csv (x, y, elevation, depth, velocity_x, "
+                        "velocity_y, in no particular order), for the project's scripts.");
+      prm.declare_entry("Output grid",
+                        "true",
+                        Bool(),
+                        "Also write the grid (grid/*.pvtu, grid.pvd) with the nodal depth, "
+                        "the flow surface h + Z, the terrain and the nodal velocity.");
+      prm.enter_subsection("Verification");
+      {
+        prm.declare_entry("Exact solution",
+                          "none",
+                          Selection("none|still state|dam break"),
+                          "'still state': material at rest with its surface at the "
+                          "release's 'Surface' (the lake at rest of paper 001, §4.1): the "
+                          "L1 (sum of |e| A_p) and L-infinity errors of h, hu and hv at the "
+                          "points in the statistics and at the end (the paper's Table 1). "
+                          "'dam break': the dam break along x of 'Left depth' and 'Right "
+                          "depth' at 'Dam position' (Ritter for a dry bed, Stoker for a wet "
+                          "one): the L1 error of the nodal depth relative to the exact "
+                          "volume, sum |h_i - h(x_i, t)| a_i / sum h(x_i, t) a_i.");
+        prm.declare_entry("Dam position", "0", Double(), "x0 of the dam break [m].");
+        prm.declare_entry("Left depth", "1", Double(0.), "h_l of the dam break [m].");
+        prm.declare_entry("Right depth", "0", Double(0.), "h_r of the dam break [m].");
+        prm.declare_entry("Conservation check",
+                          "false",
+                          Bool(),
+                          "Add the columns nodal_mass_error and nodal_momentum_error to the "
+                          "statistics: the totals of a particle-to-grid transfer against "
+                          "the points' (paper 001, Eq. 44), relative to the mass and to "
+                          "mass times the largest speed.");
+        prm.declare_entry("Conservation tolerance",
+                          "0",
+                          Double(0.),
+                          "With 'Conservation check': if > 0, the run fails (exit status 3) "
+                          "when either relative error exceeds it at any statistics row.");
+        prm.declare_entry("Symmetry line",
+                          "",
+                          Anything(),
+                          "If a number y_s: the flow must stay symmetric about the line y = "
+                          "y_s (a symmetric terrain and release, e.g. paper 001, §4.2). After "
+                          "every step, |centroid_y - y_s| / cell size and |momentum_y| / "
+                          "(mass x largest speed) are measured; the run fails (exit status 3) "
+                          "if the largest exceeds 'Symmetry tolerance'.");
+        prm.declare_entry("Symmetry tolerance", "1e-9", Double(0.), "See 'Symmetry line'.");
+        prm.declare_entry("Tolerance",
+                          "0",
+                          Double(0.),
+                          "If > 0, the run fails (exit status 3) when the error at the end "
+                          "exceeds it (still state: L-infinity of h; dam break: the L1 "
+                          "error).");
+      }
+      prm.leave_subsection();
+      prm.leave_subsection();
+    }
+
+
+
+    DepthAveragedScene::DepthAveragedScene(const SceneParameters    &scene_parameters,
+                                           dealii::ParameterHandler &prm)
+      : scene(scene_parameters)
+      , particle_output(scene_parameters.output_directory)
+      , grid_output(scene_parameters.output_directory)
+    {
+      prm.enter_subsection(section);
+      parameters.parse_parameters(prm, section);
+      write_grid     = prm.get_bool("Output grid");
+      write_table    = prm.get_bool("Output point table");
+      check_interval = prm.get_integer("Check interval");
+      prm.enter_subsection("Verification");
+      {
+        const std::string type = prm.get("Exact solution");
+        exact_solution         = type == "still state" ? ExactSolution::still_state :
+                                 type == "dam break"   ? ExactSolution::dam_break :
+                                                         ExactSolution::none;
+        dam_position           = prm.get_double("Dam position");
+        left_depth             = prm.get_double("Left depth");
+        right_depth            = prm.get_double("Right depth");
+        check_conservation     = prm.get_bool("Conservation check");
+        conservation_tolerance = prm.get_double("Conservation tolerance");
+        const std::string line = dealii::Utilities::trim(prm.get("Symmetry line"));
+        if (!line.empty())
+          symmetry_line = parse_number_list(section + "/Verification/Symmetry line",
+                                            line,
+                                            "empty or one number y_s",
+                                            1)[0];
+        symmetry_tolerance = prm.get_double("Symmetry tolerance");
+        tolerance          = prm.get_double("Tolerance");
+        if (exact_solution == ExactSolution::still_state && parameters.surface.empty())
+          throw InputError(section + "/Verification/Exact solution",
+                           type,
+                           "'still state' only with the release given by its 'Surface' "
+                           "(the level the material rests at)");
+        if (exact_solution == ExactSolution::dam_break && !(left_depth > 0.))
+          throw InputError(section + "/Verification/Left depth",
+                           prm.get("Left depth"),
+                           "a depth > 0 for 'dam break'");
+      }
+      prm.leave_subsection();
+      prm.leave_subsection();
+      if (exact_solution == ExactSolution::still_state)
+        {
+          surface = std::make_unique<dealii::FunctionParser<2>>(1);
+          surface->initialize("x,y", parameters.surface, {{"pi", M_PI}});
+        }
+    }
+
+
+
+    bool
+    DepthAveragedScene::run()
+    {
+      return run_with_timer(scene.test_mode, [this](dealii::TimerOutput &timer) {
+        return RunControl(scene).run(*this, timer);
+      });
+    }
+
+
+
+    void
+    DepthAveragedScene::create_output_directories() const
+    {
+      std::filesystem::create_directories(scene.output_directory + "/particles");
+      if (write_table)
+        std::filesystem::create_directories(scene.output_directory + "/points");
+      if (write_grid)
+        std::filesystem::create_directories(scene.output_directory + "/grid");
+    }
+
+
+
+    void
+    DepthAveragedScene::create_solver(dealii::TimerOutput &timer_output)
+    {
+      timer  = &timer_output;
+      solver = std::make_unique<DepthAveragedSolver>(parameters);
+      solver->set_timer(timer_output);
+    }
+
+
+
+    void
+    DepthAveragedScene::set_up(const double start_time, dealii::TimerOutput &timer_output)
+    {
+      dealii::TimerOutput::Scope scope(timer_output, "depth averaged: setup");
+      create_solver(timer_output);
+      solver->setup(start_time);
+      if (solver->particles().n_global_particles() == 0)
+        throw InputError(section + "/Release/" + (parameters.depth.empty() ? "Surface" : "Depth"),
+                         parameters.depth.empty() ? parameters.surface : parameters.depth,
+                         "a release with material: the depth is 0 or less at every point of "
+                         "the release area");
+    }
+
+
+
+    void
+    DepthAveragedScene::check_set_up() const
+    {
+      if (parameters.fixed_time_step > 0.)
+        {
+          const double limit = 0.70710678118654752 * solver->stability_limit();
+          if (parameters.fixed_time_step > limit)
+            throw InputError(section + "/Fixed time step",
+                             to_string(parameters.fixed_time_step),
+                             "a time step at most the stability limit of this scene, h / "
+                             "(sqrt(2) max(|v_p| + sqrt(g h_p))) = "
+                               + to_string(limit) + " s");
+        }
+    }
+
+
+
+    std::string
+    DepthAveragedScene::description() const
+    {
+      return "Depth-averaged flow: " + std::to_string(solver->particles().n_global_particles())
+             + " columns on " + std::to_string(solver->triangulation().n_global_active_cells())
+             + " cells; output in " + scene.output_directory;
+    }
+
+
+
+    void
+    DepthAveragedScene::start(const StepInfo &)
+    {
+      const auto integrals = solver->model().integrals(solver->point_cloud());
+      initial_energy       = integrals.kinetic_energy + integrals.potential_energy;
+      total_mass           = integrals.mass;
+      initial_max_depth    = integrals.max_depth;
+      if (check_conservation)
+        record_conservation();
+    }
+
+
+
+    double
+    DepthAveragedScene::stable_time_step()
+    {
+      dealii::TimerOutput::Scope scope(*timer, "depth averaged: time step");
+      return solver->stable_time_step();
+    }
+
+
+
+    void
+    DepthAveragedScene::advance(const StepInfo &info)
+    {
+      dealii::TimerOutput::Scope scope(*timer, "depth averaged: advance");
+      solver->advance(info.dt);
+    }
+
+
+
+    void
+    DepthAveragedScene::check_state(const unsigned int step, const double time) const
+    {
+      const std::string where
+        = "at step " + std::to_string(step) + ", t = " + to_string(time) + " s: ";
+      const std::string problem = solver->model().find_invalid_particle(solver->point_cloud());
+      if (!problem.empty())
+        throw RunFailure(where + problem);
+      // Friction and the Bingham stress only dissipate and walls do no work: the kinetic
+      // energy cannot exceed the energy at the start minus the potential energy now (what
+      // the descent released; material that left through an open side took its share).
+      // 10 % of slack and a floor keep round-off and the potential energy's own error
+      // (Z + h / 2 at the points against the discrete forces) out: 1e-4 of the energy
+      // scale M g h_max of the release. An unstable run grows past it within steps; the
+      // standard hydrostatic form over a terrain step makes about 1e-5 of it.
+      const auto   integrals = solver->model().integrals(solver->point_cloud());
+      const double released  = initial_energy - integrals.potential_energy;
+      const double floor     = 1e-4 * total_mass * parameters.gravity * initial_max_depth;
+      if (integrals.lost_mass == 0. && integrals.kinetic_energy > 1.1 * released + floor)
+        throw RunFailure(where + "the kinetic energy (" + to_string(integrals.kinetic_energy)
+                         + " J) exceeds the energy released (" + to_string(released)
+                         + " J): the run is unstable; fastest: "
+                         + solver->model().describe_fastest_particle(solver->point_cloud())
+                         + " (reduce 'Courant number')");
+    }
+
+
+
+    void
+    DepthAveragedScene::after_step(const StepInfo &info)
+    {
+      if (info.step % check_interval == 0 || info.reports)
+        {
+          dealii::TimerOutput::Scope scope(*timer, "depth averaged: checks");
+          check_state(info.step, info.time);
+        }
+      // With a tolerance, the conservation is checked after every step, not only at rows.
+      if (check_conservation && (info.reports || conservation_tolerance > 0.))
+        record_conservation();
+      if (!std::isnan(symmetry_line))
+        {
+          const auto   integrals = solver->model().integrals(solver->point_cloud());
+          const double scale     = integrals.mass * std::max(integrals.max_speed, 1e-300);
+          max_asymmetry
+            = std::max({max_asymmetry,
+                        std::abs(integrals.centroid_y - symmetry_line) / parameters.cell_size,
+                        std::abs(integrals.momentum_y) / scale});
+        }
+    }
+
+
+
+    void
+    DepthAveragedScene::record_conservation()
+    {
+      conservation           = conservation_errors();
+      max_conservation_error = std::max({max_conservation_error, conservation[0], conservation[1]});
+    }
+
+
+
+    DepthAveragedModel::StillStateErrors
+    DepthAveragedScene::still_state_errors() const
+    {
+      const auto &terrain = solver->model().terrain();
+      return solver->model().still_state_errors(solver->point_cloud(),
+                                                [&](const dealii::Point<2> &x) {
+                                                  return surface->value(x) - terrain.value(x);
+                                                });
+    }
+
+
+
+    double
+    DepthAveragedScene::dam_break_error(const double time) const
+    {
+      const water::DamBreakSolution exact(left_depth,
+                                          right_depth,
+                                          dam_position,
+                                          parameters.gravity);
+      const auto                    depth = solver->nodal_depth();
+      const auto                   &dofs  = solver->dof_handler();
+      std::vector<bool>             done(depth.locally_owned_size(), false);
+      double                        sums[2] = {0., 0.};
+      const double                  t       = time - scene.start_time;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const auto i = cell->vertex_dof_index(v, 0);
+              if (!depth.in_local_range(i))
+                continue;
+              const unsigned int local = depth.get_partitioner()->global_to_local(i);
+              if (done[local])
+                continue;
+              done[local] = true;
+              // The node's lumped area: a quarter cell per cell around it (half, a quarter
+              // on the sides and corners).
+              const dealii::Point<2> &x = cell->vertex(v);
+              double                  a = parameters.cell_size * parameters.cell_size;
+              for (unsigned int d = 0; d < 2; ++d)
+                if (std::abs(x[d] - parameters.lower_left[d]) < 1e-9 * parameters.cell_size
+                    || std::abs(x[d] - parameters.upper_right[d]) < 1e-9 * parameters.cell_size)
+                  a *= 0.5;
+              double h, u;
+              exact.evaluate(x[0], t, h, u);
+              sums[0] += std::abs(depth[i] - h) * a;
+              sums[1] += h * a;
+            }
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 2),
+                                  MPI_COMM_WORLD,
+                                  dealii::ArrayView<double>(sums, 2));
+      return sums[0] / sums[1];
+    }
+
+
+
+    std::array<double, 2>
+    DepthAveragedScene::conservation_errors() const
+    {
+      const auto   integrals = solver->model().integrals(solver->point_cloud());
+      const auto   nodal     = solver->nodal_totals();
+      const double scale     = integrals.mass * std::max(integrals.max_speed, 1e-300);
+      return {{std::abs(nodal[0] - integrals.mass) / integrals.mass,
+               std::max(std::abs(nodal[1] - integrals.momentum_x),
+                        std::abs(nodal[2] - integrals.momentum_y))
+                 / scale}};
+    }
+
+
+
+    void
+    DepthAveragedScene::add_statistics(Statistics &statistics, const StepInfo &info) const
+    {
+      const auto integrals = solver->model().integrals(solver->point_cloud());
+      statistics.add_value("time", info.time);
+      statistics.add_value("step", info.step);
+      statistics.add_value("dt", info.dt);
+      statistics.add_value("particles", integrals.n_particles);
+      statistics.add_value("mass", integrals.mass);
+      statistics.add_value("lost_mass", integrals.lost_mass);
+      statistics.add_value("momentum_x", integrals.momentum_x);
+      statistics.add_value("momentum_y", integrals.momentum_y);
+      statistics.add_value("kinetic_energy", integrals.kinetic_energy);
+      statistics.add_value("potential_energy", integrals.potential_energy);
+      statistics.add_value("max_speed", integrals.max_speed);
+      statistics.add_value("max_depth", integrals.max_depth);
+      statistics.add_value("max_travel", integrals.max_travel);
+      statistics.add_value("x_min", integrals.x_min);
+      statistics.add_value("x_max", integrals.x_max);
+      statistics.add_value("y_min", integrals.y_min);
+      statistics.add_value("y_max", integrals.y_max);
+      statistics.add_value("centroid_x", integrals.centroid_x);
+      statistics.add_value("centroid_y", integrals.centroid_y);
+      statistics.add_value("covered_area", integrals.covered_area);
+      statistics.add_value("load_imbalance", solver->load_imbalance());
+      if (check_conservation)
+        {
+          statistics.add_value("nodal_mass_error", conservation[0]);
+          statistics.add_value("nodal_momentum_error", conservation[1]);
+        }
+      if (exact_solution == ExactSolution::still_state)
+        {
+          const auto        errors  = still_state_errors();
+          const std::string names[] = {"h", "hu", "hv"};
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              statistics.add_value("error_" + names[i] + "_l1", errors.l1[i]);
+              statistics.add_value("error_" + names[i] + "_linf", errors.linf[i]);
+            }
+        }
+      if (exact_solution == ExactSolution::dam_break)
+        statistics.add_value("depth_error_l1", dam_break_error(info.time));
+    }
+
+
+
+    void
+    DepthAveragedScene::write_output(const unsigned int index, const double time)
+    {
+      if (scene.test_mode)
+        return;
+      dealii::TimerOutput::Scope scope(*timer, "depth averaged: output");
+      solver->model().refresh_effective_stress(solver->point_cloud());
+      particle_output.write(solver->particles(), solver->model().layout(), index, time);
+      if (write_table)
+        write_point_table(index);
+      if (write_grid)
+        {
+          using Vector         = dealii::LinearAlgebra::distributed::Vector<double>;
+          const Vector depth   = solver->nodal_depth();
+          const Vector terrain = solver->nodal_elevation();
+          Vector       level(depth);
+          level += terrain;
+          grid_output.write(solver->dof_handler(),
+                            {{"depth", &depth},
+                             {"surface", &level},
+                             {"elevation", &terrain},
+                             {"velocity_x", &solver->nodal_velocity(0)},
+                             {"velocity_y", &solver->nodal_velocity(1)}},
+                            index,
+                            time);
+        }
+    }
+
+
+
+    void
+    DepthAveragedScene::write_point_table(const unsigned int index) const
+    {
+      // Each rank's rows, gathered on rank 0, which writes the file.
+      std::ostringstream rows;
+      rows.precision(9);
+      const auto &terrain = solver->model().terrain();
+      for (const auto &particle : solver->particles())
+        {
+          const auto              p = particle.get_properties();
+          const dealii::Point<2> &x = particle.get_location();
+          rows << x[0] << ',' << x[1] << ',' << terrain.value(x) << ',' << p[property::depth] << ','
+               << p[property::velocity_x] << ',' << p[property::velocity_y] << '\n';
+        }
+      const auto all = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, rows.str(), 0);
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      char name[32];
+      std::snprintf(name, sizeof(name), "points_%05u.csv", index);
+      std::ofstream file(scene.output_directory + "/points/" + name);
+      file << "x,y,elevation,depth,velocity_x,velocity_y\n";
+      for (const auto &part : all)
+        file << part;
+    }
+
+
+
+    bool
+    DepthAveragedScene::finish(const StepInfo &info)
+    {
+      const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      if (exact_solution == ExactSolution::still_state)
+        {
+          const auto errors = still_state_errors();
+          max_error         = errors.linf[0];
+          if (is_writer)
+            {
+              std::printf("Still state at t = %g s (paper 001, Table 1):\n", info.time);
+              std::printf("  variable  L1          L-infinity\n");
+              const char *names[] = {"h", "hu", "hv"};
+              for (unsigned int i = 0; i < 3; ++i)
+                std::printf("  %-8s  %.3e   %.3e\n", names[i], errors.l1[i], errors.linf[i]);
+            }
+        }
+      if (exact_solution == ExactSolution::dam_break)
+        {
+          max_error = dam_break_error(info.time);
+          if (is_writer)
+            std::printf("Dam break (%s) at t = %g s: relative L1 error of the depth = %.4e\n",
+                        right_depth > 0. ? "Stoker" : "Ritter",
+                        info.time - scene.start_time,
+                        max_error);
+        }
+      bool conserved = true;
+      if (check_conservation && conservation_tolerance > 0.)
+        {
+          conserved = max_conservation_error <= conservation_tolerance;
+          if (is_writer)
+            std::printf("Largest relative difference of the nodal totals from the points' "
+                        "(mass, momentum) %s %g: %s\n",
+                        conserved ? "<=" : ">",
+                        conservation_tolerance,
+                        conserved ? "yes" : "no");
+        }
+      if (!std::isnan(symmetry_line))
+        {
+          const bool symmetric = max_asymmetry <= symmetry_tolerance;
+          conserved            = conserved && symmetric;
+          if (is_writer)
+            std::printf("Largest asymmetry about y = %g (centroid offset / cell size, "
+                        "momentum_y / (mass x speed)) %s %g: %s\n",
+                        symmetry_line,
+                        symmetric ? "<=" : ">",
+                        symmetry_tolerance,
+                        symmetric ? "yes" : "no");
+        }
+      if (exact_solution != ExactSolution::none && tolerance > 0. && is_writer)
+        std::printf("Error %.4e <= %g: %s\n",
+                    max_error,
+                    tolerance,
+                    max_error <= tolerance ? "yes" : "no");
+      std::fflush(stdout);
+      return conserved && (!(tolerance > 0.) || max_error <= tolerance);
+    }
+
+
+
+    std::string
+    DepthAveragedScene::checkpoint_signature() const
+    {
+      std::ostringstream out;
+      out.precision(12);
+      out << "depth averaged; grid " << parameters.lower_left << " to " << parameters.upper_right
+          << ", cell size " << parameters.cell_size << "; terrain '" << parameters.elevation
+          << "' at " << parameters.terrain_spacing << " m; density " << parameters.density;
+      return out.str();
+    }
+
+
+
+    void
+    DepthAveragedScene::save(io::CheckpointRecord &record)
+    {
+      io::save_state(record, "depth_averaged", *solver);
+      record.put("depth_averaged/initial_energy", initial_energy);
+      record.put("depth_averaged/total_mass", total_mass);
+      record.put("depth_averaged/initial_max_depth", initial_max_depth);
+      record.put("depth_averaged/max_conservation_error", max_conservation_error);
+      record.put("depth_averaged/max_asymmetry", max_asymmetry);
+      record.put_files("depth_averaged/particle_files", particle_output.files);
+      record.put_files("depth_averaged/grid_files", grid_output.files);
+    }
+
+
+
+    void
+    DepthAveragedScene::save_data(const std::string &prefix)
+    {
+      solver->save(prefix);
+    }
+
+
+
+    void
+    DepthAveragedScene::resume(const io::CheckpointRecord &record,
+                               const std::string          &prefix,
+                               dealii::TimerOutput        &timer_output)
+    {
+      dealii::TimerOutput::Scope scope(timer_output, "depth averaged: setup");
+      initial_energy         = record.get("depth_averaged/initial_energy");
+      total_mass             = record.get("depth_averaged/total_mass");
+      initial_max_depth      = record.get("depth_averaged/initial_max_depth");
+      max_conservation_error = record.get("depth_averaged/max_conservation_error");
+      max_asymmetry          = record.get("depth_averaged/max_asymmetry");
+      particle_output.files  = record.get_files("depth_averaged/particle_files");
+      grid_output.files      = record.get_files("depth_averaged/grid_files");
+      create_solver(timer_output);
+      solver->load(prefix);
+      io::restore_state(record, "depth_averaged", *solver);
+    }
+  } // namespace depth_averaged
+} // namespace slidewave

@@ -1,0 +1,352 @@
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
+#include <limits>
+#include <optional>
+#include <slidewave/depth_averaged/depth_averaged_solver.h>
+
+namespace slidewave
+{
+  namespace depth_averaged
+  {
+    namespace
+    {
+      /** The terrain expression sampled on a grid of the given spacing over the domain. */
+      terrain::ElevationGrid
+      sample_terrain(const DepthAveragedParameters &prm)
+      {
+        dealii::FunctionParser<2> z(1);
+        z.initialize("x,y", prm.elevation, {{"pi", M_PI}});
+        const auto n = [&](const unsigned int d) {
+          return static_cast<unsigned int>(
+                   std::ceil((prm.upper_right[d] - prm.lower_left[d]) / prm.terrain_spacing - 1e-9))
+                 + 1;
+        };
+        return terrain::ElevationGrid::from_function(
+          [&z](const double x, const double y) { return z.value(dealii::Point<2>(x, y)); },
+          prm.lower_left,
+          prm.upper_right,
+          n(0),
+          n(1));
+      }
+
+      mpm::TransferKernels<DepthAveragedModel>::Settings
+      kernel_settings(const DepthAveragedParameters &prm, const DepthAveragedModel &model)
+      {
+        mpm::TransferKernels<DepthAveragedModel>::Settings settings;
+        settings.shape_function  = prm.shape_function;
+        settings.flip_fraction   = prm.flip_fraction;
+        settings.empty_node_mass = model.empty_node_mass();
+        return settings;
+      }
+
+      /** Partitioning weight of a cell without points (deal.II's convention). */
+      constexpr unsigned int cell_base_weight = 1000;
+    } // namespace
+
+
+
+    DepthAveragedSolver::DepthAveragedSolver(const DepthAveragedParameters &parameters)
+      : prm(parameters)
+      , elevation(sample_terrain(prm))
+      , flow(prm, elevation)
+      , grid(prm.lower_left, prm.upper_right, prm.cell_size, 0)
+      , cloud(grid, flow.layout(), DepthAveragedModel::mass, prm.sides)
+      , nodes(grid,
+              /*with_node_positions=*/false,
+              /*with_resistance=*/true,
+              /*with_depth=*/prm.depth_update == DepthUpdate::projection)
+      , constraints(grid, nodes, prm.sides, no_walls)
+      , patches(grid, nodes)
+      , release{prm.release}
+      , kernels(flow, cloud, nodes, patches, constraints, kernel_settings(prm, flow))
+    {
+      // Rebuilt in this order after a grid change: the points, the nodes, then what is
+      // built on the nodes.
+      grid.attach(cloud);
+      grid.attach(nodes);
+      grid.attach(constraints);
+      grid.attach(patches);
+    }
+
+
+
+    void
+    DepthAveragedSolver::setup(const double start_time)
+    {
+      time = start_time;
+      // Until the points exist, the cells weigh the points the release will put there, so
+      // that each rank creates the points it keeps.
+      weights_from_release = true;
+      grid.create_coarse_grid([this](const dealii::Triangulation<2>::cell_iterator &cell,
+                                     const dealii::Triangulation<2>::CellStatus     status) {
+        return cell_weight(cell, status);
+      });
+      grid.refine_to_base();
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
+          && prm.balancing.imbalance_threshold > 0.)
+        grid.repartition_initial();
+      grid.setup_dofs();
+      nodes.reinit();
+      constraints.reinit();
+      patches.reinit();
+      cloud.initialize();
+      cloud.create(prm.particles_per_direction,
+                   release,
+                   [this](std::vector<double>    &properties,
+                          const dealii::Point<2> &position,
+                          const unsigned int,
+                          const double hx,
+                          const double hy) {
+                     return flow.fill_new_point(properties, position, hx, hy);
+                   });
+      weights_from_release = false;
+      balance_load();
+      cloud.sort();
+    }
+
+
+
+    void
+    DepthAveragedSolver::save(const std::string &prefix)
+    {
+      cloud.prepare_for_save();
+      grid.save(prefix);
+    }
+
+
+
+    void
+    DepthAveragedSolver::load(const std::string &prefix)
+    {
+      grid.create_coarse_grid([this](const dealii::Triangulation<2>::cell_iterator &cell,
+                                     const dealii::Triangulation<2>::CellStatus     status) {
+        return cell_weight(cell, status);
+      });
+      cloud.initialize();
+      grid.load(prefix);
+      cloud.load();
+      grid.setup_dofs();
+      nodes.reinit();
+      constraints.reinit();
+      patches.reinit();
+    }
+
+
+
+    DepthAveragedSolver::State
+    DepthAveragedSolver::state() const
+    {
+      return {time, dealii::Utilities::MPI::sum(cloud.lost_mass, MPI_COMM_WORLD), n_steps};
+    }
+
+
+
+    void
+    DepthAveragedSolver::set_state(const State &state)
+    {
+      time    = state.time;
+      n_steps = state.n_steps;
+      // A sum over ranks: rank 0 carries what was lost before.
+      cloud.lost_mass
+        = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? state.lost_mass : 0.;
+    }
+
+
+
+    unsigned int
+    DepthAveragedSolver::cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
+                                     const dealii::Triangulation<2>::CellStatus     status) const
+    {
+      // The grid is never refined or coarsened: a cell persists or is a coarse cell being
+      // refined to the base grid (before any point exists).
+      unsigned int n = 0;
+      if (status == dealii::Triangulation<2>::CELL_PERSIST)
+        {
+          if (weights_from_release)
+            cloud.for_each_point_to_create(cell,
+                                           prm.particles_per_direction,
+                                           release,
+                                           [&n](const auto &...) { ++n; });
+          else
+            n = cloud.particles().n_particles_in_cell(cell);
+        }
+      const std::uint64_t weight
+        = cell_base_weight + static_cast<std::uint64_t>(prm.balancing.particle_weight) * n;
+      return static_cast<unsigned int>(
+        std::min<std::uint64_t>(weight, std::numeric_limits<int>::max()));
+    }
+
+
+
+    double
+    DepthAveragedSolver::load_imbalance() const
+    {
+      const double work = static_cast<double>(cell_base_weight)
+                            * grid.triangulation().n_locally_owned_active_cells()
+                          + static_cast<double>(prm.balancing.particle_weight)
+                              * cloud.particles().n_locally_owned_particles();
+      return grid::BackgroundGrid::imbalance(work);
+    }
+
+
+
+    void
+    DepthAveragedSolver::balance_load()
+    {
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1
+          || !(prm.balancing.imbalance_threshold > 0.)
+          || load_imbalance() <= prm.balancing.imbalance_threshold)
+        return;
+      grid.repartition();
+    }
+
+
+
+    double
+    DepthAveragedSolver::stability_limit() const
+    {
+      // Eq. 22 with the wave speed: h / max_p (|v_p| + sqrt(g h_p)); and the viscous
+      // limit of an explicit step, rho h^2 / (4 eta) with eta = 2 mu + tau_Y m the largest
+      // viscosity of the (regularized) Bingham law: its stress is eta D, and the largest
+      // eigenvalue of div(eta D) on the grid is below 8 eta / (rho h^2).
+      const double max_speed
+        = dealii::Utilities::MPI::max(kernels.max_signal_speed(), MPI_COMM_WORLD);
+      const double h   = prm.cell_size;
+      const double eta = 2. * prm.viscosity + prm.yield_stress * prm.regularization;
+      const double advective
+        = max_speed > 0. ? h / max_speed : std::numeric_limits<double>::infinity();
+      const double viscous
+        = eta > 0. ? prm.density * h * h / (4. * eta) : std::numeric_limits<double>::infinity();
+      return std::min(advective, viscous);
+    }
+
+
+
+    double
+    DepthAveragedSolver::stable_time_step() const
+    {
+      return prm.fixed_time_step > 0. ? prm.fixed_time_step :
+                                        prm.courant_number * stability_limit();
+    }
+
+
+
+    void
+    DepthAveragedSolver::set_timer(dealii::TimerOutput &timer_output)
+    {
+      timer = prm.detailed_timing ? &timer_output : nullptr;
+    }
+
+
+
+    void
+    DepthAveragedSolver::advance(const double dt)
+    {
+      std::optional<dealii::TimerOutput::Scope> part;
+      const auto                                start = [&](const char *name) {
+        if (timer != nullptr)
+          {
+            part.reset();
+            part.emplace(*timer, name);
+          }
+      };
+      if (n_steps > 0 && n_steps % prm.balancing.interval == 0)
+        {
+          start("depth averaged step: load balancing");
+          balance_load();
+        }
+      ++n_steps;
+      start("depth averaged step: particles to grid");
+      kernels.particles_to_grid();
+      start("depth averaged step: grid update");
+      kernels.update_grid(dt, /*damping=*/0., time);
+      std::vector<dealii::Point<2>> &new_positions = kernels.new_positions();
+      new_positions.resize(cloud.particles().get_property_pool().n_slots());
+      start("depth averaged step: grid to particles");
+      kernels.grid_to_particles(dt, /*with_stresses=*/true);
+      start("depth averaged step: sort particles");
+      const bool full_sort = n_steps % prm.balancing.interval == 0;
+      if (full_sort)
+        for (auto &particle : cloud.particles())
+          particle.set_location(new_positions[particle.get_local_index()]);
+      if (full_sort || !cloud.relocate_within_patches(new_positions, patches, nullptr))
+        cloud.sort();
+      time += dt;
+    }
+
+
+
+    std::array<double, 3>
+    DepthAveragedSolver::nodal_totals()
+    {
+      kernels.particles_to_grid();
+      std::array<double, 3> totals{{nodes.nodal_mass.l1_norm(), 0., 0.}};
+      for (unsigned int d = 0; d < 2; ++d)
+        totals[d + 1] = nodes.momentum[d].mean_value() * nodes.momentum[d].size();
+      return totals;
+    }
+
+
+
+    dealii::LinearAlgebra::distributed::Vector<double>
+    DepthAveragedSolver::nodal_depth() const
+    {
+      // sum_p V_p N_i(x_p) over the lumped area of node i (a quarter of each cell around
+      // it): the depth the columns give the node, for output.
+      dealii::LinearAlgebra::distributed::Vector<double> volume, area;
+      volume.reinit(nodes.nodal_mass);
+      area.reinit(nodes.nodal_mass);
+      const auto                                  &dofs = grid.dof_handler();
+      std::vector<dealii::types::global_dof_index> indices(4);
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(indices);
+            const double quarter = 0.25 * cell->measure();
+            for (const auto i : indices)
+              area[i] += quarter;
+            const auto particles = cloud.particles().particles_in_cell(cell);
+            for (const auto &particle : particles)
+              {
+                const dealii::Point<2> r    = particle.get_reference_location();
+                const double           V    = particle.get_properties()[property::volume];
+                const double           w[4] = {(1. - r[0]) * (1. - r[1]),
+                                               r[0] * (1. - r[1]),
+                                               (1. - r[0]) * r[1],
+                                               r[0] * r[1]};
+                for (unsigned int k = 0; k < 4; ++k)
+                  volume[indices[k]] += w[k] * V;
+              }
+          }
+      volume.compress(dealii::VectorOperation::add);
+      area.compress(dealii::VectorOperation::add);
+      for (unsigned int i = 0; i < volume.locally_owned_size(); ++i)
+        volume.local_element(i) /= area.local_element(i);
+      volume.update_ghost_values();
+      return volume;
+    }
+
+
+
+    dealii::LinearAlgebra::distributed::Vector<double>
+    DepthAveragedSolver::nodal_elevation() const
+    {
+      dealii::LinearAlgebra::distributed::Vector<double> z;
+      z.reinit(nodes.nodal_mass);
+      const auto &dofs = grid.dof_handler();
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const auto i = cell->vertex_dof_index(v, 0);
+              if (z.in_local_range(i))
+                z[i] = elevation.value(cell->vertex(v));
+            }
+      z.update_ghost_values();
+      return z;
+    }
+  } // namespace depth_averaged
+} // namespace slidewave

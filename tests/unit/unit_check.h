@@ -1,0 +1,28 @@
+#ifndef slidewave_tests_unit_check_h
+#define slidewave_tests_unit_check_h
+
+#include <cstdio>
+
+// What every unit test prints for each of its checks, and the verdict at the end.
+namespace unit_check
+{
+  inline bool all_passed = true;
+
+  /** Prints "  what: yes|no" and remembers a failure. */
+  inline void
+  check(const bool condition, const char *what)
+  {
+    std::printf("  %s: %s\n", what, condition ? "yes" : "no");
+    all_passed = all_passed && condition;
+  }
+
+  /** Prints the verdict; the test's exit status. */
+  inline int
+  finish()
+  {
+    std::printf(all_passed ? "all checks passed\n" : "SOME CHECKS FAILED\n");
+    return all_passed ? 0 : 1;
+  }
+} // namespace unit_check
+
+#endif

@@ -128,6 +128,18 @@ namespace slidewave
 
       prm.enter_subsection("Terrain");
       {
+        prm.declare_entry("Source",
+                          "expression",
+                          Selection("expression|table"),
+                          "'expression': 'Elevation', a function of x and y. 'table': 'Table "
+                          "file', the elevations at the nodes of a regular grid.");
+        prm.declare_entry("Table file",
+                          "",
+                          Anything(),
+                          "A CSV file of rows x,y,z at the nodes of a regular grid covering "
+                          "the domain (any order, '#' comments and a header allowed; a path "
+                          "relative to the scene file's directory). Interpolated bilinearly, "
+                          "as it is: its spacing is its own ('Spacing' is not used).");
         prm.declare_entry("Elevation",
                           "0",
                           Anything(),
@@ -261,6 +273,15 @@ namespace slidewave
       {
         elevation = dealii::Utilities::trim(prm.get("Elevation"));
         check_expression(path + "/Terrain/Elevation", elevation);
+        elevation_table.clear();
+        if (prm.get("Source") == "table")
+          {
+            elevation_table = dealii::Utilities::trim(prm.get("Table file"));
+            if (elevation_table.empty())
+              throw InputError(path + "/Terrain/Table file",
+                               "",
+                               "the name of a CSV file x,y,z ('Source = table')");
+          }
         terrain_spacing = prm.get_double("Spacing");
         if (terrain_spacing == 0.)
           terrain_spacing = 0.25 * cell_size;

@@ -111,6 +111,8 @@ namespace slidewave
     {
       prm.enter_subsection(section);
       parameters.parse_parameters(prm, section);
+      if (!parameters.elevation_table.empty())
+        parameters.elevation_table = scene.resolve_path(parameters.elevation_table);
       write_grid     = prm.get_bool("Output grid");
       write_table    = prm.get_bool("Output point table");
       check_interval = prm.get_integer("Check interval");
@@ -560,7 +562,10 @@ namespace slidewave
       out.precision(12);
       out << "depth averaged; grid " << parameters.lower_left << " to " << parameters.upper_right
           << ", cell size " << parameters.cell_size << "; terrain '" << parameters.elevation
-          << "' at " << parameters.terrain_spacing << " m; density " << parameters.density;
+          << "' at " << parameters.terrain_spacing << " m";
+      if (!parameters.elevation_table.empty())
+        out << " (table " << parameters.elevation_table << ")";
+      out << "; density " << parameters.density;
       return out.str();
     }
 

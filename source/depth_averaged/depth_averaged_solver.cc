@@ -5,7 +5,9 @@
 #include <deal.II/base/mpi.h>
 #include <limits>
 #include <optional>
+#include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/depth_averaged_solver.h>
+#include <slidewave/terrain/elevation_table.h>
 
 namespace slidewave
 {
@@ -17,6 +19,21 @@ namespace slidewave
       terrain::ElevationGrid
       sample_terrain(const DepthAveragedParameters &prm)
       {
+        if (!prm.elevation_table.empty())
+          {
+            auto table = terrain::read_elevation_table("Depth averaged/Terrain/Table file",
+                                                       prm.elevation_table);
+            for (const auto &corner : {prm.lower_left, prm.upper_right})
+              if (!table.contains(corner))
+                throw InputError("Depth averaged/Terrain/Table file",
+                                 prm.elevation_table,
+                                 "a grid of elevations covering the domain ["
+                                   + to_string(prm.lower_left[0]) + ", "
+                                   + to_string(prm.upper_right[0]) + "] x ["
+                                   + to_string(prm.lower_left[1]) + ", "
+                                   + to_string(prm.upper_right[1]) + "]");
+            return table;
+          }
         dealii::FunctionParser<2> z(1);
         z.initialize("x,y", prm.elevation, {{"pi", M_PI}});
         const auto n = [&](const unsigned int d) {

@@ -75,6 +75,9 @@ namespace slidewave
 
       /** @name Terrain */
       std::string elevation;
+      /** 'Source = table': the CSV file x,y,z (resolved against the scene's directory by
+       *  the scene); empty: the expression. */
+      std::string elevation_table;
       /** Spacing of the elevation grid the expression is sampled on [m]. */
       double terrain_spacing = 0.;
 

@@ -12,6 +12,8 @@
 //     shoulder or dip below the toe (an unlimited cubic through a step overshoots by
 //     several per cent of the step);
 //  4. constant beyond the ends.
+#include "unit_check.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,16 +22,10 @@
 
 using slidewave::coupling::MonotoneCubic;
 
+using unit_check::check;
+
 namespace
 {
-  bool all_passed = true;
-
-  void
-  check(const bool condition, const char *what)
-  {
-    std::printf("  %s: %s\n", what, condition ? "yes" : "no");
-    all_passed = all_passed && condition;
-  }
 
   void
   check_data(const char                *name,
@@ -123,6 +119,5 @@ main()
       }
     check_data("mound", x, y, false);
   }
-  std::printf(all_passed ? "all checks passed\n" : "SOME CHECKS FAILED\n");
-  return all_passed ? 0 : 1;
+  return unit_check::finish();
 }

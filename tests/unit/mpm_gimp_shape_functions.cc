@@ -23,6 +23,8 @@
 // over h) computed in a few dozen floating point operations: the tolerance 1e-13 is
 // round-off (a wrong formula or a missing cell gives errors of order 1e-3 or more).
 // Exits non-zero on failure.
+#include "unit_check.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -31,16 +33,10 @@
 
 using namespace slidewave::mpm;
 
+using unit_check::check;
+
 namespace
 {
-  bool all_passed = true;
-
-  void
-  check(const bool condition, const char *what)
-  {
-    std::printf("  %s: %s\n", what, condition ? "yes" : "no");
-    all_passed = all_passed && condition;
-  }
 
   const double tolerance = 1e-13;
 
@@ -416,6 +412,5 @@ main()
           "Q1 values continuous, gradients jump by 2 (1 - eta) / h");
   }
 
-  std::printf("%s\n", all_passed ? "all checks passed" : "SOME CHECKS FAILED");
-  return all_passed ? 0 : 1;
+  return unit_check::finish();
 }

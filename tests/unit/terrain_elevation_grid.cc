@@ -10,6 +10,8 @@
 //    cells, by 2 (first order); checked: the last ratios within 15 % of 4 and 2.
 //  - Bad grids refused: too few nodes, a value count that does not match, a non-finite
 //    value (no-data must be dealt with before).
+#include "unit_check.h"
+
 #include <cmath>
 #include <cstdio>
 #include <deal.II/base/exceptions.h>
@@ -18,16 +20,10 @@
 
 using namespace slidewave;
 
+using unit_check::check;
+
 namespace
 {
-  bool all_passed = true;
-
-  void
-  check(const bool condition, const char *what)
-  {
-    std::printf("  %s: %s\n", what, condition ? "yes" : "no");
-    all_passed = all_passed && condition;
-  }
 
   double
   bump(const double x, const double y)
@@ -140,6 +136,5 @@ main()
         }),
         "a NaN elevation refused");
 
-  std::printf(all_passed ? "all checks passed\n" : "SOME CHECKS FAILED\n");
-  return all_passed ? 0 : 1;
+  return unit_check::finish();
 }

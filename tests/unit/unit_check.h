@@ -7,12 +7,15 @@
 namespace unit_check
 {
   inline bool all_passed = true;
+  /** Whether this process prints (false on all but one rank of a parallel test). */
+  inline bool print = true;
 
   /** Prints "  what: yes|no" and remembers a failure. */
   inline void
   check(const bool condition, const char *what)
   {
-    std::printf("  %s: %s\n", what, condition ? "yes" : "no");
+    if (print)
+      std::printf("  %s: %s\n", what, condition ? "yes" : "no");
     all_passed = all_passed && condition;
   }
 

@@ -5,22 +5,17 @@
 #ifndef slidewave_tests_unit_water_load_block_h
 #define slidewave_tests_unit_water_load_block_h
 
+#include "unit_check.h"
+
 #include <cstdio>
 #include <deal.II/base/parameter_handler.h>
 #include <slidewave/mpm/material_point_parameters.h>
 
 namespace
 {
-  bool all_passed = true;
-  bool root       = true;
-
-  void
-  check(const bool condition, const char *what)
-  {
-    if (root)
-      std::printf("  %s: %s\n", what, condition ? "yes" : "no");
-    all_passed = all_passed && condition;
-  }
+  using unit_check::check;
+  /** Rank 0 prints (unit_check::print follows it). */
+  inline bool root = true;
 
   slidewave::mpm::MaterialPointParameters
   block_in_a_tank()

@@ -20,8 +20,8 @@ when its NAME.status file, its exit status, is there). Figures (in --out):
       Stoker (h_r = 0.5 m) on cells of 0.25 m at t = 4 s: the points' depth against the
       exact solution for 'Depth update' = strain (Eq. 38) and projection, 2 x 2 and 4 x 4
       points per cell, with the program's relative L1 error of the depth
-A run that ends with a non-zero exit status is printed and marked in its panel. 24 runs of
-1-5 s each, one at a time (well under a minute with the drawing on two cores)."""
+A run that ends with a non-zero exit status is printed and marked in its panel. 14 or 15
+runs of 1-5 s each, one at a time (about 40 s in all with the drawing on two cores)."""
 import argparse
 import glob
 import math
@@ -40,6 +40,9 @@ except ImportError as exc:
              "(e.g. /usr/bin/python3)")
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after selecting the backend)
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_particles import read_particles  # noqa: E402  (reads the grid's .pvtu)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 GRAVITY = 9.81
@@ -87,6 +90,17 @@ class Run:
                 return None, None
         data = np.genfromtxt(path, delimiter=",", names=True)
         return data, int(re.search(r"points_(\d+)\.csv", path).group(1))
+
+    def nodal_depth(self, index):
+        """Node positions x and the nodal depth (mean over the nodes of the same x) of grid
+        output 'index', or None without grid output."""
+        path = os.path.join(self.directory, "grid", "grid_%05d.pvtu" % index)
+        if not os.path.exists(path):
+            return None
+        points, data = read_particles(path)
+        x, inverse = np.unique(np.round(points[:, 0], 9), return_inverse=True)
+        depth = np.bincount(inverse, data["depth"]) / np.bincount(inverse)
+        return x, depth
 
     def statistics(self):
         return np.genfromtxt(os.path.join(self.directory, "statistics.csv"), delimiter=",",
@@ -329,11 +343,12 @@ def obstacle(args):
 # --- Dam break along a channel (shallow-water limit) -----------------------------------
 
 def dam_break_exact(x, t, h_l, h_r, x0, g=GRAVITY):
-    """Depth of Ritter's (h_r = 0) or Stoker's dam break, as in
-    source/water/dam_break_solutions.cc."""
+    """Depth of Ritter's (h_r = 0) or Stoker's dam break at x, t, as in
+    source/water/dam_break_solutions.cc; also the speed s of the front (Ritter, 2 c_l) or of
+    the shock (Stoker), and the plateau depth h_m (0 for Ritter)."""
     c_l = math.sqrt(g * h_l)
     if h_r <= 0:
-        h_m, u_m, s = 0.0, 2 * c_l, 2 * c_l
+        h_m, s = 0.0, 2 * c_l
         fan_end = 2 * c_l
     else:
         def f(hm):
@@ -354,7 +369,7 @@ def dam_break_exact(x, t, h_l, h_r, x0, g=GRAVITY):
         fan_end = u_m - math.sqrt(g * h_m)
     xi = (np.asarray(x, dtype=float) - x0) / t
     return np.select([xi <= -c_l, xi <= fan_end, xi <= s],
-                     [h_l, (2 * c_l - xi) ** 2 / (9 * g), h_m], h_r), s
+                     [h_l, (2 * c_l - xi) ** 2 / (9 * g), h_m], h_r), s, h_m
 
 
 def dam_break(args):
@@ -370,14 +385,14 @@ def dam_break(args):
     fig, axes = plt.subplots(2, 2, figsize=(10, 6.4), sharex=True, constrained_layout=True)
     x = np.linspace(0, 100, 4001)
     for row, (cname, clabel, h_r, cset) in zip(axes, cases):
-        exact, s = dam_break_exact(x, t_end, 1.0, h_r, x0)
+        exact, s, h_m = dam_break_exact(x, t_end, 1.0, h_r, x0)
         c_l = math.sqrt(GRAVITY)
         for ax, (uname, ulabel) in zip(row, updates):
             ax.plot(x, exact, "k-", lw=1.2, label="exact", zorder=3)
             for n, color in [(2, "tab:blue"), (4, "tab:orange")]:
                 r = run(args, "dam-break-%s-%s-%d" % (cname, uname, n),
                         "prm/dam-break-channel.prm",
-                        [POINTS, NO_GRID, "Depth averaged/Depth update=" + uname,
+                        [POINTS, "Depth averaged/Depth update=" + uname,
                          "Depth averaged/Release/Particles per direction=%d" % n]
                         + grid + cset)
                 match = re.search(r"relative L1 error of the depth = ([0-9.eE+-]+)", r.log)
@@ -389,13 +404,22 @@ def dam_break(args):
                 if data is None:
                     ax.plot([], [], ".", color=color, label=label + " (no output at t = 4 s)")
                     continue
-                front = data["x"][data["depth"] > 1e-3].max()
-                print("  dam break %s %s %dx%d: L1 %.4g, points' front x = %.2f m"
-                      % (cname, uname, n, n, error, front))
+                # Ritter: the last point deeper than 1 mm; Stoker: the last point deeper
+                # than halfway between the plateau and the still water.
+                threshold = 1e-3 if h_r <= 0 else 0.5 * (h_m + h_r)
+                front = data["x"][data["depth"] > threshold].max()
+                print("  dam break %s %s %dx%d: L1 %.4g, points' %s at x = %.2f m "
+                      "(exact %.2f m)" % (cname, uname, n, n, error,
+                                          "front" if h_r <= 0 else "shock", front,
+                                          x0 + s * t_end))
                 ax.plot(data["x"], data["depth"], ".", ms=1.5 if n == 4 else 2.5,
                         color=color, alpha=0.6, label=label, rasterized=True)
+                nodes = r.nodal_depth(int(t_end))
+                if nodes is not None:
+                    ax.plot(nodes[0], nodes[1], "-", color=color, lw=0.7, alpha=0.85,
+                            label="its nodal depth (the L1 error's)")
             ax.set_title("%s, %s" % (clabel, ulabel), fontsize=9)
-            ax.set_xlim(30, 90)
+            ax.set_xlim(30, 85)
             ax.set_ylim(-0.02, 1.08)
             ax.grid(alpha=0.3)
             ax.legend(fontsize=7, loc="upper right", markerscale=3)
@@ -406,13 +430,13 @@ def dam_break(args):
                             arrowprops={"arrowstyle": "->", "lw": 0.6})
         else:
             row[0].annotate("shock $x_0 + s t$ = %.1f m" % (x0 + s * t_end),
-                            (x0 + s * t_end, h_r), (74, 0.85), fontsize=7,
+                            (x0 + s * t_end, h_r), (66, 0.2), fontsize=7,
                             arrowprops={"arrowstyle": "->", "lw": 0.6})
     for ax in axes[1]:
         ax.set_xlabel("x [m]")
-    fig.suptitle("Dam break along a channel at t = 4 s (prm/dam-break-channel.prm, "
-                 "$\\mu = \\tau_Y$ = 0, no friction): cells of 0.25 m on [0, 100] x [0, 1] m,"
-                 " the depth of every point", fontsize=10)
+    fig.suptitle("Dam break at t = 4 s (prm/dam-break-channel.prm, $\\mu = \\tau_Y$ = 0, "
+                 "no friction), cells of 0.25 m on [0, 100] x [0, 1] m:\n"
+                 "dots: the depth of every point; lines: the nodal depth", fontsize=10)
     save(fig, args, "depth-averaged-dam-break.png")
 
 

@@ -11,7 +11,7 @@ build_dir=${BUILD_DIR:-"$root/build"}
 build_type=${BUILD_TYPE:-Release}
 
 packages=(libdeal.ii-dev numdiff cmake g++ make python3-matplotlib python3-numpy openmpi-bin
-  clang-format)
+  clang-format libgdal-dev python3-gdal)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -130,9 +130,29 @@ namespace slidewave
       {
         prm.declare_entry("Source",
                           "expression",
-                          Selection("expression|table"),
+                          Selection("expression|table|raster"),
                           "'expression': 'Elevation', a function of x and y. 'table': 'Table "
-                          "file', the elevations at the nodes of a regular grid.");
+                          "file', the elevations at the nodes of a regular grid. 'raster': "
+                          "'Raster file', a DEM GDAL reads (GeoTIFF, ESRI ASCII grid, ...); the "
+                          "grid's corners are then in the raster's metric coordinates.");
+        prm.declare_entry("Raster file",
+                          "",
+                          Anything(),
+                          "The DEM ('Source = raster'; a path relative to the scene file's "
+                          "directory). Band 1 at the pixel centres, interpolated bilinearly; "
+                          "no-data under the domain is refused; a raster in degrees is "
+                          "reprojected by GDAL's warper to 'Target CRS'.");
+        prm.declare_entry("Raster without CRS",
+                          "refuse",
+                          Selection("refuse|metric"),
+                          "A raster that has no coordinate reference system is refused, or "
+                          "with 'metric' its coordinates are taken as metres.");
+        prm.declare_entry("Target CRS",
+                          "",
+                          Anything(),
+                          "The projected CRS a raster in degrees is reprojected to, as GDAL "
+                          "reads it (e.g. 'EPSG:32632'); empty: the UTM zone of the raster's "
+                          "centre.");
         prm.declare_entry("Table file",
                           "",
                           Anything(),
@@ -274,6 +294,17 @@ namespace slidewave
         elevation = dealii::Utilities::trim(prm.get("Elevation"));
         check_expression(path + "/Terrain/Elevation", elevation);
         elevation_table.clear();
+        elevation_raster.clear();
+        raster_options.assume_metric = prm.get("Raster without CRS") == "metric";
+        raster_options.target_crs    = dealii::Utilities::trim(prm.get("Target CRS"));
+        if (prm.get("Source") == "raster")
+          {
+            elevation_raster = dealii::Utilities::trim(prm.get("Raster file"));
+            if (elevation_raster.empty())
+              throw InputError(path + "/Terrain/Raster file",
+                               "",
+                               "the name of a raster file ('Source = raster')");
+          }
         if (prm.get("Source") == "table")
           {
             elevation_table = dealii::Utilities::trim(prm.get("Table file"));

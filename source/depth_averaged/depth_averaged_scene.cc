@@ -113,6 +113,8 @@ namespace slidewave
       parameters.parse_parameters(prm, section);
       if (!parameters.elevation_table.empty())
         parameters.elevation_table = scene.resolve_path(parameters.elevation_table);
+      if (!parameters.elevation_raster.empty())
+        parameters.elevation_raster = scene.resolve_path(parameters.elevation_raster);
       write_grid     = prm.get_bool("Output grid");
       write_table    = prm.get_bool("Output point table");
       check_interval = prm.get_integer("Check interval");
@@ -565,6 +567,8 @@ namespace slidewave
           << "' at " << parameters.terrain_spacing << " m";
       if (!parameters.elevation_table.empty())
         out << " (table " << parameters.elevation_table << ")";
+      if (!parameters.elevation_raster.empty())
+        out << " (raster " << parameters.elevation_raster << ")";
       out << "; density " << parameters.density;
       return out.str();
     }

@@ -8,6 +8,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/depth_averaged_solver.h>
 #include <slidewave/terrain/elevation_table.h>
+#include <slidewave/terrain/raster_terrain.h>
 
 namespace slidewave
 {
@@ -19,6 +20,12 @@ namespace slidewave
       terrain::ElevationGrid
       sample_terrain(const DepthAveragedParameters &prm)
       {
+        if (!prm.elevation_raster.empty())
+          return terrain::read_raster_terrain("Depth averaged/Terrain/Raster file",
+                                              prm.elevation_raster,
+                                              prm.lower_left,
+                                              prm.upper_right,
+                                              prm.raster_options);
         if (!prm.elevation_table.empty())
           {
             auto table = terrain::read_elevation_table("Depth averaged/Terrain/Table file",

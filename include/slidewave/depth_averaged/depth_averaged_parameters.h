@@ -10,6 +10,7 @@
 #include <slidewave/grid/load_balancing_parameters.h>
 #include <slidewave/mpm/material_region.h>
 #include <slidewave/mpm/shape_functions.h>
+#include <slidewave/terrain/raster_terrain.h>
 #include <string>
 
 namespace slidewave
@@ -78,6 +79,10 @@ namespace slidewave
       /** 'Source = table': the CSV file x,y,z (resolved against the scene's directory by
        *  the scene); empty: the expression. */
       std::string elevation_table;
+      /** 'Source = raster': the DEM read through GDAL (resolved by the scene) and how its
+       *  coordinates are taken; empty: not a raster. */
+      std::string            elevation_raster;
+      terrain::RasterOptions raster_options;
       /** Spacing of the elevation grid the expression is sampled on [m]. */
       double terrain_spacing = 0.;
 

@@ -1,0 +1,271 @@
+#include <cmath>
+#include <cpl_conv.h>
+#include <cpl_error.h>
+#include <gdal.h>
+#include <gdal_utils.h>
+#include <gdalwarper.h>
+#include <ogr_srs_api.h>
+#include <slidewave/core/input_error.h>
+#include <slidewave/terrain/raster_terrain.h>
+#include <sstream>
+#include <vector>
+
+namespace slidewave
+{
+  namespace terrain
+  {
+    namespace
+    {
+      /** A raster opened through GDAL, and the warped view of it when it had to be
+       *  reprojected; both closed on destruction. */
+      class OpenRaster
+      {
+      public:
+        OpenRaster(const std::string   &parameter,
+                   const std::string   &filename,
+                   const RasterOptions &options);
+
+        ~OpenRaster()
+        {
+          if (warped != nullptr)
+            GDALClose(warped);
+          if (source != nullptr)
+            GDALClose(source);
+        }
+
+        OpenRaster(const OpenRaster &) = delete;
+        OpenRaster &
+        operator=(const OpenRaster &)
+          = delete;
+
+        /** What to read: the reprojection if there is one, else the file. */
+        GDALDatasetH
+        dataset() const
+        {
+          return warped != nullptr ? warped : source;
+        }
+
+        /** The geotransform of dataset(). */
+        double transform[6];
+
+      private:
+        GDALDatasetH source = nullptr, warped = nullptr;
+      };
+
+
+
+      OpenRaster::OpenRaster(const std::string   &parameter,
+                             const std::string   &filename,
+                             const RasterOptions &options)
+      {
+        GDALAllRegister();
+        // GDAL's own diagnosis goes to stderr otherwise; the InputError says what is wrong.
+        CPLPushErrorHandler(CPLQuietErrorHandler);
+        // ESRI ASCII grids are read as 32-bit floats unless asked otherwise.
+        CPLSetThreadLocalConfigOption("AAIGRID_DATATYPE", "Float64");
+        source = GDALOpen(filename.c_str(), GA_ReadOnly);
+        CPLPopErrorHandler();
+        if (source == nullptr)
+          throw InputError(parameter,
+                           filename,
+                           "a raster file GDAL can read (GeoTIFF, ESRI ASCII grid, ...): it "
+                           "does not exist or is not a raster");
+        if (GDALGetRasterCount(source) < 1)
+          throw InputError(parameter, filename, "a raster with at least one band");
+        double gt[6];
+        if (GDALGetGeoTransform(source, gt) != CE_None)
+          throw InputError(parameter,
+                           filename,
+                           "a georeferenced raster (this one has no geotransform)");
+        if (gt[2] != 0. || gt[4] != 0. || !(gt[1] > 0.))
+          throw InputError(parameter,
+                           filename,
+                           "a north-up raster (this one is rotated or sheared)");
+        const OGRSpatialReferenceH crs = GDALGetSpatialRef(source);
+        if (crs == nullptr && !options.assume_metric)
+          throw InputError(parameter,
+                           filename,
+                           "a raster with a coordinate reference system (this one has none: "
+                           "set 'Raster without CRS = metric' to take its coordinates as "
+                           "metres)");
+        if (crs != nullptr && OSRIsGeographic(crs))
+          {
+            // Degrees: reproject to a metric CRS with GDAL's warper, bilinearly.
+            OGRSpatialReferenceH target = OSRNewSpatialReference(nullptr);
+            OSRSetAxisMappingStrategy(target, OAMS_TRADITIONAL_GIS_ORDER);
+            bool ok = true;
+            if (options.target_crs.empty())
+              {
+                // The UTM zone of the raster's centre (x = longitude in GDAL's
+                // traditional order of a geotransform).
+                OGRSpatialReferenceH geographic = OSRClone(crs);
+                OSRSetAxisMappingStrategy(geographic, OAMS_TRADITIONAL_GIS_ORDER);
+                double    lon  = gt[0] + 0.5 * gt[1] * GDALGetRasterXSize(source);
+                double    lat  = gt[3] + 0.5 * gt[5] * GDALGetRasterYSize(source);
+                const int zone = static_cast<int>(std::floor((lon + 180.) / 6.)) + 1;
+                ok             = OSRCopyGeogCSFrom(target, geographic) == OGRERR_NONE
+                     && OSRSetUTM(target, zone, lat >= 0. ? 1 : 0) == OGRERR_NONE;
+                OSRDestroySpatialReference(geographic);
+              }
+            else
+              ok = OSRSetFromUserInput(target, options.target_crs.c_str()) == OGRERR_NONE
+                   && !OSRIsGeographic(target);
+            if (!ok)
+              {
+                OSRDestroySpatialReference(target);
+                throw InputError(parameter,
+                                 filename,
+                                 "a raster that can be reprojected to a metric CRS (the target "
+                                 "'"
+                                   + options.target_crs + "' is not a projected CRS GDAL knows)");
+              }
+            char *wkt = nullptr;
+            OSRExportToWkt(target, &wkt);
+            OSRDestroySpatialReference(target);
+            const std::string target_wkt = wkt;
+            CPLFree(wkt);
+            // Pixels no larger than the source's smallest side in metres: bilinear
+            // resampling onto a coarser grid averages (GDAL widens the kernel) and bends
+            // even a field linear in degrees by 0.1 % of its relief; onto a finer one it
+            // keeps it.
+            const double lat               = gt[3] + 0.5 * gt[5] * GDALGetRasterYSize(source);
+            const double metres_per_degree = M_PI / 180. * 6371000.;
+            const double resolution
+              = std::min(gt[1] * metres_per_degree * std::cos(lat * M_PI / 180.),
+                         std::abs(gt[5]) * metres_per_degree);
+            const std::string         res       = std::to_string(resolution);
+            std::vector<const char *> arguments = {"-of",
+                                                   "MEM",
+                                                   "-t_srs",
+                                                   target_wkt.c_str(),
+                                                   "-r",
+                                                   "bilinear",
+                                                   "-et",
+                                                   "0",
+                                                   "-tr",
+                                                   res.c_str(),
+                                                   res.c_str(),
+                                                   nullptr};
+            GDALWarpAppOptions       *warp_options
+              = GDALWarpAppOptionsNew(const_cast<char **>(arguments.data()), nullptr);
+            CPLPushErrorHandler(CPLQuietErrorHandler);
+            int error = 0;
+            warped    = GDALWarp("", nullptr, 1, &source, warp_options, &error);
+            CPLPopErrorHandler();
+            GDALWarpAppOptionsFree(warp_options);
+            if (warped == nullptr || error != 0)
+              throw InputError(parameter,
+                               filename,
+                               "a raster GDAL can reproject to a metric CRS (the warper "
+                               "refused this one)");
+          }
+        GDALGetGeoTransform(dataset(), transform);
+      }
+
+
+
+      /** The first and last pixel (rows or columns) whose centres bracket [a, b] along one
+       *  axis of origin @p o and pixel size @p d (negative for rows north to south). */
+      std::pair<long, long>
+      bracket(const double a, const double b, const double o, const double d)
+      {
+        const double s0 = (a - o) / d - 0.5, s1 = (b - o) / d - 0.5;
+        const double lo = std::min(s0, s1), hi = std::max(s0, s1);
+        // A coordinate on a pixel centre (to round-off) needs no neighbour beyond it.
+        const long first = static_cast<long>(std::floor(lo + 1e-9));
+        const long last  = static_cast<long>(std::ceil(hi - 1e-9));
+        return {first, std::max(last, first + 1)};
+      }
+    } // namespace
+
+
+
+    RasterExtent
+    raster_extent(const std::string   &parameter,
+                  const std::string   &filename,
+                  const RasterOptions &options)
+    {
+      const OpenRaster raster(parameter, filename, options);
+      const double    *gt = raster.transform;
+      const int        nx = GDALGetRasterXSize(raster.dataset());
+      const int        ny = GDALGetRasterYSize(raster.dataset());
+      RasterExtent     extent;
+      const double     x0 = gt[0] + 0.5 * gt[1], x1 = gt[0] + (nx - 0.5) * gt[1];
+      const double     y0 = gt[3] + 0.5 * gt[5], y1 = gt[3] + (ny - 0.5) * gt[5];
+      extent.lower   = dealii::Point<2>(std::min(x0, x1), std::min(y0, y1));
+      extent.upper   = dealii::Point<2>(std::max(x0, x1), std::max(y0, y1));
+      extent.pixel_x = std::abs(gt[1]);
+      extent.pixel_y = std::abs(gt[5]);
+      if (const char *wkt = GDALGetProjectionRef(raster.dataset()))
+        extent.crs_wkt = wkt;
+      return extent;
+    }
+
+
+
+    ElevationGrid
+    read_raster_terrain(const std::string      &parameter,
+                        const std::string      &filename,
+                        const dealii::Point<2> &lower,
+                        const dealii::Point<2> &upper,
+                        const RasterOptions    &options)
+    {
+      const OpenRaster raster(parameter, filename, options);
+      const double    *gt   = raster.transform;
+      GDALDatasetH     data = raster.dataset();
+      const long       nx = GDALGetRasterXSize(data), ny = GDALGetRasterYSize(data);
+      const auto [i0, i1] = bracket(lower[0], upper[0], gt[0], gt[1]);
+      const auto [j0, j1] = bracket(lower[1], upper[1], gt[3], gt[5]);
+      if (i0 < 0 || j0 < 0 || i1 >= nx || j1 >= ny)
+        {
+          const RasterExtent e = raster_extent(parameter, filename, options);
+          std::ostringstream message;
+          message.precision(12);
+          message << "a raster covering the domain [" << lower[0] << ", " << upper[0] << "] x ["
+                  << lower[1] << ", " << upper[1] << "] (its pixel centres span [" << e.lower[0]
+                  << ", " << e.upper[0] << "] x [" << e.lower[1] << ", " << e.upper[1]
+                  << "] in the coordinates the model uses)";
+          throw InputError(parameter, filename, message.str());
+        }
+      const int           w = static_cast<int>(i1 - i0 + 1), h = static_cast<int>(j1 - j0 + 1);
+      std::vector<double> values(static_cast<std::size_t>(w) * h);
+      GDALRasterBandH     band = GDALGetRasterBand(data, 1);
+      if (GDALRasterIO(band, GF_Read, i0, j0, w, h, values.data(), w, h, GDT_Float64, 0, 0)
+          != CE_None)
+        throw InputError(parameter, filename, "a raster whose band 1 GDAL can read");
+      int          has_nodata = 0;
+      const double nodata     = GDALGetRasterNoDataValue(band, &has_nodata);
+      int          has_scale = 0, has_offset = 0;
+      double       scale  = GDALGetRasterScale(band, &has_scale);
+      double       offset = GDALGetRasterOffset(band, &has_offset);
+      if (!has_scale)
+        scale = 1.;
+      if (!has_offset)
+        offset = 0.;
+      // Rows from south to north (ElevationGrid's y grows), no-data refused.
+      const bool          north_up = gt[5] < 0.;
+      std::vector<double> z(values.size());
+      for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c)
+          {
+            const double v     = values[static_cast<std::size_t>(r) * w + c];
+            const bool   empty = !std::isfinite(v) || (has_nodata && v == nodata);
+            if (empty)
+              {
+                std::ostringstream message;
+                message.precision(12);
+                message << "elevations everywhere under the domain (the pixel centred at ("
+                        << gt[0] + (i0 + c + 0.5) * gt[1] << ", " << gt[3] + (j0 + r + 0.5) * gt[5]
+                        << ") is no-data: crop the domain or fill the raster)";
+                throw InputError(parameter, filename, message.str());
+              }
+            const int row                            = north_up ? h - 1 - r : r;
+            z[static_cast<std::size_t>(row) * w + c] = scale * v + offset;
+          }
+      const double x_first = gt[0] + (i0 + 0.5) * gt[1];
+      const double y_south = north_up ? gt[3] + (j1 + 0.5) * gt[5] : gt[3] + (j0 + 0.5) * gt[5];
+      return ElevationGrid(
+        dealii::Point<2>(x_first, y_south), std::abs(gt[1]), std::abs(gt[5]), w, h, std::move(z));
+    }
+  } // namespace terrain
+} // namespace slidewave

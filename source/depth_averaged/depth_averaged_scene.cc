@@ -53,6 +53,32 @@ namespace slidewave
                         Bool(),
                         "Also write the grid (grid/*.pvtu, grid.pvd) with the nodal depth, "
                         "the flow surface h + Z, the terrain and the nodal velocity.");
+      prm.enter_subsection("Hazard maps");
+      {
+        prm.declare_entry("Enable",
+                          "false",
+                          Bool(),
+                          "Write hazard maps at the end of the run into OUTPUT/maps: GeoTIFFs "
+                          "of one pixel per grid node (in the terrain raster's CRS when the "
+                          "terrain is a raster) of the peak flow thickness, peak flow "
+                          "velocity, peak dynamic pressure rho v^2, peak static pressure "
+                          "rho g h, the time of arrival and the deposit thickness at the end; "
+                          "the outlines of the affected and the deposit areas as GeoJSON; "
+                          "summary.csv with their areas, the runout from the release's centre "
+                          "of mass, the elevation drop and the travel angle.");
+        prm.declare_entry("Thickness threshold",
+                          "0.05",
+                          Double(0.),
+                          "A node is reached (affected, part of the deposit) where the flow "
+                          "is thicker than this [m].");
+        prm.declare_entry("Interval",
+                          "5",
+                          Integer(1),
+                          "Steps between updates of the peaks and arrival times (and the "
+                          "last step). Each update costs about one step (a pass over the "
+                          "columns and an exchange): 1 for the sharpest maps.");
+      }
+      prm.leave_subsection();
       prm.enter_subsection("Verification");
       {
         prm.declare_entry("Exact solution",
@@ -118,6 +144,13 @@ namespace slidewave
       write_grid     = prm.get_bool("Output grid");
       write_table    = prm.get_bool("Output point table");
       check_interval = prm.get_integer("Check interval");
+      prm.enter_subsection("Hazard maps");
+      {
+        write_maps    = prm.get_bool("Enable");
+        map_threshold = prm.get_double("Thickness threshold");
+        map_interval  = prm.get_integer("Interval");
+      }
+      prm.leave_subsection();
       prm.enter_subsection("Verification");
       {
         const std::string type = prm.get("Exact solution");
@@ -176,6 +209,8 @@ namespace slidewave
         std::filesystem::create_directories(scene.output_directory + "/points");
       if (write_grid)
         std::filesystem::create_directories(scene.output_directory + "/grid");
+      if (write_maps)
+        std::filesystem::create_directories(scene.output_directory + "/maps");
     }
 
 
@@ -186,6 +221,8 @@ namespace slidewave
       timer  = &timer_output;
       solver = std::make_unique<DepthAveragedSolver>(parameters);
       solver->set_timer(timer_output);
+      if (write_maps)
+        maps = std::make_unique<HazardMaps>(parameters, map_threshold);
     }
 
 
@@ -239,6 +276,9 @@ namespace slidewave
       initial_energy       = integrals.kinetic_energy + integrals.potential_energy;
       total_mass           = integrals.mass;
       initial_max_depth    = integrals.max_depth;
+      release_centre       = dealii::Point<2>(integrals.centroid_x, integrals.centroid_y);
+      if (maps)
+        maps->record(*solver, scene.start_time);
       if (check_conservation)
         record_conservation();
     }
@@ -298,6 +338,11 @@ namespace slidewave
         {
           dealii::TimerOutput::Scope scope(*timer, "depth averaged: checks");
           check_state(info.step, info.time);
+        }
+      if (maps && (info.step % map_interval == 0 || info.at_end))
+        {
+          dealii::TimerOutput::Scope scope(*timer, "depth averaged: hazard maps");
+          maps->record(*solver, info.time);
         }
       // With a tolerance, the conservation is checked after every step, not only at rows.
       if (check_conservation && (info.reports || conservation_tolerance > 0.))
@@ -501,6 +546,18 @@ namespace slidewave
     DepthAveragedScene::finish(const StepInfo &info)
     {
       const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      if (maps)
+        {
+          const std::string crs = parameters.elevation_raster.empty() ?
+                                    std::string() :
+                                    terrain::raster_extent("Depth averaged/Terrain/Raster file",
+                                                           parameters.elevation_raster,
+                                                           parameters.raster_options)
+                                      .crs_wkt;
+          maps->write(scene.output_directory + "/maps", *solver, crs, release_centre);
+          if (is_writer && !scene.test_mode)
+            std::printf("Hazard maps in %s/maps\n", scene.output_directory.c_str());
+        }
       if (exact_solution == ExactSolution::still_state)
         {
           const auto errors = still_state_errors();
@@ -584,6 +641,8 @@ namespace slidewave
       record.put("depth_averaged/initial_max_depth", initial_max_depth);
       record.put("depth_averaged/max_conservation_error", max_conservation_error);
       record.put("depth_averaged/max_asymmetry", max_asymmetry);
+      record.put("depth_averaged/release_centre",
+                 std::vector<double>{release_centre[0], release_centre[1]});
       record.put_files("depth_averaged/particle_files", particle_output.files);
       record.put_files("depth_averaged/grid_files", grid_output.files);
     }
@@ -609,8 +668,12 @@ namespace slidewave
       initial_max_depth      = record.get("depth_averaged/initial_max_depth");
       max_conservation_error = record.get("depth_averaged/max_conservation_error");
       max_asymmetry          = record.get("depth_averaged/max_asymmetry");
-      particle_output.files  = record.get_files("depth_averaged/particle_files");
-      grid_output.files      = record.get_files("depth_averaged/grid_files");
+      {
+        const auto centre = record.get_vector("depth_averaged/release_centre");
+        release_centre    = dealii::Point<2>(centre[0], centre[1]);
+      }
+      particle_output.files = record.get_files("depth_averaged/particle_files");
+      grid_output.files     = record.get_files("depth_averaged/grid_files");
       create_solver(timer_output);
       solver->load(prefix);
       io::restore_state(record, "depth_averaged", *solver);

@@ -315,14 +315,20 @@ namespace slidewave
 
 
 
-    dealii::LinearAlgebra::distributed::Vector<double>
-    DepthAveragedSolver::nodal_depth() const
+    DepthAveragedSolver::NodalState
+    DepthAveragedSolver::nodal_state() const
     {
       // sum_p V_p N_i(x_p) over the lumped area of node i (a quarter of each cell around
-      // it): the depth the columns give the node, for output.
-      dealii::LinearAlgebra::distributed::Vector<double> volume, area;
+      // it): the depth the columns give the node; sum_p m_p v_p N_i / sum_p m_p N_i: their
+      // mass-weighted mean velocity there.
+      using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
+      Vector volume, area, mass;
       volume.reinit(nodes.nodal_mass);
       area.reinit(nodes.nodal_mass);
+      mass.reinit(nodes.nodal_mass);
+      NodalState state;
+      for (auto &v : state.velocity)
+        v.reinit(nodes.nodal_mass);
       const auto                                  &dofs = grid.dof_handler();
       std::vector<dealii::types::global_dof_index> indices(4);
       for (const auto &cell : dofs.active_cell_iterators())
@@ -332,25 +338,47 @@ namespace slidewave
             const double quarter = 0.25 * cell->measure();
             for (const auto i : indices)
               area[i] += quarter;
-            const auto particles = cloud.particles().particles_in_cell(cell);
-            for (const auto &particle : particles)
+            for (const auto &particle : cloud.particles().particles_in_cell(cell))
               {
                 const dealii::Point<2> r    = particle.get_reference_location();
-                const double           V    = particle.get_properties()[property::volume];
+                const auto             p    = particle.get_properties();
                 const double           w[4] = {(1. - r[0]) * (1. - r[1]),
                                                r[0] * (1. - r[1]),
                                                (1. - r[0]) * r[1],
                                                r[0] * r[1]};
                 for (unsigned int k = 0; k < 4; ++k)
-                  volume[indices[k]] += w[k] * V;
+                  {
+                    volume[indices[k]] += w[k] * p[property::volume];
+                    mass[indices[k]] += w[k] * p[property::mass];
+                    state.velocity[0][indices[k]]
+                      += w[k] * p[property::mass] * p[property::velocity_x];
+                    state.velocity[1][indices[k]]
+                      += w[k] * p[property::mass] * p[property::velocity_y];
+                  }
               }
           }
-      volume.compress(dealii::VectorOperation::add);
-      area.compress(dealii::VectorOperation::add);
+      for (Vector *v : {&volume, &area, &mass, &state.velocity[0], &state.velocity[1]})
+        v->compress(dealii::VectorOperation::add);
       for (unsigned int i = 0; i < volume.locally_owned_size(); ++i)
-        volume.local_element(i) /= area.local_element(i);
-      volume.update_ghost_values();
-      return volume;
+        {
+          volume.local_element(i) /= area.local_element(i);
+          const double m = mass.local_element(i);
+          for (auto &v : state.velocity)
+            v.local_element(i) = m > 0. ? v.local_element(i) / m : 0.;
+        }
+      state.depth = std::move(volume);
+      state.depth.update_ghost_values();
+      for (auto &v : state.velocity)
+        v.update_ghost_values();
+      return state;
+    }
+
+
+
+    dealii::LinearAlgebra::distributed::Vector<double>
+    DepthAveragedSolver::nodal_depth() const
+    {
+      return nodal_state().depth;
     }
 
 

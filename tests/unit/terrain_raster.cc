@@ -18,6 +18,7 @@
 //  - a depth-averaged run (a slab sliding on Z = -0.5 x, 20 steps) with the terrain from
 //    the ESRI grid gives the same mass, momentum and energy as with the expression, to
 //    1e-12 relative (both terrains are the exact plane).
+#include "raster_writer.h"
 #include "unit_check.h"
 
 #ifndef GEO_PIXEL
@@ -44,55 +45,6 @@ using unit_check::check;
 
 namespace
 {
-  /** Writes a one-band float64 raster of @p f at the pixel centres. */
-  void
-  write_raster(const std::string                           &driver_name,
-               const std::string                           &path,
-               const int                                    nx,
-               const int                                    ny,
-               const double                                *gt,
-               const int                                    epsg,
-               const std::function<double(double, double)> &f,
-               const double                                 nodata_x = NAN,
-               const double                                 nodata_y = NAN)
-  {
-    GDALDriverH  mem  = GDALGetDriverByName("MEM");
-    GDALDatasetH data = GDALCreate(mem, "", nx, ny, 1, GDT_Float64, nullptr);
-    GDALSetGeoTransform(data, const_cast<double *>(gt));
-    if (epsg > 0)
-      {
-        OGRSpatialReferenceH crs = OSRNewSpatialReference(nullptr);
-        OSRImportFromEPSG(crs, epsg);
-        GDALSetSpatialRef(data, crs);
-        OSRDestroySpatialReference(crs);
-      }
-    std::vector<double> values(static_cast<std::size_t>(nx) * ny);
-    for (int r = 0; r < ny; ++r)
-      for (int c = 0; c < nx; ++c)
-        {
-          const double x = gt[0] + (c + 0.5) * gt[1], y = gt[3] + (r + 0.5) * gt[5];
-          const bool   hole = std::abs(x - nodata_x) < 0.5 * gt[1]
-                            && std::abs(y - nodata_y) < 0.5 * std::abs(gt[5]);
-          values[static_cast<std::size_t>(r) * nx + c] = hole ? -9999. : f(x, y);
-        }
-    GDALRasterBandH band = GDALGetRasterBand(data, 1);
-    GDALSetRasterNoDataValue(band, -9999.);
-    if (GDALRasterIO(band, GF_Write, 0, 0, nx, ny, values.data(), nx, ny, GDT_Float64, 0, 0)
-        != CE_None)
-      std::printf("writing %s failed\n", path.c_str());
-    const char  *options[] = {"DECIMAL_PRECISION=17", nullptr};
-    GDALDatasetH copy
-      = GDALCreateCopy(GDALGetDriverByName(driver_name.c_str()),
-                       path.c_str(),
-                       data,
-                       FALSE,
-                       driver_name == "AAIGrid" ? const_cast<char **>(options) : nullptr,
-                       nullptr,
-                       nullptr);
-    GDALClose(copy);
-    GDALClose(data);
-  }
-
   template <typename Function>
   bool
   refused(const Function &f)

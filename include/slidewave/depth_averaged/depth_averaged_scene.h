@@ -12,6 +12,7 @@
 #include <slidewave/core/time_stepped_scene.h>
 #include <slidewave/depth_averaged/depth_averaged_parameters.h>
 #include <slidewave/depth_averaged/depth_averaged_solver.h>
+#include <slidewave/depth_averaged/hazard_maps.h>
 #include <slidewave/io/particle_output.h>
 #include <string>
 
@@ -152,7 +153,14 @@ namespace slidewave
 
       /** Energy at the start: kinetic + potential (the guard's budget). */
       double initial_energy = 0., total_mass = 0., initial_max_depth = 0.;
-      double max_error = 0.;
+      /** The release's centre of mass (runout and travel angle of the maps). */
+      dealii::Point<2> release_centre;
+      /** 'Hazard maps' (allocated only when enabled). */
+      bool                        write_maps    = false;
+      double                      map_threshold = 0.05;
+      unsigned int                map_interval  = 5;
+      std::unique_ptr<HazardMaps> maps;
+      double                      max_error = 0.;
     };
   } // namespace depth_averaged
 } // namespace slidewave

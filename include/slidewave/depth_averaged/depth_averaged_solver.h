@@ -90,6 +90,18 @@ namespace slidewave
       std::array<double, 3>
       nodal_totals();
 
+      /** What the columns give the nodes now (ghosted): the depth sum_p V_p N_i / a_i
+       *  (a_i the node's lumped area) and the mass-weighted mean velocity
+       *  sum_p m_p v_p N_i / sum_p m_p N_i (never faster than the columns). */
+      struct NodalState
+      {
+        dealii::LinearAlgebra::distributed::Vector<double>                depth;
+        std::array<dealii::LinearAlgebra::distributed::Vector<double>, 2> velocity;
+      };
+
+      NodalState
+      nodal_state() const;
+
       /** Lumped nodal depth sum_p V_p N_i / sum of the cells' areas at node i, ghosted. */
       dealii::LinearAlgebra::distributed::Vector<double>
       nodal_depth() const;

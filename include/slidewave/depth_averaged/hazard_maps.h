@@ -1,0 +1,63 @@
+#ifndef slidewave_depth_averaged_hazard_maps_h
+#define slidewave_depth_averaged_hazard_maps_h
+
+#include <slidewave/depth_averaged/depth_averaged_solver.h>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace depth_averaged
+  {
+    /**
+     * Hazard maps of a depth-averaged run on the nodes of its grid (uniform cells, one
+     * pixel per node; the thickness is the columns' volume on the node over its area, the
+     * velocity the columns' mass-weighted mean at the node, DepthAveragedSolver::nodal_state): peak
+     * flow thickness, peak flow velocity, peak dynamic pressure rho v^2 and peak static pressure
+     * rho g h (AvaFrame's pft, pfv, ppr and r.avaflow's hflow_max, vflow_max), the time of arrival
+     * (first time the thickness exceeds the threshold) and the final deposit thickness. Written as
+     * GeoTIFF in the terrain's CRS (when the terrain is a raster) with a summary of areas and
+     * runout.
+     *
+     * Each rank updates the nodes it owns into arrays over all nodes of the grid (so the
+     * maps survive repartitioning); write() combines them (max, min, sum) and rank 0
+     * writes the files. Memory: six doubles per node of the grid on every rank.
+     */
+    class HazardMaps
+    {
+    public:
+      HazardMaps(const DepthAveragedParameters &parameters, double threshold);
+
+      /** Updates the peaks and arrival times from the solver's state at @p time
+       *  (collective: the nodal depth is an exchange). */
+      void
+      record(const DepthAveragedSolver &solver, double time);
+
+      /** The maps and the summary into @p directory (collective; rank 0 writes);
+       *  @p crs_wkt: the CRS of the files (empty: none). @p release_centre: the centre of
+       *  mass of the release (for the runout and the travel angle). */
+      void
+      write(const std::string         &directory,
+            const DepthAveragedSolver &solver,
+            const std::string         &crs_wkt,
+            const dealii::Point<2>    &release_centre) const;
+
+      /** The maps' names, in the order of the files. */
+      static const std::vector<std::string> &
+      names();
+
+    private:
+      unsigned int
+      node_index(const dealii::Point<2> &x) const;
+
+      const DepthAveragedParameters &prm;
+      const double                   threshold;
+      unsigned int                   nx, ny;
+      /** Per node: peak thickness, peak speed, peak rho v^2, peak rho g h, arrival time
+       *  (+inf: not reached), final thickness (of the last record). */
+      std::vector<double> peak_depth, peak_speed, peak_dynamic, peak_static, arrival, last_depth;
+    };
+  } // namespace depth_averaged
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,241 @@
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deal.II/base/mpi.h>
+#include <fstream>
+#include <gdal.h>
+#include <gdal_alg.h>
+#include <limits>
+#include <ogr_api.h>
+#include <ogr_srs_api.h>
+#include <slidewave/depth_averaged/hazard_maps.h>
+
+namespace slidewave
+{
+  namespace depth_averaged
+  {
+    namespace
+    {
+      constexpr double no_data = -9999.;
+
+      /** Writes @p values (node (i, j) at [j * (nx + 1) + i], y growing) as a GeoTIFF of
+       *  one pixel per node, rows from north to south. */
+      void
+      write_geotiff(const std::string         &path,
+                    const std::vector<double> &values,
+                    const unsigned int         nx,
+                    const unsigned int         ny,
+                    const double              *transform,
+                    const std::string         &crs_wkt)
+      {
+        const int    w = nx + 1, h = ny + 1;
+        GDALDatasetH data
+          = GDALCreate(GDALGetDriverByName("GTiff"), path.c_str(), w, h, 1, GDT_Float64, nullptr);
+        GDALSetGeoTransform(data, const_cast<double *>(transform));
+        if (!crs_wkt.empty())
+          GDALSetProjection(data, crs_wkt.c_str());
+        std::vector<double> rows(values.size());
+        for (int j = 0; j < h; ++j)
+          std::copy(values.begin() + static_cast<std::size_t>(j) * w,
+                    values.begin() + static_cast<std::size_t>(j + 1) * w,
+                    rows.begin() + static_cast<std::size_t>(h - 1 - j) * w);
+        GDALRasterBandH band = GDALGetRasterBand(data, 1);
+        GDALSetRasterNoDataValue(band, no_data);
+        if (GDALRasterIO(band, GF_Write, 0, 0, w, h, rows.data(), w, h, GDT_Float64, 0, 0)
+            != CE_None)
+          std::fprintf(stderr, "slidewave: could not write %s\n", path.c_str());
+        GDALClose(data);
+      }
+
+      /** The outline of the nodes where @p inside is true, as GeoJSON polygons (GDAL's
+       *  polygonize on the node raster). */
+      void
+      write_outline(const std::string       &path,
+                    const std::vector<char> &inside,
+                    const unsigned int       nx,
+                    const unsigned int       ny,
+                    const double            *transform,
+                    const std::string       &crs_wkt)
+      {
+        const int    w = nx + 1, h = ny + 1;
+        GDALDatasetH mask = GDALCreate(GDALGetDriverByName("MEM"), "", w, h, 1, GDT_Byte, nullptr);
+        GDALSetGeoTransform(mask, const_cast<double *>(transform));
+        std::vector<unsigned char> rows(static_cast<std::size_t>(w) * h);
+        for (int j = 0; j < h; ++j)
+          for (int i = 0; i < w; ++i)
+            rows[static_cast<std::size_t>(h - 1 - j) * w + i]
+              = inside[static_cast<std::size_t>(j) * w + i] ? 1 : 0;
+        GDALRasterBandH band = GDALGetRasterBand(mask, 1);
+        if (GDALRasterIO(band, GF_Write, 0, 0, w, h, rows.data(), w, h, GDT_Byte, 0, 0) != CE_None)
+          return;
+        GDALDatasetH vector
+          = GDALCreate(GDALGetDriverByName("GeoJSON"), path.c_str(), 0, 0, 0, GDT_Unknown, nullptr);
+        OGRSpatialReferenceH crs
+          = crs_wkt.empty() ? nullptr : OSRNewSpatialReference(crs_wkt.c_str());
+        OGRLayerH     layer = GDALDatasetCreateLayer(vector, "outline", crs, wkbPolygon, nullptr);
+        OGRFieldDefnH field = OGR_Fld_Create("value", OFTInteger);
+        OGR_L_CreateField(layer, field, TRUE);
+        OGR_Fld_Destroy(field);
+        GDALPolygonize(band, band, layer, 0, nullptr, nullptr, nullptr);
+        if (crs != nullptr)
+          OSRDestroySpatialReference(crs);
+        GDALClose(vector);
+        GDALClose(mask);
+      }
+    } // namespace
+
+
+
+    HazardMaps::HazardMaps(const DepthAveragedParameters &parameters, const double threshold)
+      : prm(parameters)
+      , threshold(threshold)
+      , nx(static_cast<unsigned int>(std::lround(
+          (parameters.upper_right[0] - parameters.lower_left[0]) / parameters.cell_size)))
+      , ny(static_cast<unsigned int>(std::lround(
+          (parameters.upper_right[1] - parameters.lower_left[1]) / parameters.cell_size)))
+    {
+      const std::size_t n = static_cast<std::size_t>(nx + 1) * (ny + 1);
+      peak_depth.assign(n, 0.);
+      peak_speed.assign(n, 0.);
+      peak_dynamic.assign(n, 0.);
+      peak_static.assign(n, 0.);
+      arrival.assign(n, std::numeric_limits<double>::infinity());
+      last_depth.assign(n, 0.);
+    }
+
+
+
+    const std::vector<std::string> &
+    HazardMaps::names()
+    {
+      static const std::vector<std::string> list{"peak_flow_thickness",
+                                                 "peak_flow_velocity",
+                                                 "peak_pressure_dynamic",
+                                                 "peak_pressure_static",
+                                                 "arrival_time",
+                                                 "deposit_thickness"};
+      return list;
+    }
+
+
+
+    unsigned int
+    HazardMaps::node_index(const dealii::Point<2> &x) const
+    {
+      const long i = std::lround((x[0] - prm.lower_left[0]) / prm.cell_size);
+      const long j = std::lround((x[1] - prm.lower_left[1]) / prm.cell_size);
+      return static_cast<unsigned int>(j * (nx + 1) + i);
+    }
+
+
+
+    void
+    HazardMaps::record(const DepthAveragedSolver &solver, const double time)
+    {
+      const auto   state = solver.nodal_state();
+      const auto  &depth = state.depth;
+      const auto  &vx = state.velocity[0], &vy = state.velocity[1];
+      const double rho = prm.density, g = prm.gravity;
+      std::fill(last_depth.begin(), last_depth.end(), 0.);
+      for (const auto &cell : solver.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const auto i = cell->vertex_dof_index(v, 0);
+              if (!depth.in_local_range(i))
+                continue;
+              const unsigned int k = node_index(cell->vertex(v));
+              const double       h = depth[i];
+              last_depth[k]        = h;
+              if (!(h > threshold))
+                continue;
+              const double speed_squared = vx[i] * vx[i] + vy[i] * vy[i];
+              peak_depth[k]              = std::max(peak_depth[k], h);
+              peak_speed[k]              = std::max(peak_speed[k], std::sqrt(speed_squared));
+              peak_dynamic[k]            = std::max(peak_dynamic[k], rho * speed_squared);
+              peak_static[k]             = std::max(peak_static[k], rho * g * h);
+              arrival[k]                 = std::min(arrival[k], time);
+            }
+    }
+
+
+
+    void
+    HazardMaps::write(const std::string         &directory,
+                      const DepthAveragedSolver &solver,
+                      const std::string         &crs_wkt,
+                      const dealii::Point<2>    &release_centre) const
+    {
+      // Every node is owned by one rank: maxima, minima and sums over the ranks give the
+      // maps.
+      std::vector<std::vector<double>> maps{peak_depth, peak_speed, peak_dynamic, peak_static};
+      for (auto &map : maps)
+        dealii::Utilities::MPI::max(map, MPI_COMM_WORLD, map);
+      std::vector<double> first = arrival, final_depth = last_depth;
+      dealii::Utilities::MPI::min(first, MPI_COMM_WORLD, first);
+      dealii::Utilities::MPI::sum(final_depth, MPI_COMM_WORLD, final_depth);
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      for (auto &t : first)
+        if (!std::isfinite(t))
+          t = no_data;
+      for (auto &h : final_depth)
+        if (!(h > threshold))
+          h = 0.;
+      maps.push_back(first);
+      maps.push_back(final_depth);
+
+      // One pixel per node: the pixels' centres are the nodes.
+      const double c = prm.cell_size;
+      const double transform[6]
+        = {prm.lower_left[0] - 0.5 * c, c, 0., prm.upper_right[1] + 0.5 * c, 0., -c};
+      GDALAllRegister();
+      for (unsigned int m = 0; m < maps.size(); ++m)
+        write_geotiff(directory + "/" + names()[m] + ".tif", maps[m], nx, ny, transform, crs_wkt);
+
+      // Outlines, areas, runout and the travel angle.
+      const auto       &terrain = solver.model().terrain();
+      std::vector<char> affected(maps[0].size()), deposit(maps[0].size());
+      double            affected_area = 0., deposit_area = 0., runout = 0., drop = 0.;
+      dealii::Point<2>  farthest = release_centre;
+      for (unsigned int j = 0; j <= ny; ++j)
+        for (unsigned int i = 0; i <= nx; ++i)
+          {
+            const std::size_t k = static_cast<std::size_t>(j) * (nx + 1) + i;
+            // A node's share of the area: a quarter of each cell around it.
+            const double a
+              = c * c * (i == 0 || i == nx ? 0.5 : 1.) * (j == 0 || j == ny ? 0.5 : 1.);
+            affected[k] = maps[0][k] > threshold;
+            deposit[k]  = maps[5][k] > threshold;
+            affected_area += affected[k] ? a : 0.;
+            deposit_area += deposit[k] ? a : 0.;
+            const dealii::Point<2> x(prm.lower_left[0] + i * c, prm.lower_left[1] + j * c);
+            if (affected[k] && x.distance(release_centre) > runout)
+              {
+                runout   = x.distance(release_centre);
+                farthest = x;
+              }
+          }
+      drop = terrain.value(release_centre) - terrain.value(farthest);
+      write_outline(directory + "/affected_area.geojson", affected, nx, ny, transform, crs_wkt);
+      write_outline(directory + "/deposit_area.geojson", deposit, nx, ny, transform, crs_wkt);
+
+      std::ofstream summary(directory + "/summary.csv");
+      summary.precision(10);
+      summary << "quantity,value,unit\n"
+              << "threshold," << threshold << ",m\n"
+              << "affected_area," << affected_area << ",m^2\n"
+              << "deposit_area," << deposit_area << ",m^2\n"
+              << "runout," << runout << ",m\n"
+              << "farthest_x," << farthest[0] << ",m\n"
+              << "farthest_y," << farthest[1] << ",m\n"
+              << "elevation_drop," << drop << ",m\n"
+              << "travel_angle," << (runout > 0. ? std::atan2(drop, runout) * 180. / M_PI : 0.)
+              << ",degrees\n";
+      const char *units[] = {"m", "m/s", "Pa", "Pa"};
+      for (unsigned int m = 0; m < 4; ++m)
+        summary << "max_" << names()[m] << "," << *std::max_element(maps[m].begin(), maps[m].end())
+                << "," << units[m] << "\n";
+    }
+  } // namespace depth_averaged
+} // namespace slidewave

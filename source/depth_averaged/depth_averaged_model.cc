@@ -112,7 +112,9 @@ namespace slidewave
                                        const double            hy) const
     {
       const double value = initial_function->value(position);
-      const double h     = prm.depth.empty() ? value - elevation.value(position) : value;
+      double       h     = prm.depth.empty() ? value - elevation.value(position) : value;
+      if (prm.depth_normal_to_slope)
+        h *= std::sqrt(1. + elevation.gradient(position).norm_square());
       if (!(h > 0.))
         return false;
       const unsigned int n                = prm.particles_per_direction;

@@ -193,6 +193,12 @@ namespace slidewave
                           Integer(1, 10),
                           "n x n material points per cell at the centres of n x n sub-cells "
                           "(paper 001, Eqs. 17-18: V_p = h_p A_p, m_p = rho V_p).");
+        prm.declare_entry("Depth measured",
+                          "vertically",
+                          Selection("vertically|normal to the slope"),
+                          "How 'Depth' is measured: 'vertically' (the model's h), or 'normal "
+                          "to the slope' (a thickness T, as release areas are often mapped): "
+                          "h = T sqrt(1 + |grad Z|^2) = T / cos(slope). Not with 'Surface'.");
       }
       prm.leave_subsection();
 
@@ -353,6 +359,11 @@ namespace slidewave
         else
           check_expression(release_path + "/Surface", surface);
         particles_per_direction = prm.get_integer("Particles per direction");
+        depth_normal_to_slope   = prm.get("Depth measured") == "normal to the slope";
+        if (depth_normal_to_slope && depth.empty())
+          throw InputError(release_path + "/Depth measured",
+                           prm.get("Depth measured"),
+                           "'vertically' when the release is given by its 'Surface'");
       }
       prm.leave_subsection();
 

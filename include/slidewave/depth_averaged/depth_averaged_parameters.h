@@ -91,6 +91,8 @@ namespace slidewave
       /** Exactly one of them is set: the depth h(x, y), or the surface h + Z. */
       std::string  depth, surface;
       unsigned int particles_per_direction = 2;
+      /** 'Depth' is a thickness normal to the slope: h = T sqrt(1 + |grad Z|^2). */
+      bool depth_normal_to_slope = false;
 
       /** @name Numerics */
       DepthUpdate        depth_update   = DepthUpdate::strain;

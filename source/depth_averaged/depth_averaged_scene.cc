@@ -554,7 +554,8 @@ namespace slidewave
                                                            parameters.elevation_raster,
                                                            parameters.raster_options)
                                       .crs_wkt;
-          maps->write(scene.output_directory + "/maps", *solver, crs, release_centre);
+          maps->write(
+            scene.output_directory + "/maps", *solver, crs, release_centre, scene.start_time);
           if (is_writer && !scene.test_mode)
             std::printf("Hazard maps in %s/maps\n", scene.output_directory.c_str());
         }

@@ -164,7 +164,8 @@ namespace slidewave
     HazardMaps::write(const std::string         &directory,
                       const DepthAveragedSolver &solver,
                       const std::string         &crs_wkt,
-                      const dealii::Point<2>    &release_centre) const
+                      const dealii::Point<2>    &release_centre,
+                      const double               start_time) const
     {
       // Every node is owned by one rank: maxima, minima and sums over the ranks give the
       // maps.
@@ -193,11 +194,17 @@ namespace slidewave
       for (unsigned int m = 0; m < maps.size(); ++m)
         write_geotiff(directory + "/" + names()[m] + ".tif", maps[m], nx, ny, transform, crs_wkt);
 
-      // Outlines, areas, runout and the travel angle.
+      // Outlines, areas, and the runout as a landslide's travel angle is measured: from
+      // the crown (the highest node of the release, reached at the start) to the toe (the
+      // affected node farthest from it), H / L (the Fahrboeschung).
       const auto       &terrain = solver.model().terrain();
       std::vector<char> affected(maps[0].size()), deposit(maps[0].size());
       double            affected_area = 0., deposit_area = 0., runout = 0., drop = 0.;
-      dealii::Point<2>  farthest = release_centre;
+      const auto        node = [&](const unsigned int i, const unsigned int j) {
+        return dealii::Point<2>(prm.lower_left[0] + i * c, prm.lower_left[1] + j * c);
+      };
+      dealii::Point<2> crown = release_centre, toe = release_centre;
+      double           crown_elevation = -std::numeric_limits<double>::infinity();
       for (unsigned int j = 0; j <= ny; ++j)
         for (unsigned int i = 0; i <= nx; ++i)
           {
@@ -209,14 +216,22 @@ namespace slidewave
             deposit[k]  = maps[5][k] > threshold;
             affected_area += affected[k] ? a : 0.;
             deposit_area += deposit[k] ? a : 0.;
-            const dealii::Point<2> x(prm.lower_left[0] + i * c, prm.lower_left[1] + j * c);
-            if (affected[k] && x.distance(release_centre) > runout)
+            if (affected[k] && maps[4][k] <= start_time
+                && terrain.value(node(i, j)) > crown_elevation)
               {
-                runout   = x.distance(release_centre);
-                farthest = x;
+                crown_elevation = terrain.value(node(i, j));
+                crown           = node(i, j);
               }
           }
-      drop = terrain.value(release_centre) - terrain.value(farthest);
+      for (unsigned int j = 0; j <= ny; ++j)
+        for (unsigned int i = 0; i <= nx; ++i)
+          if (affected[static_cast<std::size_t>(j) * (nx + 1) + i]
+              && node(i, j).distance(crown) > runout)
+            {
+              runout = node(i, j).distance(crown);
+              toe    = node(i, j);
+            }
+      drop = terrain.value(crown) - terrain.value(toe);
       write_outline(directory + "/affected_area.geojson", affected, nx, ny, transform, crs_wkt);
       write_outline(directory + "/deposit_area.geojson", deposit, nx, ny, transform, crs_wkt);
 
@@ -226,9 +241,11 @@ namespace slidewave
               << "threshold," << threshold << ",m\n"
               << "affected_area," << affected_area << ",m^2\n"
               << "deposit_area," << deposit_area << ",m^2\n"
+              << "crown_x," << crown[0] << ",m\n"
+              << "crown_y," << crown[1] << ",m\n"
+              << "toe_x," << toe[0] << ",m\n"
+              << "toe_y," << toe[1] << ",m\n"
               << "runout," << runout << ",m\n"
-              << "farthest_x," << farthest[0] << ",m\n"
-              << "farthest_y," << farthest[1] << ",m\n"
               << "elevation_drop," << drop << ",m\n"
               << "travel_angle," << (runout > 0. ? std::atan2(drop, runout) * 180. / M_PI : 0.)
               << ",degrees\n";

@@ -119,6 +119,9 @@ namespace slidewave
                                  "'"
                                    + options.target_crs + "' is not a projected CRS GDAL knows)");
               }
+            // With its EPSG code the CRS travels into every file written in it (GeoJSON
+            // keeps only an authority code).
+            OSRAutoIdentifyEPSG(target);
             char *wkt = nullptr;
             OSRExportToWkt(target, &wkt);
             OSRDestroySpatialReference(target);
@@ -145,6 +148,11 @@ namespace slidewave
                                                    "-tr",
                                                    res.c_str(),
                                                    res.c_str(),
+                                                   // Outside the source (the wedges a
+                                                   // reprojection opens at the corners):
+                                                   // no-data, refused under the domain.
+                                                   "-dstnodata",
+                                                   "-3.4e38",
                                                    nullptr};
             GDALWarpAppOptions       *warp_options
               = GDALWarpAppOptionsNew(const_cast<char **>(arguments.data()), nullptr);

@@ -110,7 +110,8 @@ main(int argc, char **argv)
   maps.write(".",
              solver,
              terrain::raster_extent("Raster file", "incline_utm.tif", {}).crs_wkt,
-             dealii::Point<2>(x0 + 10., y0 + 5.));
+             dealii::Point<2>(x0 + 10., y0 + 5.),
+             0.);
 
   double      transform[6];
   std::string wkt;

@@ -16,8 +16,9 @@ namespace slidewave
      * flow thickness, peak flow velocity, peak dynamic pressure rho v^2 and peak static pressure
      * rho g h (AvaFrame's pft, pfv, ppr and r.avaflow's hflow_max, vflow_max), the time of arrival
      * (first time the thickness exceeds the threshold) and the final deposit thickness. Written as
-     * GeoTIFF in the terrain's CRS (when the terrain is a raster) with a summary of areas and
-     * runout.
+     * GeoTIFF in the terrain's CRS (when the terrain is a raster) with the outlines of the
+     * affected and deposit areas (GeoJSON) and a summary of areas, runout (crown to toe) and
+     * travel angle.
      *
      * Each rank updates the nodes it owns into arrays over all nodes of the grid (so the
      * maps survive repartitioning); write() combines them (max, min, sum) and rank 0
@@ -34,13 +35,16 @@ namespace slidewave
       record(const DepthAveragedSolver &solver, double time);
 
       /** The maps and the summary into @p directory (collective; rank 0 writes);
-       *  @p crs_wkt: the CRS of the files (empty: none). @p release_centre: the centre of
-       *  mass of the release (for the runout and the travel angle). */
+       *  @p crs_wkt: the CRS of the files (empty: none). The runout and the travel angle
+       *  go from the crown, the highest node reached at @p start_time (the release), to
+       *  the toe, the affected node farthest from it; @p release_centre, the release's
+       *  centre of mass, stands in for the crown if no node was reached at the start. */
       void
       write(const std::string         &directory,
             const DepthAveragedSolver &solver,
             const std::string         &crs_wkt,
-            const dealii::Point<2>    &release_centre) const;
+            const dealii::Point<2>    &release_centre,
+            double                     start_time) const;
 
       /** The maps' names, in the order of the files. */
       static const std::vector<std::string> &

@@ -241,7 +241,7 @@ def summary_text(summary, statistics, scene, maps, pixel_area, threshold):
         if lost > 0:
             rows.append(("left the grid", f"{lost:.4g} m^3"))
     if "runout" in summary:
-        rows.append(("runout (from release c.m.)", f"{get('runout'):.0f} m"))
+        rows.append(("runout (crown to toe)", f"{get('runout'):.0f} m"))
     if "elevation_drop" in summary:
         rows.append(("elevation drop", f"{get('elevation_drop'):.0f} m"))
     if "travel_angle" in summary:

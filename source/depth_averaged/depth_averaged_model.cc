@@ -59,7 +59,7 @@ namespace slidewave
                                     const dealii::Tensor<2, 2> *cell_gradients,
                                     const double                dt) const
     {
-      const bool   stretch_domain = prm.shape_function == mpm::ShapeFunction::cpgimp;
+      const bool   follow_stretch = prm.shape_function == mpm::ShapeFunction::cpgimp;
       const double max_half       = 0.5 * prm.cell_size;
       const double mu = prm.viscosity, tau_y = prm.yield_stress;
       unsigned int k = 0;
@@ -84,13 +84,9 @@ namespace slidewave
           p[property::stress_xx] = sigma.xx;
           p[property::stress_yy] = sigma.yy;
           p[property::stress_xy] = sigma.xy;
-          if (stretch_domain)
-            {
-              p[property::domain_half_x]
-                = std::min(max_half, p[property::domain_half_x] * (1. + L[0][0] * dt));
-              p[property::domain_half_y]
-                = std::min(max_half, p[property::domain_half_y] * (1. + L[1][1] * dt));
-            }
+          if (follow_stretch)
+            mpm::stretch_domain(
+              p[property::domain_half_x], p[property::domain_half_y], L, dt, max_half);
         }
     }
 

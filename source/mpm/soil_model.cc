@@ -52,7 +52,7 @@ namespace slidewave
           mean_volumetric = volumetric_sum / volume_sum;
         }
 
-      const bool   stretch_domain = prm.shape_function == ShapeFunction::cpgimp;
+      const bool   follow_stretch = prm.shape_function == ShapeFunction::cpgimp;
       const double max_half       = 0.5 * prm.cell_size;
       unsigned int k              = 0;
       for (auto &particle : particles_in_cell)
@@ -85,15 +85,9 @@ namespace slidewave
           p[property::stress_zz]                 = stress[2][2];
           p[property::equivalent_plastic_strain] = plastic;
           p[property::volume] *= 1. + strain_increment[0][0] + strain_increment[1][1];
-          if (stretch_domain)
-            {
-              // cpGIMP: the domain follows the stretch of the point along the axes
-              // (kept within half a cell so it stays inside the patch of cells).
-              p[property::domain_half_x]
-                = std::min(max_half, p[property::domain_half_x] * (1. + L[0][0] * dt));
-              p[property::domain_half_y]
-                = std::min(max_half, p[property::domain_half_y] * (1. + L[1][1] * dt));
-            }
+          if (follow_stretch)
+            mpm::stretch_domain(
+              p[property::domain_half_x], p[property::domain_half_y], L, dt, max_half);
         }
     }
 

@@ -2,6 +2,7 @@
 #define slidewave_mpm_shape_functions_h
 
 #include <algorithm>
+#include <deal.II/base/tensor.h>
 
 namespace slidewave
 {
@@ -165,6 +166,21 @@ namespace slidewave
           value      = 0.;
           derivative = 0.;
         }
+    }
+    /**
+     * cpGIMP: a point's domain follows its stretch along the axes, half-lengths
+     * @p half_x, @p half_y times 1 + L_xx dt and 1 + L_yy dt, kept within @p max_half (half
+     * a cell) so that it stays inside the patch of cells.
+     */
+    inline void
+    stretch_domain(double                     &half_x,
+                   double                     &half_y,
+                   const dealii::Tensor<2, 2> &L,
+                   const double                dt,
+                   const double                max_half)
+    {
+      half_x = std::min(max_half, half_x * (1. + L[0][0] * dt));
+      half_y = std::min(max_half, half_y * (1. + L[1][1] * dt));
     }
   } // namespace mpm
 } // namespace slidewave

@@ -18,8 +18,9 @@ cell [m]   points/cell  columns    cells      steps to t = 0.6 s      in --quick
 (``--sizes CELL:N,...`` picks others, e.g. ``0.0625:2``: 409,600 columns on 768,000 cells.)
 The time step is fixed, dt = 0.048 s/m x cell size ('Depth averaged/Fixed time step';
 Courant number about 0.39 against sqrt(g h) of the deepest point, 6.7 m, at the start,
-where the scene's own is 0.5), and every size runs the same stretch of the flow, t = 0 to
-``--end-time`` (0.6 s), so that all make the same number of steps per cell crossed: the cost
+close to the scene's 'Courant number' of 0.4), and every size runs the same stretch of
+the flow, t = 0 to ``--end-time`` (0.6 s), so that all make the same number of steps per
+cell crossed: the cost
 of a step grows as the flow speeds up and the columns cross cells (the points are re-sorted
 into cells every step), so runs over different stretches would not compare.
 
@@ -60,19 +61,26 @@ Measurements
   largest over the ranks; ``B/point`` = the sum over the ranks / columns, so it includes
   the fixed overhead of a process (libraries, MPI: about 150-190 MB per rank) and the
   background grid; the marginal bytes per point between sizes (1 rank) is printed below;
-* ``bg``: cores busy with other work during the run (0 on an idle machine).
+* ``bg``: cores busy with other work during the run (0 on an idle machine): the machine's
+  busy CPU time (/proc/stat) less the run's own, per second. A third process hurts the
+  two-rank runs most (both ranks are bound to a core and wait for each other every step),
+  so the summary also gives the medians over the *quiet* runs alone (bg at most
+  ``--quiet-load``, 0.25 cores).
 
 Output: a line per run while it goes; then the medians per case, the summary (ceiling,
 two ranks against it, the later window, the issue's target of 5 M point-steps/s per core
 with Q1, memory per point) and markdown tables. CSV (``--csv``, default
-benchmarks/results/depth_averaged_throughput.csv): one row per run (``round`` = 1, 2, ...)
-and one row per case with the medians (``round`` = median). Exits with status 1 if a run
-failed.
+benchmarks/results/depth_averaged_throughput.csv): one row per run (``round`` = 1, 2, ...),
+one row per case with the medians (``round`` = median) and one with the medians of the
+quiet runs (``round`` = quiet median). ``--summary-only`` recomputes the medians and the
+summary from the per-run rows of the CSV (rows of further rounds may be appended to it).
+Exits with status 1 if a run failed.
 
 Usage:
-    /usr/bin/python3 benchmarks/depth_averaged_throughput.py            # about 15 minutes
+    /usr/bin/python3 benchmarks/depth_averaged_throughput.py            # about 20 minutes
     /usr/bin/python3 benchmarks/depth_averaged_throughput.py --quick    # about 3 minutes
     /usr/bin/python3 benchmarks/depth_averaged_throughput.py --sizes 0.125:4 --repeat 5
+    /usr/bin/python3 benchmarks/depth_averaged_throughput.py --summary-only
 """
 
 import argparse

@@ -62,7 +62,7 @@ wall time, log-log, one panel Ritter, one Stoker. ``--plot-only`` redraws the fi
 the CSV.
 
 Usage:
-    /usr/bin/python3 benchmarks/depth_averaged_work_precision.py            # about 6 minutes
+    /usr/bin/python3 benchmarks/depth_averaged_work_precision.py            # about 7 minutes
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --quick    # about 1 minute
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --lines all --repeat 1
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --plot-only
@@ -451,7 +451,6 @@ def main(argv=None):
             r = run_retrying(exe, args.prm, settings_for(q, l, c), q, args.wait)
             results[case].append(r)
             if round_ == 0:
-                shape, flip, update, ppd = parse_line(l)
                 row = {"problem": q, "line": l, "cell_size": c, "order": None}
                 row.update(r)
                 print(row_line(row), flush=True)

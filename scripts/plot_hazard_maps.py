@@ -312,7 +312,10 @@ def main():
 
     outline = read_outline(os.path.join(maps_dir, "affected_area.geojson"))
     deposit_outline = read_outline(os.path.join(maps_dir, "deposit_area.geojson"))
-    release = release_rings(scene)
+    # The release as the program took it (maps/release_area.geojson: a vector file's
+    # polygons already reprojected); older outputs: the scene's polygon or rectangle.
+    release = read_outline(os.path.join(maps_dir, "release_area.geojson")) \
+        or release_rings(scene)
     centre = None
     if "centroid_x" in statistics:
         centre = (statistics["centroid_x"][0], statistics["centroid_y"][0])

@@ -43,13 +43,6 @@ namespace slidewave
       property_layout.add_scalar("initial_y");
       property_layout.add_scalar("domain_half_x");
       property_layout.add_scalar("domain_half_y");
-
-      // The release's depth, or its surface, as a function of x and y (checked when the
-      // parameters were read).
-      initial_function = std::make_unique<dealii::FunctionParser<2>>(1);
-      initial_function->initialize("x,y",
-                                   prm.depth.empty() ? prm.surface : prm.depth,
-                                   {{"pi", M_PI}});
     }
 
 
@@ -102,20 +95,17 @@ namespace slidewave
 
 
     bool
-    DepthAveragedModel::fill_new_point(std::vector<double>    &properties,
-                                       const dealii::Point<2> &position,
-                                       const double            hx,
-                                       const double            hy) const
+    DepthAveragedModel::fill_new_point(std::vector<double>        &properties,
+                                       const dealii::Point<2>     &position,
+                                       const double                h,
+                                       const dealii::Tensor<1, 2> &v,
+                                       const double                hx,
+                                       const double                hy) const
     {
-      const double value = initial_function->value(position);
-      double       h     = prm.depth.empty() ? value - elevation.value(position) : value;
-      if (prm.depth_normal_to_slope)
-        h *= std::sqrt(1. + elevation.gradient(position).norm_square());
       if (!(h > 0.))
         return false;
       const unsigned int n                = prm.particles_per_direction;
       const double       area             = hx * hy / (n * n);
-      const auto         v                = prm.release.initial_velocity(position);
       properties[property::volume]        = h * area;               // Eq. 18
       properties[property::mass]          = prm.density * h * area; // Eq. 17
       properties[property::depth]         = h;

@@ -70,6 +70,15 @@ namespace slidewave
       prm.enter_subsection("Grid");
       {
         grid::GridExtent::declare_parameters(prm, "0.2");
+        prm.declare_entry("Extent",
+                          "corners",
+                          Selection("corners|terrain raster"),
+                          "'corners': the grid spans 'Lower left' to 'Upper right'. 'terrain "
+                          "raster': the largest grid of whole cells, its corners on multiples "
+                          "of 'Cell size', inside the terrain raster's data (after "
+                          "reprojection: inside the wedges of no-data a raster in degrees "
+                          "gets at its corners); the corners are then not used. The grid "
+                          "chosen is printed at the start.");
         for (const std::string side : {"Left", "Right", "Bottom", "Top"})
           prm.declare_entry(side + " side",
                             "wall",
@@ -175,13 +184,30 @@ namespace slidewave
 
       prm.enter_subsection("Release");
       {
-        mpm::MaterialRegion::declare_parameters(prm, /*with_material=*/false);
+        mpm::MaterialRegion::declare_parameters(prm,
+                                                /*with_material=*/false,
+                                                /*with_vector_file=*/true);
         prm.declare_entry("Depth",
                           "",
                           Anything(),
-                          "Initial depth h(x, y) [m] of the material in the region, a "
-                          "muparser expression; no point where it is 0 or less. Give "
-                          "either this or 'Surface'.");
+                          "Initial depth h(x, y) [m] of the material in the area, a muparser "
+                          "expression; no point where it is 0 or less. Give exactly one of "
+                          "'Depth', 'Surface', 'Depth raster' and 'Depth attribute'.");
+        prm.declare_entry("Depth raster",
+                          "",
+                          Anything(),
+                          "A raster GDAL reads (a path relative to the scene file's "
+                          "directory) of the initial depth [m] inside the area: each point "
+                          "takes the value of the pixel that holds it (r.avaflow's release "
+                          "height map). Reprojected to the terrain's CRS when it is in "
+                          "another one (nearest pixel); no-data under a point of the area is "
+                          "refused, 0 or less means no material.");
+        prm.declare_entry("Depth attribute",
+                          "",
+                          Anything(),
+                          "With 'Shape = vector file': the numeric field of each polygon that "
+                          "holds its depth [m] (AvaFrame's release files carry it as "
+                          "'thickness').");
         prm.declare_entry("Surface",
                           "",
                           Anything(),
@@ -264,8 +290,9 @@ namespace slidewave
 
       prm.enter_subsection("Grid");
       {
+        grid_from_raster = prm.get("Extent") == "terrain raster";
         grid::GridExtent extent;
-        extent.parse_parameters(prm, path + "/Grid");
+        extent.parse_parameters(prm, path + "/Grid", /*with_corners=*/!grid_from_raster);
         lower_left     = extent.lower_left;
         upper_right    = extent.upper_right;
         cell_size      = extent.cell_size;
@@ -303,6 +330,11 @@ namespace slidewave
         elevation_raster.clear();
         raster_options.assume_metric = prm.get("Raster without CRS") == "metric";
         raster_options.target_crs    = dealii::Utilities::trim(prm.get("Target CRS"));
+        if (grid_from_raster && prm.get("Source") != "raster")
+          throw InputError(path + "/Grid/Extent",
+                           "terrain raster",
+                           "'corners' unless 'Terrain/Source = raster' (here it is '"
+                             + prm.get("Source") + "')");
         if (prm.get("Source") == "raster")
           {
             elevation_raster = dealii::Utilities::trim(prm.get("Raster file"));
@@ -339,28 +371,44 @@ namespace slidewave
           throw InputError(release_path + "/Shape",
                            "none",
                            "'rectangle' or 'polygon': the area the material is released from");
-        const auto box = release.bounding_box();
-        for (unsigned int d = 0; d < 2; ++d)
-          if (box.first[d] < lower_left[d] - 1e-12 || box.second[d] > upper_right[d] + 1e-12)
-            throw InputError(release_path + "/Shape",
-                             prm.get("Shape"),
-                             "a release area inside the grid [" + to_string(lower_left[0]) + ", "
-                               + to_string(upper_right[0]) + "] x [" + to_string(lower_left[1])
-                               + ", " + to_string(upper_right[1]) + "]");
-        depth   = dealii::Utilities::trim(prm.get("Depth"));
-        surface = dealii::Utilities::trim(prm.get("Surface"));
-        if (depth.empty() == surface.empty())
+        // A vector file's polygons are checked when read (they need the terrain's CRS),
+        // all areas when the grid is fitted to the raster (by then).
+        if (release.vector_file.empty() && !grid_from_raster)
+          {
+            const auto box = release.bounding_box();
+            for (unsigned int d = 0; d < 2; ++d)
+              if (box.first[d] < lower_left[d] - 1e-12 || box.second[d] > upper_right[d] + 1e-12)
+                throw InputError(release_path + "/Shape",
+                                 prm.get("Shape"),
+                                 "a release area inside the grid [" + to_string(lower_left[0])
+                                   + ", " + to_string(upper_right[0]) + "] x ["
+                                   + to_string(lower_left[1]) + ", " + to_string(upper_right[1])
+                                   + "]");
+          }
+        depth           = dealii::Utilities::trim(prm.get("Depth"));
+        surface         = dealii::Utilities::trim(prm.get("Surface"));
+        depth_raster    = dealii::Utilities::trim(prm.get("Depth raster"));
+        depth_attribute = dealii::Utilities::trim(prm.get("Depth attribute"));
+        const unsigned int n_sources
+          = !depth.empty() + !surface.empty() + !depth_raster.empty() + !depth_attribute.empty();
+        if (n_sources != 1)
           throw InputError(release_path + "/Depth",
                            depth,
-                           "exactly one of 'Depth' and 'Surface' (here "
-                             + std::string(depth.empty() ? "neither is" : "both are") + " given)");
+                           "exactly one of 'Depth', 'Surface', 'Depth raster' and 'Depth "
+                           "attribute' (here "
+                             + std::string(n_sources == 0 ? "none is" : "several are") + " given)");
         if (!depth.empty())
           check_expression(release_path + "/Depth", depth);
-        else
+        if (!surface.empty())
           check_expression(release_path + "/Surface", surface);
+        if (!depth_attribute.empty() && release.vector_file.empty())
+          throw InputError(release_path + "/Depth attribute",
+                           depth_attribute,
+                           "an attribute only with 'Shape = vector file' (the field of its "
+                           "polygons that holds their depth)");
         particles_per_direction = prm.get_integer("Particles per direction");
         depth_normal_to_slope   = prm.get("Depth measured") == "normal to the slope";
-        if (depth_normal_to_slope && depth.empty())
+        if (depth_normal_to_slope && !surface.empty())
           throw InputError(release_path + "/Depth measured",
                            prm.get("Depth measured"),
                            "'vertically' when the release is given by its 'Surface'");

@@ -12,7 +12,9 @@
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/depth_averaged/depth_averaged_scene.h>
+#include <slidewave/grid/grid_extent.h>
 #include <slidewave/io/solver_checkpoints.h>
+#include <slidewave/terrain/raster_terrain.h>
 #include <slidewave/water/dam_break_solutions.h>
 #include <sstream>
 
@@ -141,6 +143,21 @@ namespace slidewave
         parameters.elevation_table = scene.resolve_path(parameters.elevation_table);
       if (!parameters.elevation_raster.empty())
         parameters.elevation_raster = scene.resolve_path(parameters.elevation_raster);
+      if (!parameters.release.vector_file.empty())
+        parameters.release.vector_file = scene.resolve_path(parameters.release.vector_file);
+      if (!parameters.depth_raster.empty())
+        parameters.depth_raster = scene.resolve_path(parameters.depth_raster);
+      if (parameters.grid_from_raster)
+        {
+          const auto       footprint = terrain::raster_footprint(section + "/Terrain/Raster file",
+                                                           parameters.elevation_raster,
+                                                           parameters.raster_options);
+          grid::GridExtent extent;
+          extent.cell_size = parameters.cell_size;
+          extent.fit_inside(footprint.lower, footprint.upper, section + "/Grid", "terrain raster");
+          parameters.lower_left  = extent.lower_left;
+          parameters.upper_right = extent.upper_right;
+        }
       write_grid     = prm.get_bool("Output grid");
       write_table    = prm.get_bool("Output point table");
       check_interval = prm.get_integer("Check interval");
@@ -234,10 +251,13 @@ namespace slidewave
       create_solver(timer_output);
       solver->setup(start_time);
       if (solver->particles().n_global_particles() == 0)
-        throw InputError(section + "/Release/" + (parameters.depth.empty() ? "Surface" : "Depth"),
-                         parameters.depth.empty() ? parameters.surface : parameters.depth,
-                         "a release with material: the depth is 0 or less at every point of "
-                         "the release area");
+        {
+          const auto [name, value] = solver->release_area().depth_source();
+          throw InputError(section + "/Release/" + name,
+                           value,
+                           "a release with material: the depth is 0 or less at every point of "
+                           "the release area");
+        }
     }
 
 
@@ -262,9 +282,15 @@ namespace slidewave
     std::string
     DepthAveragedScene::description() const
     {
+      const std::string fitted
+        = parameters.grid_from_raster ?
+            " (the grid [" + to_string(parameters.lower_left[0]) + ", "
+              + to_string(parameters.upper_right[0]) + "] x [" + to_string(parameters.lower_left[1])
+              + ", " + to_string(parameters.upper_right[1]) + "], inside the terrain raster)" :
+            std::string();
       return "Depth-averaged flow: " + std::to_string(solver->particles().n_global_particles())
              + " columns on " + std::to_string(solver->triangulation().n_global_active_cells())
-             + " cells; output in " + scene.output_directory;
+             + " cells" + fitted + "; output in " + scene.output_directory;
     }
 
 
@@ -548,14 +574,11 @@ namespace slidewave
       const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       if (maps)
         {
-          const std::string crs = parameters.elevation_raster.empty() ?
-                                    std::string() :
-                                    terrain::raster_extent("Depth averaged/Terrain/Raster file",
-                                                           parameters.elevation_raster,
-                                                           parameters.raster_options)
-                                      .crs_wkt;
-          maps->write(
-            scene.output_directory + "/maps", *solver, crs, release_centre, scene.start_time);
+          maps->write(scene.output_directory + "/maps",
+                      *solver,
+                      solver->crs(),
+                      release_centre,
+                      scene.start_time);
           if (is_writer && !scene.test_mode)
             std::printf("Hazard maps in %s/maps\n", scene.output_directory.c_str());
         }

@@ -74,7 +74,14 @@ namespace slidewave
 
     DepthAveragedSolver::DepthAveragedSolver(const DepthAveragedParameters &parameters)
       : prm(parameters)
+      , model_crs(prm.elevation_raster.empty() ?
+                    std::string() :
+                    terrain::raster_extent("Depth averaged/Terrain/Raster file",
+                                           prm.elevation_raster,
+                                           prm.raster_options)
+                      .crs_wkt)
       , elevation(sample_terrain(prm))
+      , release(prm, elevation, model_crs)
       , flow(prm, elevation)
       , grid(prm.lower_left, prm.upper_right, prm.cell_size, 0)
       , cloud(grid, flow.layout(), DepthAveragedModel::mass, prm.sides)
@@ -84,7 +91,6 @@ namespace slidewave
               /*with_depth=*/prm.depth_update == DepthUpdate::projection)
       , constraints(grid, nodes, prm.sides, no_walls)
       , patches(grid, nodes)
-      , release{prm.release}
       , kernels(flow, cloud, nodes, patches, constraints, kernel_settings(prm, flow))
     {
       // Rebuilt in this order after a grid change: the points, the nodes, then what is
@@ -117,16 +123,39 @@ namespace slidewave
       constraints.reinit();
       patches.reinit();
       cloud.initialize();
+      // A depth raster's no-data under the release: refused on every rank at once.
+      std::optional<dealii::Point<2>> no_data;
       cloud.create(prm.particles_per_direction,
-                   release,
-                   [this](std::vector<double>    &properties,
-                          const dealii::Point<2> &position,
-                          const unsigned int,
-                          const double hx,
-                          const double hy) {
-                     return flow.fill_new_point(properties, position, hx, hy);
+                   release.regions(),
+                   [this, &no_data](std::vector<double>    &properties,
+                                    const dealii::Point<2> &position,
+                                    const unsigned int      region,
+                                    const double            hx,
+                                    const double            hy) {
+                     const double h = release.depth(position, region);
+                     if (std::isnan(h))
+                       {
+                         no_data = position;
+                         return false;
+                       }
+                     return flow.fill_new_point(
+                       properties, position, h, release.velocity(position), hx, hy);
                    });
       weights_from_release = false;
+      const int rank_with_no_data
+        = dealii::Utilities::MPI::min(no_data ? static_cast<int>(
+                                        dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)) :
+                                                std::numeric_limits<int>::max(),
+                                      MPI_COMM_WORLD);
+      if (rank_with_no_data != std::numeric_limits<int>::max())
+        {
+          std::vector<double> where{no_data ? (*no_data)[0] : 0., no_data ? (*no_data)[1] : 0.};
+          MPI_Bcast(where.data(), 2, MPI_DOUBLE, rank_with_no_data, MPI_COMM_WORLD);
+          throw InputError("Depth averaged/Release/Depth raster",
+                           prm.depth_raster,
+                           "a depth at every point of the release area (the pixel holding ("
+                             + to_string(where[0]) + ", " + to_string(where[1]) + ") is no-data)");
+        }
       balance_load();
       cloud.sort();
     }
@@ -192,7 +221,7 @@ namespace slidewave
           if (weights_from_release)
             cloud.for_each_point_to_create(cell,
                                            prm.particles_per_direction,
-                                           release,
+                                           release.regions(),
                                            [&n](const auto &...) { ++n; });
           else
             n = cloud.particles().n_particles_in_cell(cell);
@@ -316,7 +345,7 @@ namespace slidewave
 
 
     DepthAveragedSolver::NodalState
-    DepthAveragedSolver::nodal_state() const
+    DepthAveragedSolver::nodal_state(const bool with_velocity) const
     {
       // sum_p V_p N_i(x_p) over the lumped area of node i (a quarter of each cell around
       // it): the depth the columns give the node; sum_p m_p v_p N_i / sum_p m_p N_i: their
@@ -325,10 +354,13 @@ namespace slidewave
       Vector volume, area, mass;
       volume.reinit(nodes.nodal_mass);
       area.reinit(nodes.nodal_mass);
-      mass.reinit(nodes.nodal_mass);
       NodalState state;
-      for (auto &v : state.velocity)
-        v.reinit(nodes.nodal_mass);
+      if (with_velocity)
+        {
+          mass.reinit(nodes.nodal_mass);
+          for (auto &v : state.velocity)
+            v.reinit(nodes.nodal_mass);
+        }
       const auto                                  &dofs = grid.dof_handler();
       std::vector<dealii::types::global_dof_index> indices(4);
       for (const auto &cell : dofs.active_cell_iterators())
@@ -347,38 +379,37 @@ namespace slidewave
                                                (1. - r[0]) * r[1],
                                                r[0] * r[1]};
                 for (unsigned int k = 0; k < 4; ++k)
-                  {
-                    volume[indices[k]] += w[k] * p[property::volume];
-                    mass[indices[k]] += w[k] * p[property::mass];
-                    state.velocity[0][indices[k]]
-                      += w[k] * p[property::mass] * p[property::velocity_x];
-                    state.velocity[1][indices[k]]
-                      += w[k] * p[property::mass] * p[property::velocity_y];
-                  }
+                  volume[indices[k]] += w[k] * p[property::volume];
+                if (with_velocity)
+                  for (unsigned int k = 0; k < 4; ++k)
+                    {
+                      mass[indices[k]] += w[k] * p[property::mass];
+                      state.velocity[0][indices[k]]
+                        += w[k] * p[property::mass] * p[property::velocity_x];
+                      state.velocity[1][indices[k]]
+                        += w[k] * p[property::mass] * p[property::velocity_y];
+                    }
               }
           }
-      for (Vector *v : {&volume, &area, &mass, &state.velocity[0], &state.velocity[1]})
-        v->compress(dealii::VectorOperation::add);
+      volume.compress(dealii::VectorOperation::add);
+      area.compress(dealii::VectorOperation::add);
+      if (with_velocity)
+        for (Vector *v : {&mass, &state.velocity[0], &state.velocity[1]})
+          v->compress(dealii::VectorOperation::add);
       for (unsigned int i = 0; i < volume.locally_owned_size(); ++i)
         {
           volume.local_element(i) /= area.local_element(i);
-          const double m = mass.local_element(i);
-          for (auto &v : state.velocity)
-            v.local_element(i) = m > 0. ? v.local_element(i) / m : 0.;
+          if (with_velocity)
+            for (auto &v : state.velocity)
+              v.local_element(i)
+                = mass.local_element(i) > 0. ? v.local_element(i) / mass.local_element(i) : 0.;
         }
       state.depth = std::move(volume);
       state.depth.update_ghost_values();
-      for (auto &v : state.velocity)
-        v.update_ghost_values();
+      if (with_velocity)
+        for (auto &v : state.velocity)
+          v.update_ghost_values();
       return state;
-    }
-
-
-
-    dealii::LinearAlgebra::distributed::Vector<double>
-    DepthAveragedSolver::nodal_depth() const
-    {
-      return nodal_state().depth;
     }
 
 

@@ -9,6 +9,7 @@
 #include <ogr_api.h>
 #include <ogr_srs_api.h>
 #include <slidewave/depth_averaged/hazard_maps.h>
+#include <slidewave/terrain/vector_polygons.h>
 
 namespace slidewave
 {
@@ -234,6 +235,15 @@ namespace slidewave
       drop = terrain.value(crown) - terrain.value(toe);
       write_outline(directory + "/affected_area.geojson", affected, nx, ny, transform, crs_wkt);
       write_outline(directory + "/deposit_area.geojson", deposit, nx, ny, transform, crs_wkt);
+      // The release as the model took it (a vector file's polygons reprojected), for
+      // plots and GIS.
+      std::vector<terrain::VectorPolygon> release;
+      for (const auto &area : solver.release_area().regions())
+        release.push_back({area.polygon, area.holes});
+      if (!terrain::write_polygons(directory + "/release_area.geojson", release, crs_wkt))
+        std::fprintf(stderr,
+                     "slidewave: could not write %s/release_area.geojson\n",
+                     directory.c_str());
 
       std::ofstream summary(directory + "/summary.csv");
       summary.precision(10);

@@ -10,16 +10,39 @@ namespace slidewave
   namespace mpm
   {
     void
-    MaterialRegion::declare_parameters(dealii::ParameterHandler &prm, const bool with_material)
+    MaterialRegion::declare_parameters(dealii::ParameterHandler &prm,
+                                       const bool                with_material,
+                                       const bool                with_vector_file)
     {
       using namespace dealii::Patterns;
       prm.declare_entry("Shape",
                         "none",
-                        Selection("none|rectangle|polygon"),
-                        "'none': this region is not used. 'rectangle': 'Rectangle'. "
-                        "'polygon': 'Polygon'. Regions may overlap: a point (placed at the "
-                        "sub-cell centres) belongs to the lowest-numbered region containing "
-                        "it, so a later region fills only what earlier ones left.");
+                        Selection(with_vector_file ? "none|rectangle|polygon|vector file" :
+                                                     "none|rectangle|polygon"),
+                        std::string("'none': this region is not used. 'rectangle': "
+                                    "'Rectangle'. 'polygon': 'Polygon'. ")
+                          + (with_vector_file ?
+                               "'vector file': the polygons (holes and multipolygons "
+                               "included) of 'Vector file'. " :
+                               "")
+                          + "Regions may overlap: a point (placed at the sub-cell centres) "
+                            "belongs to the lowest-numbered region containing it, so a later "
+                            "region fills only what earlier ones left.");
+      if (with_vector_file)
+        {
+          prm.declare_entry("Vector file",
+                            "",
+                            Anything(),
+                            "A vector file OGR reads (shapefile, GeoJSON, GeoPackage, ...; a "
+                            "path relative to the scene file's directory) whose polygon "
+                            "features are the area. Reprojected to the model's CRS (the "
+                            "terrain raster's) when both have one; without a CRS its "
+                            "coordinates are taken as the model's.");
+          prm.declare_entry("Layer",
+                            "",
+                            Anything(),
+                            "The layer of 'Vector file' to read; empty: its first layer.");
+        }
       prm.declare_entry("Rectangle", "0, 0, 1, 1", Anything(), "x_min, y_min, x_max, y_max [m].");
       prm.declare_entry("Polygon",
                         "",
@@ -45,10 +68,19 @@ namespace slidewave
                                      const std::string        &path,
                                      const bool                with_material)
     {
-      const std::string shape = prm.get("Shape");
+      shape = prm.get("Shape");
       if (shape == "none")
         return false;
-      if (shape == "rectangle")
+      if (shape == "vector file")
+        {
+          vector_file  = dealii::Utilities::trim(prm.get("Vector file"));
+          vector_layer = dealii::Utilities::trim(prm.get("Layer"));
+          if (vector_file.empty())
+            throw InputError(path + "/Vector file",
+                             "",
+                             "the name of a vector file OGR reads ('Shape = vector file')");
+        }
+      else if (shape == "rectangle")
         {
           const auto r = parse_number_list(path + "/Rectangle",
                                            prm.get("Rectangle"),
@@ -111,27 +143,52 @@ namespace slidewave
 
 
 
+    namespace
+    {
+      enum class Side
+      {
+        outside,
+        inside,
+        on_edge
+      };
+
+      /** Where @p p lies with respect to the closed ring @p ring (even-odd rule). */
+      Side
+      side_of(const std::vector<dealii::Point<2>> &ring, const dealii::Point<2> &p)
+      {
+        bool               inside = false;
+        const unsigned int n      = ring.size();
+        for (unsigned int i = 0, j = n - 1; i < n; j = i++)
+          {
+            const auto &a = ring[i];
+            const auto &b = ring[j];
+            // On the edge a-b?
+            const double cross = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+            if (std::abs(cross) <= 1e-12 * (a.distance(b) + 1.)
+                && p[0] >= std::min(a[0], b[0]) - 1e-12 && p[0] <= std::max(a[0], b[0]) + 1e-12
+                && p[1] >= std::min(a[1], b[1]) - 1e-12 && p[1] <= std::max(a[1], b[1]) + 1e-12)
+              return Side::on_edge;
+            if ((a[1] > p[1]) != (b[1] > p[1])
+                && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
+              inside = !inside;
+          }
+        return inside ? Side::inside : Side::outside;
+      }
+    } // namespace
+
+
+
     bool
     MaterialRegion::contains(const dealii::Point<2> &p) const
     {
-      // Even-odd rule; points on an edge count as inside.
-      bool               inside = false;
-      const unsigned int n      = polygon.size();
-      for (unsigned int i = 0, j = n - 1; i < n; j = i++)
-        {
-          const auto &a = polygon[i];
-          const auto &b = polygon[j];
-          // On the edge a-b?
-          const double cross = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
-          if (std::abs(cross) <= 1e-12 * (a.distance(b) + 1.)
-              && p[0] >= std::min(a[0], b[0]) - 1e-12 && p[0] <= std::max(a[0], b[0]) + 1e-12
-              && p[1] >= std::min(a[1], b[1]) - 1e-12 && p[1] <= std::max(a[1], b[1]) + 1e-12)
-            return true;
-          if ((a[1] > p[1]) != (b[1] > p[1])
-              && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
-            inside = !inside;
-        }
-      return inside;
+      // Points on an edge, the holes' included, count as inside.
+      const Side side = side_of(polygon, p);
+      if (side != Side::inside)
+        return side == Side::on_edge;
+      for (const auto &hole : holes)
+        if (side_of(hole, p) == Side::inside)
+          return false;
+      return true;
     }
 
 

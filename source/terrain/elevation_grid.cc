@@ -12,7 +12,8 @@ namespace slidewave
                                  const double            dy,
                                  const unsigned int      nx,
                                  const unsigned int      ny,
-                                 std::vector<double>     values)
+                                 std::vector<double>     values,
+                                 const bool              with_gaps)
       : origin(origin)
       , dx(dx)
       , dy(dy)
@@ -28,7 +29,7 @@ namespace slidewave
                                      + std::to_string(ny) + " nodes got " + std::to_string(z.size())
                                      + " values."));
       for (const double v : z)
-        AssertThrow(std::isfinite(v),
+        AssertThrow(std::isfinite(v) || (with_gaps && std::isnan(v)),
                     dealii::ExcMessage("An elevation grid holds a value that is not finite "
                                        "(no-data must be handled before the grid is made)."));
     }

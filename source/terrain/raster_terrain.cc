@@ -1,9 +1,11 @@
+#include <algorithm>
 #include <cmath>
 #include <cpl_conv.h>
 #include <cpl_error.h>
 #include <gdal.h>
 #include <gdal_utils.h>
 #include <gdalwarper.h>
+#include <limits>
 #include <ogr_srs_api.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/terrain/raster_terrain.h>
@@ -54,6 +56,73 @@ namespace slidewave
 
 
 
+      /**
+       * The WKT of the CRS a raster in @p crs must be warped to, or "" when it is read as
+       * it is: options.match_crs when given and different; else, for a raster in degrees,
+       * options.target_crs or the UTM zone of its @p centre (longitude, latitude).
+       */
+      std::string
+      target_crs(const OGRSpatialReferenceH crs,
+                 const dealii::Point<2>    &centre,
+                 const RasterOptions       &options,
+                 const std::string         &parameter,
+                 const std::string         &filename)
+      {
+        if (crs == nullptr)
+          return "";
+        OGRSpatialReferenceH target = OSRNewSpatialReference(nullptr);
+        OSRSetAxisMappingStrategy(target, OAMS_TRADITIONAL_GIS_ORDER);
+        bool ok = true;
+        if (!options.match_crs.empty())
+          {
+            ok = OSRSetFromUserInput(target, options.match_crs.c_str()) == OGRERR_NONE;
+            if (ok && OSRIsSame(target, crs))
+              {
+                OSRDestroySpatialReference(target);
+                return "";
+              }
+          }
+        else if (!OSRIsGeographic(crs))
+          {
+            OSRDestroySpatialReference(target);
+            return "";
+          }
+        else if (options.target_crs.empty())
+          {
+            // The UTM zone of the raster's centre.
+            OGRSpatialReferenceH geographic = OSRClone(crs);
+            OSRSetAxisMappingStrategy(geographic, OAMS_TRADITIONAL_GIS_ORDER);
+            const int zone = static_cast<int>(std::floor((centre[0] + 180.) / 6.)) + 1;
+            ok             = OSRCopyGeogCSFrom(target, geographic) == OGRERR_NONE
+                 && OSRSetUTM(target, zone, centre[1] >= 0. ? 1 : 0) == OGRERR_NONE;
+            OSRDestroySpatialReference(geographic);
+          }
+        else
+          ok = OSRSetFromUserInput(target, options.target_crs.c_str()) == OGRERR_NONE
+               && !OSRIsGeographic(target);
+        if (!ok)
+          {
+            OSRDestroySpatialReference(target);
+            throw InputError(parameter,
+                             filename,
+                             "a raster that can be reprojected to a metric CRS (the target '"
+                               + (options.match_crs.empty() ? options.target_crs :
+                                                              options.match_crs)
+                               + "' is not a projected CRS GDAL knows)");
+          }
+        // With its EPSG code the CRS travels into every file written in it (GeoJSON
+        // keeps only an authority code).
+        OSRAutoIdentifyEPSG(target);
+        char *wkt = nullptr;
+        OSRExportToWkt(target, &wkt);
+        OSRDestroySpatialReference(target);
+        const std::string result = wkt;
+        CPLFree(wkt);
+        return result;
+      }
+
+
+
       OpenRaster::OpenRaster(const std::string   &parameter,
                              const std::string   &filename,
                              const RasterOptions &options)
@@ -88,61 +157,30 @@ namespace slidewave
                            "a raster with a coordinate reference system (this one has none: "
                            "set 'Raster without CRS = metric' to take its coordinates as "
                            "metres)");
-        if (crs != nullptr && OSRIsGeographic(crs))
+        // x = longitude in GDAL's traditional order of a geotransform.
+        const dealii::Point<2> centre(gt[0] + 0.5 * gt[1] * GDALGetRasterXSize(source),
+                                      gt[3] + 0.5 * gt[5] * GDALGetRasterYSize(source));
+        const std::string      target_wkt = target_crs(crs, centre, options, parameter, filename);
+        if (!target_wkt.empty())
           {
-            // Degrees: reproject to a metric CRS with GDAL's warper, bilinearly.
-            OGRSpatialReferenceH target = OSRNewSpatialReference(nullptr);
-            OSRSetAxisMappingStrategy(target, OAMS_TRADITIONAL_GIS_ORDER);
-            bool ok = true;
-            if (options.target_crs.empty())
-              {
-                // The UTM zone of the raster's centre (x = longitude in GDAL's
-                // traditional order of a geotransform).
-                OGRSpatialReferenceH geographic = OSRClone(crs);
-                OSRSetAxisMappingStrategy(geographic, OAMS_TRADITIONAL_GIS_ORDER);
-                double    lon  = gt[0] + 0.5 * gt[1] * GDALGetRasterXSize(source);
-                double    lat  = gt[3] + 0.5 * gt[5] * GDALGetRasterYSize(source);
-                const int zone = static_cast<int>(std::floor((lon + 180.) / 6.)) + 1;
-                ok             = OSRCopyGeogCSFrom(target, geographic) == OGRERR_NONE
-                     && OSRSetUTM(target, zone, lat >= 0. ? 1 : 0) == OGRERR_NONE;
-                OSRDestroySpatialReference(geographic);
-              }
-            else
-              ok = OSRSetFromUserInput(target, options.target_crs.c_str()) == OGRERR_NONE
-                   && !OSRIsGeographic(target);
-            if (!ok)
-              {
-                OSRDestroySpatialReference(target);
-                throw InputError(parameter,
-                                 filename,
-                                 "a raster that can be reprojected to a metric CRS (the target "
-                                 "'"
-                                   + options.target_crs + "' is not a projected CRS GDAL knows)");
-              }
-            // With its EPSG code the CRS travels into every file written in it (GeoJSON
-            // keeps only an authority code).
-            OSRAutoIdentifyEPSG(target);
-            char *wkt = nullptr;
-            OSRExportToWkt(target, &wkt);
-            OSRDestroySpatialReference(target);
-            const std::string target_wkt = wkt;
-            CPLFree(wkt);
             // Pixels no larger than the source's smallest side in metres: bilinear
             // resampling onto a coarser grid averages (GDAL widens the kernel) and bends
             // even a field linear in degrees by 0.1 % of its relief; onto a finer one it
             // keeps it.
-            const double lat               = gt[3] + 0.5 * gt[5] * GDALGetRasterYSize(source);
-            const double metres_per_degree = M_PI / 180. * 6371000.;
-            const double resolution
-              = std::min(gt[1] * metres_per_degree * std::cos(lat * M_PI / 180.),
-                         std::abs(gt[5]) * metres_per_degree);
+            double resolution = std::min(gt[1], std::abs(gt[5]));
+            if (OSRIsGeographic(crs))
+              {
+                const double metres_per_degree = M_PI / 180. * 6371000.;
+                resolution = std::min(gt[1] * metres_per_degree * std::cos(centre[1] * M_PI / 180.),
+                                      std::abs(gt[5]) * metres_per_degree);
+              }
             const std::string         res       = std::to_string(resolution);
             std::vector<const char *> arguments = {"-of",
                                                    "MEM",
                                                    "-t_srs",
                                                    target_wkt.c_str(),
                                                    "-r",
-                                                   "bilinear",
+                                                   options.resampling.c_str(),
                                                    "-et",
                                                    "0",
                                                    "-tr",
@@ -211,6 +249,70 @@ namespace slidewave
 
 
 
+    RasterExtent
+    raster_footprint(const std::string   &parameter,
+                     const std::string   &filename,
+                     const RasterOptions &options)
+    {
+      const OpenRaster raster(parameter, filename, options);
+      const double    *gt   = raster.transform;
+      GDALDatasetH     data = raster.dataset();
+      const int        w = GDALGetRasterXSize(data), h = GDALGetRasterYSize(data);
+      // GDAL's mask of valid pixels (no-data, NaN and the warp's wedges are 0).
+      std::vector<unsigned char> valid(static_cast<std::size_t>(w) * h);
+      GDALRasterBandH            mask = GDALGetMaskBand(GDALGetRasterBand(data, 1));
+      if (GDALRasterIO(mask, GF_Read, 0, 0, w, h, valid.data(), w, h, GDT_Byte, 0, 0) != CE_None)
+        throw InputError(parameter, filename, "a raster whose band 1 GDAL can read");
+      std::vector<int> first(h, -1), last(h, -1);
+      for (int r = 0; r < h; ++r)
+        for (int c = 0; c < w; ++c)
+          if (valid[static_cast<std::size_t>(r) * w + c] != 0)
+            {
+              if (first[r] < 0)
+                first[r] = c;
+              last[r] = c;
+            }
+      // The rows r0..r1 and columns c0..c1 of largest area (between pixel centres).
+      double best    = -1.;
+      int    rows[2] = {0, 0}, columns[2] = {0, 0};
+      for (int r0 = 0; r0 < h; ++r0)
+        {
+          int c0 = first[r0], c1 = last[r0];
+          for (int r1 = r0; r1 < h && first[r1] >= 0 && c0 >= 0; ++r1)
+            {
+              c0 = std::max(c0, first[r1]);
+              c1 = std::min(c1, last[r1]);
+              if (c1 <= c0)
+                break;
+              const double area = (c1 - c0) * gt[1] * (r1 - r0) * std::abs(gt[5]);
+              if (area > best)
+                {
+                  best       = area;
+                  rows[0]    = r0;
+                  rows[1]    = r1;
+                  columns[0] = c0;
+                  columns[1] = c1;
+                }
+            }
+        }
+      if (!(best > 0.))
+        throw InputError(parameter,
+                         filename,
+                         "a raster with data over at least 2 x 2 pixels (this one has none)");
+      RasterExtent extent;
+      const double x0 = gt[0] + (columns[0] + 0.5) * gt[1], x1 = gt[0] + (columns[1] + 0.5) * gt[1];
+      const double y0 = gt[3] + (rows[0] + 0.5) * gt[5], y1 = gt[3] + (rows[1] + 0.5) * gt[5];
+      extent.lower   = dealii::Point<2>(std::min(x0, x1), std::min(y0, y1));
+      extent.upper   = dealii::Point<2>(std::max(x0, x1), std::max(y0, y1));
+      extent.pixel_x = std::abs(gt[1]);
+      extent.pixel_y = std::abs(gt[5]);
+      if (const char *wkt = GDALGetProjectionRef(data))
+        extent.crs_wkt = wkt;
+      return extent;
+    }
+
+
+
     ElevationGrid
     read_raster_terrain(const std::string      &parameter,
                         const std::string      &filename,
@@ -229,10 +331,10 @@ namespace slidewave
           const RasterExtent e = raster_extent(parameter, filename, options);
           std::ostringstream message;
           message.precision(12);
-          message << "a raster covering the domain [" << lower[0] << ", " << upper[0] << "] x ["
-                  << lower[1] << ", " << upper[1] << "] (its pixel centres span [" << e.lower[0]
-                  << ", " << e.upper[0] << "] x [" << e.lower[1] << ", " << e.upper[1]
-                  << "] in the coordinates the model uses)";
+          message << "a raster covering " << options.window_name << " [" << lower[0] << ", "
+                  << upper[0] << "] x [" << lower[1] << ", " << upper[1]
+                  << "] (its pixel centres span [" << e.lower[0] << ", " << e.upper[0] << "] x ["
+                  << e.lower[1] << ", " << e.upper[1] << "] in the coordinates the model uses)";
           throw InputError(parameter, filename, message.str());
         }
       const int           w = static_cast<int>(i1 - i0 + 1), h = static_cast<int>(j1 - j0 + 1);
@@ -258,12 +360,19 @@ namespace slidewave
           {
             const double v     = values[static_cast<std::size_t>(r) * w + c];
             const bool   empty = !std::isfinite(v) || (has_nodata && v == nodata);
+            if (empty && options.nodata_as_nan)
+              {
+                const int row                            = north_up ? h - 1 - r : r;
+                z[static_cast<std::size_t>(row) * w + c] = std::numeric_limits<double>::quiet_NaN();
+                continue;
+              }
             if (empty)
               {
                 std::ostringstream message;
                 message.precision(12);
-                message << "elevations everywhere under the domain (the pixel centred at ("
-                        << gt[0] + (i0 + c + 0.5) * gt[1] << ", " << gt[3] + (j0 + r + 0.5) * gt[5]
+                message << "elevations everywhere under " << options.window_name
+                        << " (the pixel centred at (" << gt[0] + (i0 + c + 0.5) * gt[1] << ", "
+                        << gt[3] + (j0 + r + 0.5) * gt[5]
                         << ") is no-data: crop the domain or fill the raster)";
                 throw InputError(parameter, filename, message.str());
               }
@@ -272,8 +381,13 @@ namespace slidewave
           }
       const double x_first = gt[0] + (i0 + 0.5) * gt[1];
       const double y_south = north_up ? gt[3] + (j1 + 0.5) * gt[5] : gt[3] + (j0 + 0.5) * gt[5];
-      return ElevationGrid(
-        dealii::Point<2>(x_first, y_south), std::abs(gt[1]), std::abs(gt[5]), w, h, std::move(z));
+      return ElevationGrid(dealii::Point<2>(x_first, y_south),
+                           std::abs(gt[1]),
+                           std::abs(gt[5]),
+                           w,
+                           h,
+                           std::move(z),
+                           options.nodata_as_nan);
     }
   } // namespace terrain
 } // namespace slidewave

@@ -8,7 +8,9 @@
 //    thickness is at least the initial depth (1 m, less 1e-12) and the arrival time is 0;
 //  - the deposit lies inside the affected area, the peak velocity is positive where the
 //    slab went and the arrival time is no-data (-9999) only outside it;
-//  - summary.csv has the affected area, the runout and a travel angle in (0, 90).
+//  - summary.csv has the affected area, the runout and a travel angle in (0, 90);
+//  - release_area.geojson read back is the release rectangle (to 1e-6 m: GeoJSON keeps
+//    15 significant digits, 1e-9 m at coordinates of 5e6 m).
 #include "raster_writer.h"
 #include "unit_check.h"
 
@@ -22,6 +24,7 @@
 #include <slidewave/depth_averaged/depth_averaged_parameters.h>
 #include <slidewave/depth_averaged/depth_averaged_solver.h>
 #include <slidewave/depth_averaged/hazard_maps.h>
+#include <slidewave/terrain/vector_polygons.h>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -181,5 +184,16 @@ main(int argc, char **argv)
               runout,
               angle);
   check(area > 100. && runout > 5. && angle > 0. && angle < 90., "summary: area, runout, angle");
+
+  // release_area.geojson: the release rectangle, read back in the terrain's CRS.
+  const auto release
+    = terrain::read_polygons("release",
+                             "release_area.geojson",
+                             "",
+                             terrain::raster_extent("Raster file", "incline_utm.tif", {}).crs_wkt);
+  check(release.size() == 1 && release[0].outer.size() == 4
+          && release[0].outer[0].distance(dealii::Point<2>(x0 + 5., y0)) < 1e-6
+          && release[0].outer[2].distance(dealii::Point<2>(x0 + 15., y0 + 10.)) < 1e-6,
+        "release_area.geojson: the release rectangle");
   return unit_check::finish();
 }

@@ -13,6 +13,10 @@
 //    field's to 1e-4 m, a millionth of its 100 m of relief (measured 8e-6 m: the warper's
 //    arithmetic; resampling a linear field bilinearly onto a finer grid keeps it, onto the
 //    warper's default, coarser pixels it bent it by 0.1 m);
+//  - the footprint (Grid/Extent = terrain raster) of such a raster 2.6 deg east of the
+//    zone's central meridian has data everywhere (read without a no-data refusal) and
+//    leaves out the corner wedges (0.85-0.95 of the bounding box, 0.88 expected); at the
+//    central meridian, and for a raster without no-data, it is the whole extent;
 //  - no-data: a pixel under the domain is refused, one outside the window is not read;
 //  - a missing file, a text file, a domain outside the raster: refused;
 //  - a depth-averaged run (a slab sliding on Z = -0.5 x, 20 steps) with the terrain from
@@ -42,25 +46,10 @@
 
 using namespace slidewave;
 using unit_check::check;
+using unit_check::refused;
 
 namespace
 {
-  template <typename Function>
-  bool
-  refused(const Function &f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const InputError &e)
-      {
-        std::printf("    (%s)\n", e.allowed.c_str());
-        return true;
-      }
-    return false;
-  }
-
   double
   z1(const double x, const double y)
   {
@@ -110,7 +99,9 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   GDALAllRegister();
-  const terrain::RasterOptions strict, metric{true, ""};
+  const terrain::RasterOptions strict;
+  terrain::RasterOptions       metric;
+  metric.assume_metric = true;
 
   std::printf("a plane in UTM 32N (GeoTIFF)\n");
   {
@@ -218,6 +209,46 @@ main(int argc, char **argv)
     OSRDestroySpatialReference(wgs);
     std::printf("  largest error against the field at 12 points: %.1e m\n", error);
     check(error < 1e-4, "elevations kept (1e-4 m)");
+
+    // The footprint ('Grid/Extent = terrain raster'): the same square of 0.2 deg moved to
+    // 11.5-11.7 E, 2.6 deg east of the zone's central meridian, where UTM's grid turns by
+    // about theta = 1.9 deg against the meridians: the warp's corner wedges (about 500 m,
+    // three pixels) are left out, data lie everywhere under the footprint (it is read
+    // without a no-data refusal), and it keeps what a square turned by theta leaves
+    // inside its bounding box, ((cos - sin) / (cos + sin))^2 = 0.88: between 0.85 and
+    // 0.95 (the turned "square" is not quite square, and the edges are pixels). At 9 E
+    // itself the square is not turned: its footprint is the whole box.
+    const double east[6] = {11.5, 0.002, 0., 45.6, 0., -0.002};
+    write_raster("GTiff", "degrees_east.tif", 100, 100, east, 4326, field);
+    const auto box       = terrain::raster_extent("Raster file", "degrees_east.tif", strict);
+    const auto footprint = terrain::raster_footprint("Raster file", "degrees_east.tif", strict);
+    const auto area      = [](const terrain::RasterExtent &e) {
+      return (e.upper[0] - e.lower[0]) * (e.upper[1] - e.lower[1]);
+    };
+    std::printf("  footprint: %.2f of the bounding box\n", area(footprint) / area(box));
+    bool read_whole = true;
+    try
+      {
+        terrain::read_raster_terrain(
+          "Raster file", "degrees_east.tif", footprint.lower, footprint.upper, strict);
+      }
+    catch (const InputError &e)
+      {
+        std::printf("    (%s)\n", e.allowed.c_str());
+        read_whole = false;
+      }
+    check(refused([&] {
+            terrain::read_raster_terrain(
+              "Raster file", "degrees_east.tif", box.lower, box.upper, strict);
+          }),
+          "the bounding box holds no-data (the wedges)");
+    check(read_whole && footprint.lower[0] >= box.lower[0] && footprint.upper[0] <= box.upper[0]
+            && footprint.lower[1] >= box.lower[1] && footprint.upper[1] <= box.upper[1]
+            && area(footprint) > 0.85 * area(box) && area(footprint) < 0.95 * area(box),
+          "the footprint: data everywhere under it, the wedges left out");
+    const auto centred = terrain::raster_footprint("Raster file", "degrees.tif", strict);
+    check(centred.lower == extent.lower && centred.upper == extent.upper,
+          "at the central meridian the footprint is the whole box");
   }
 
   std::printf("no-data, bad files\n");
@@ -235,6 +266,10 @@ main(int argc, char **argv)
           "no-data under the domain refused");
     const auto grid = terrain::read_raster_terrain(
       "Raster file", "hole.tif", dealii::Point<2>(2., 2.), dealii::Point<2>(12., 12.), strict);
+    const auto whole = terrain::raster_footprint("Raster file", "plane_utm.tif", strict);
+    const auto box   = terrain::raster_extent("Raster file", "plane_utm.tif", strict);
+    check(whole.lower == box.lower && whole.upper == box.upper,
+          "a raster without no-data: the footprint is its extent");
     check(grid.value(dealii::Point<2>(7., 7.)) == 7., "no-data outside the window not read");
     check(refused([&] {
             terrain::read_raster_terrain(

@@ -2,6 +2,7 @@
 #define slidewave_tests_unit_check_h
 
 #include <cstdio>
+#include <slidewave/core/input_error.h>
 
 // What every unit test prints for each of its checks, and the verdict at the end.
 namespace unit_check
@@ -17,6 +18,24 @@ namespace unit_check
     if (print)
       std::printf("  %s: %s\n", what, condition ? "yes" : "no");
     all_passed = all_passed && condition;
+  }
+
+  /** Whether @p f throws an InputError; prints what the error says is allowed. */
+  template <typename Function>
+  bool
+  refused(const Function &f)
+  {
+    try
+      {
+        f();
+      }
+    catch (const slidewave::InputError &e)
+      {
+        if (print)
+          std::printf("    (%s)\n", e.allowed.c_str());
+        return true;
+      }
+    return false;
   }
 
   /** Prints the verdict; the test's exit status. */

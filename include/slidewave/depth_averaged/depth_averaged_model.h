@@ -2,7 +2,6 @@
 #define slidewave_depth_averaged_depth_averaged_model_h
 
 #include <cmath>
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/particles/particle_handler.h>
@@ -188,13 +187,16 @@ namespace slidewave
       double
       empty_node_mass() const;
 
-      /** The properties of a new point at @p position in a cell hx x hy; false where the
-       *  release has no material (h <= 0). */
+      /** The properties of a new point at @p position in a cell hx x hy, of depth @p h
+       *  and velocity @p v (the release's there); false where there is no material
+       *  (h <= 0). */
       bool
-      fill_new_point(std::vector<double>    &properties,
-                     const dealii::Point<2> &position,
-                     double                  hx,
-                     double                  hy) const;
+      fill_new_point(std::vector<double>        &properties,
+                     const dealii::Point<2>     &position,
+                     double                      h,
+                     const dealii::Tensor<1, 2> &v,
+                     double                      hx,
+                     double                      hy) const;
 
       /** sigma^nabla of every point, for output (Eq. 14 or 41). */
       void
@@ -243,8 +245,6 @@ namespace slidewave
       const DepthAveragedParameters &prm;
       const terrain::ElevationGrid  &elevation;
       particles::PropertyLayout      property_layout;
-      /** The initial depth h(x, y) or surface h + Z(x, y) of the release. */
-      std::unique_ptr<dealii::FunctionParser<2>> initial_function;
 
       // Constants of the per-point terms, computed once.
       const double g, half_rho_g, rho_g;

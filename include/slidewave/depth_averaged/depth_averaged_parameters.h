@@ -50,6 +50,9 @@ namespace slidewave
       /** @name Grid (plan view) */
       dealii::Point<2> lower_left, upper_right;
       double           cell_size = 0.2;
+      /** 'Extent = terrain raster': the corners are not given but fitted inside the terrain
+       *  raster's footprint (by the scene, once the raster's path is resolved). */
+      bool grid_from_raster = false;
       /** Left, right, bottom, top (ids 0-3): roller = 'wall', free = 'open'. */
       std::array<grid::GridBoundary, 4> sides{{grid::GridBoundary::roller,
                                                grid::GridBoundary::roller,
@@ -87,9 +90,12 @@ namespace slidewave
       double terrain_spacing = 0.;
 
       /** @name Released material */
+      /** The area: a rectangle, a polygon or a vector file (read by Release). */
       mpm::MaterialRegion release;
-      /** Exactly one of them is set: the depth h(x, y), or the surface h + Z. */
-      std::string  depth, surface;
+      /** Exactly one of them is set: the depth h(x, y), the surface h + Z, a raster of the
+       *  depth (resolved by the scene) or the vector file's field holding each polygon's
+       *  depth. */
+      std::string  depth, surface, depth_raster, depth_attribute;
       unsigned int particles_per_direction = 2;
       /** 'Depth' is a thickness normal to the slope: h = T sqrt(1 + |grad Z|^2). */
       bool depth_normal_to_slope = false;

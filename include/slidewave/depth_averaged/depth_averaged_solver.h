@@ -9,6 +9,7 @@
 #include <deal.II/particles/particle_handler.h>
 #include <slidewave/depth_averaged/depth_averaged_model.h>
 #include <slidewave/depth_averaged/depth_averaged_parameters.h>
+#include <slidewave/depth_averaged/release.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/nodal_workspace.h>
@@ -99,12 +100,16 @@ namespace slidewave
         std::array<dealii::LinearAlgebra::distributed::Vector<double>, 2> velocity;
       };
 
+      /** @p with_velocity false: the depth only (the velocities stay empty). */
       NodalState
-      nodal_state() const;
+      nodal_state(bool with_velocity = true) const;
 
       /** Lumped nodal depth sum_p V_p N_i / sum of the cells' areas at node i, ghosted. */
       dealii::LinearAlgebra::distributed::Vector<double>
-      nodal_depth() const;
+      nodal_depth() const
+      {
+        return nodal_state(false).depth;
+      }
 
       /** The terrain at the nodes (ghosted). */
       dealii::LinearAlgebra::distributed::Vector<double>
@@ -157,6 +162,20 @@ namespace slidewave
         return nodes.velocity[component];
       }
 
+      /** The released material. */
+      const Release &
+      release_area() const
+      {
+        return release;
+      }
+
+      /** The model's CRS (the terrain raster's) as WKT; "" when the terrain has none. */
+      const std::string &
+      crs() const
+      {
+        return model_crs;
+      }
+
     private:
       unsigned int
       cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
@@ -165,8 +184,11 @@ namespace slidewave
       void
       balance_load();
 
-      DepthAveragedParameters                  prm;
+      DepthAveragedParameters prm;
+      /** The terrain raster's CRS as WKT; "" for an expression or a table. */
+      std::string                              model_crs;
       terrain::ElevationGrid                   elevation;
+      Release                                  release;
       DepthAveragedModel                       flow;
       grid::BackgroundGrid                     grid;
       particles::PointCloud                    cloud;
@@ -174,7 +196,6 @@ namespace slidewave
       std::vector<mpm::RigidWall>              no_walls;
       grid::VelocityConstraints                constraints;
       grid::CellPatches                        patches;
-      std::vector<mpm::MaterialRegion>         release;
       mpm::TransferKernels<DepthAveragedModel> kernels;
       dealii::TimerOutput                     *timer = nullptr;
 

@@ -21,12 +21,30 @@ namespace slidewave
       declare_parameters(dealii::ParameterHandler &prm,
                          const std::string        &default_cell_size = "0.05");
 
-      /** Reads and checks them; @p path names the subsection in errors. */
+      /** Reads and checks them; @p path names the subsection in errors. With
+       *  @p with_corners false only the cell size is read: the corners come later, from
+       *  fit_inside(). */
       void
-      parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+      parse_parameters(dealii::ParameterHandler &prm,
+                       const std::string        &path,
+                       bool                      with_corners = true);
+
+      /** The largest grid of whole cells, its corners on multiples of the cell size,
+       *  inside [@p lower, @p upper]; checked as the entries are. Errors name the entry
+       *  'Extent' of the subsection @p path, set to @p extent. */
+      void
+      fit_inside(const dealii::Point<2> &lower,
+                 const dealii::Point<2> &upper,
+                 const std::string      &path,
+                 const std::string      &extent);
 
       dealii::Point<2> lower_left, upper_right;
       double           cell_size = 0.05;
+
+    private:
+      /** At most 10^7 cells. */
+      void
+      check_size(const std::string &path) const;
     };
   } // namespace grid
 } // namespace slidewave

@@ -26,13 +26,15 @@ namespace slidewave
     class ElevationGrid
     {
     public:
-      /** Nodes x0 + i dx, y0 + j dy, i < nx, j < ny; @p values row by row (i fastest). */
+      /** Nodes x0 + i dx, y0 + j dy, i < nx, j < ny; @p values row by row (i fastest),
+       *  finite, or NaN for a gap (no data) when @p with_gaps. */
       ElevationGrid(const dealii::Point<2> &origin,
                     double                  dx,
                     double                  dy,
                     unsigned int            nx,
                     unsigned int            ny,
-                    std::vector<double>     values);
+                    std::vector<double>     values,
+                    bool                    with_gaps = false);
 
       /** Samples @p z at the nodes of an nx x ny grid spanning [lower, upper]. */
       static ElevationGrid
@@ -73,6 +75,16 @@ namespace slidewave
         g[0] = ((1. - fy) * (b - a) + fy * (d - c)) / dx;
         g[1] = ((1. - fx) * (c - a) + fx * (d - b)) / dy;
         return (1. - fy) * ((1. - fx) * a + fx * b) + fy * ((1. - fx) * c + fx * d);
+      }
+
+      /** The value at the node nearest to @p p: a raster's value over the pixel that holds
+       *  @p p, when the nodes are its pixel centres. */
+      double
+      nearest_value(const dealii::Point<2> &p) const
+      {
+        double             fx, fy;
+        const unsigned int k = locate(p, fx, fy);
+        return z[k + (fx >= 0.5 ? 1 : 0) + (fy >= 0.5 ? nx : 0)];
       }
 
       bool

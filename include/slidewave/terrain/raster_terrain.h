@@ -19,6 +19,18 @@ namespace slidewave
        *  reads it ("EPSG:32632", a WKT or PROJ string); empty: the UTM zone of the
        *  raster's centre. */
       std::string target_crs;
+      /** The CRS (WKT) the raster must be in, whatever it is: a raster in another CRS is
+       *  reprojected to it (a second raster over a terrain, e.g. a release thickness);
+       *  empty: only rasters in degrees are reprojected, as above. */
+      std::string match_crs;
+      /** GDAL's resampling when reprojecting: "bilinear" (elevations) or "near" (values
+       *  that hold for a whole pixel, e.g. a thickness). */
+      std::string resampling = "bilinear";
+      /** No-data pixels are read as NaN instead of refused (the caller decides where
+       *  they matter). */
+      bool nodata_as_nan = false;
+      /** What the window read is, in messages. */
+      std::string window_name = "the domain";
     };
 
     /**
@@ -32,7 +44,8 @@ namespace slidewave
      *
      * Every failure is an InputError naming @p parameter, the file and what is wrong: a
      * missing file or one that is not a raster, a rotated raster, no CRS where one is
-     * needed, a domain outside the raster, no-data under the domain.
+     * needed, a domain outside the raster, no-data under the domain (unless
+     * RasterOptions::nodata_as_nan).
      */
     ElevationGrid
     read_raster_terrain(const std::string      &parameter,
@@ -55,6 +68,19 @@ namespace slidewave
     raster_extent(const std::string   &parameter,
                   const std::string   &filename,
                   const RasterOptions &options);
+
+    /**
+     * The largest rectangle of pixel centres under which the raster holds data, in the
+     * coordinates read_raster_terrain() uses (its lower and upper corners; pixel sizes and
+     * CRS as raster_extent()): the whole extent of a raster without no-data; for one
+     * reprojected from degrees, the part inside the wedges of no-data the warp leaves at
+     * its corners. Each row's data are taken from its first to its last valid pixel (holes
+     * inside a row are not looked for: read_raster_terrain() refuses them under a domain).
+     */
+    RasterExtent
+    raster_footprint(const std::string   &parameter,
+                     const std::string   &filename,
+                     const RasterOptions &options);
   } // namespace terrain
 } // namespace slidewave
 

@@ -1,0 +1,152 @@
+#include <algorithm>
+#include <cmath>
+#include <slidewave/core/input_error.h>
+#include <slidewave/depth_averaged/release.h>
+#include <slidewave/terrain/raster_terrain.h>
+#include <slidewave/terrain/vector_polygons.h>
+#include <sstream>
+
+namespace slidewave
+{
+  namespace depth_averaged
+  {
+    namespace
+    {
+      const std::string path = "Depth averaged/Release";
+
+      /** "[x0, x1] x [y0, y1]" */
+      std::string
+      box_text(const dealii::Point<2> &lower, const dealii::Point<2> &upper)
+      {
+        std::ostringstream text;
+        text.precision(12);
+        text << "[" << lower[0] << ", " << upper[0] << "] x [" << lower[1] << ", " << upper[1]
+             << "]";
+        return text.str();
+      }
+    } // namespace
+
+
+
+    Release::Release(const DepthAveragedParameters &parameters,
+                     const terrain::ElevationGrid  &terrain,
+                     const std::string             &model_crs_wkt)
+      : prm(parameters)
+      , elevation(terrain)
+    {
+      if (prm.release.vector_file.empty())
+        {
+          areas.push_back(prm.release);
+          const auto [lower, upper] = prm.release.bounding_box();
+          for (unsigned int d = 0; d < 2; ++d)
+            if (lower[d] < prm.lower_left[d] - 1e-12 || upper[d] > prm.upper_right[d] + 1e-12)
+              throw InputError(path + "/Shape",
+                               prm.release.shape,
+                               "a release area inside the grid "
+                                 + box_text(prm.lower_left, prm.upper_right) + " (it spans "
+                                 + box_text(lower, upper) + ")");
+        }
+      else
+        for (auto &polygon : terrain::read_polygons(path + "/Vector file",
+                                                    prm.release.vector_file,
+                                                    prm.release.vector_layer,
+                                                    model_crs_wkt,
+                                                    prm.depth_attribute))
+          {
+            mpm::MaterialRegion area = prm.release;
+            area.vector_file.clear();
+            area.polygon              = std::move(polygon.outer);
+            area.holes                = std::move(polygon.holes);
+            const auto [lower, upper] = area.bounding_box();
+            for (unsigned int d = 0; d < 2; ++d)
+              if (lower[d] < prm.lower_left[d] - 1e-12 || upper[d] > prm.upper_right[d] + 1e-12)
+                throw InputError(path + "/Vector file",
+                                 prm.release.vector_file,
+                                 "release polygons inside the grid "
+                                   + box_text(prm.lower_left, prm.upper_right) + " (polygon "
+                                   + std::to_string(areas.size() + 1) + " spans "
+                                   + box_text(lower, upper) + " in the model's coordinates)");
+            if (!prm.depth_attribute.empty() && !std::isfinite(polygon.attribute))
+              throw InputError(path + "/Depth attribute",
+                               prm.depth_attribute,
+                               "a field with a finite value on every polygon");
+            areas.push_back(std::move(area));
+            area_depth.push_back(polygon.attribute);
+          }
+
+      if (!prm.depth_raster.empty())
+        {
+          // The window under the areas; a raster that stops within half a pixel of it
+          // still covers it (the pixel holding a point is what is read).
+          dealii::Point<2> lower = areas.front().bounding_box().first, upper = lower;
+          for (const auto &area : areas)
+            {
+              const auto [l, u] = area.bounding_box();
+              for (unsigned int d = 0; d < 2; ++d)
+                {
+                  lower[d] = std::min(lower[d], l[d]);
+                  upper[d] = std::max(upper[d], u[d]);
+                }
+            }
+          terrain::RasterOptions options = prm.raster_options;
+          options.match_crs              = model_crs_wkt;
+          options.resampling             = "near";
+          options.nodata_as_nan          = true;
+          options.window_name            = "the release area";
+          const auto extent
+            = terrain::raster_extent(path + "/Depth raster", prm.depth_raster, options);
+          const double half[2] = {0.5 * extent.pixel_x, 0.5 * extent.pixel_y};
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              if (lower[d] < extent.lower[d] && lower[d] >= extent.lower[d] - half[d])
+                lower[d] = extent.lower[d];
+              if (upper[d] > extent.upper[d] && upper[d] <= extent.upper[d] + half[d])
+                upper[d] = extent.upper[d];
+            }
+          depth_raster = std::make_unique<terrain::ElevationGrid>(terrain::read_raster_terrain(
+            path + "/Depth raster", prm.depth_raster, lower, upper, options));
+        }
+      else if (prm.depth_attribute.empty())
+        {
+          depth_function = std::make_unique<dealii::FunctionParser<2>>(1);
+          depth_function->initialize("x,y",
+                                     prm.depth.empty() ? prm.surface : prm.depth,
+                                     {{"pi", M_PI}});
+        }
+    }
+
+
+
+    double
+    Release::depth(const dealii::Point<2> &p, const unsigned int region) const
+    {
+      double h;
+      if (depth_raster != nullptr)
+        h = depth_raster->nearest_value(p);
+      else if (!prm.depth_attribute.empty())
+        h = area_depth[region];
+      else
+        {
+          const double value = depth_function->value(p);
+          h                  = prm.surface.empty() ? value : value - elevation.value(p);
+        }
+      if (prm.depth_normal_to_slope)
+        h *= std::sqrt(1. + elevation.gradient(p).norm_square());
+      return h;
+    }
+
+
+
+    std::pair<std::string, std::string>
+    Release::depth_source() const
+    {
+      if (!prm.depth_raster.empty())
+        return {"Depth raster", prm.depth_raster};
+      if (!prm.depth_attribute.empty())
+        return {"Depth attribute", prm.depth_attribute};
+      if (!prm.surface.empty())
+        return {"Surface", prm.surface};
+      return {"Depth", prm.depth};
+    }
+  } // namespace depth_averaged
+} // namespace slidewave

@@ -1,0 +1,252 @@
+#include <cmath>
+#include <cpl_conv.h>
+#include <cpl_error.h>
+#include <gdal_priv.h>
+#include <memory>
+#include <ogr_geometry.h>
+#include <ogr_spatialref.h>
+#include <ogrsf_frmts.h>
+#include <slidewave/core/input_error.h>
+#include <slidewave/terrain/vector_polygons.h>
+
+namespace slidewave
+{
+  namespace terrain
+  {
+    namespace
+    {
+      /** The vertices of @p ring without its repeated closing vertex. */
+      std::vector<dealii::Point<2>>
+      ring_points(const OGRLinearRing &ring)
+      {
+        std::vector<dealii::Point<2>> points;
+        const int                     n = ring.getNumPoints();
+        for (int i = 0; i < n; ++i)
+          points.emplace_back(ring.getX(i), ring.getY(i));
+        if (points.size() > 1 && points.front() == points.back())
+          points.pop_back();
+        return points;
+      }
+
+
+
+      /** Appends the polygon @p polygon to @p out; refuses a degenerate ring. */
+      void
+      append_polygon(const OGRPolygon           &polygon,
+                     const double                attribute,
+                     const std::string          &parameter,
+                     const std::string          &filename,
+                     const GIntBig               fid,
+                     std::vector<VectorPolygon> &out)
+      {
+        if (polygon.IsEmpty())
+          return;
+        VectorPolygon result;
+        result.outer = ring_points(*polygon.getExteriorRing());
+        for (int i = 0; i < polygon.getNumInteriorRings(); ++i)
+          result.holes.push_back(ring_points(*polygon.getInteriorRing(i)));
+        if (result.outer.size() < 3)
+          throw InputError(parameter,
+                           filename,
+                           "polygons with at least three vertices (feature " + std::to_string(fid)
+                             + "'s outer ring has " + std::to_string(result.outer.size()) + ")");
+        result.attribute = attribute;
+        out.push_back(std::move(result));
+      }
+
+
+
+      /** The transformation from @p layer's CRS to the model's, or none (nullptr) when
+       *  the coordinates are taken as they are. */
+      std::unique_ptr<OGRCoordinateTransformation>
+      to_model(OGRLayer          &layer,
+               const std::string &model_crs_wkt,
+               const std::string &parameter,
+               const std::string &filename)
+      {
+        const OGRSpatialReference *own = layer.GetSpatialRef();
+        if (own == nullptr)
+          return nullptr;
+        if (model_crs_wkt.empty())
+          {
+            if (own->IsGeographic())
+              throw InputError(parameter,
+                               filename,
+                               "polygons in metres: this file is in degrees ("
+                                 + std::string(own->GetName() != nullptr ? own->GetName() :
+                                                                           "a geographic CRS")
+                                 + ") and the terrain has no CRS to reproject it to (use a "
+                                   "raster terrain, or a file in the model's metric "
+                                   "coordinates)");
+            return nullptr;
+          }
+        OGRSpatialReference source(*own), target;
+        source.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+        target.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+        if (target.importFromWkt(model_crs_wkt.c_str()) != OGRERR_NONE)
+          throw InputError(parameter, filename, "a model CRS OGR reads (the terrain's)");
+        if (source.IsSame(&target))
+          return nullptr;
+        CPLPushErrorHandler(CPLQuietErrorHandler);
+        std::unique_ptr<OGRCoordinateTransformation> transformation(
+          OGRCreateCoordinateTransformation(&source, &target));
+        CPLPopErrorHandler();
+        if (transformation == nullptr)
+          throw InputError(parameter,
+                           filename,
+                           "polygons in a CRS OGR can transform to the terrain's (it cannot "
+                           "transform from this file's)");
+        return transformation;
+      }
+    } // namespace
+
+
+
+    std::vector<VectorPolygon>
+    read_polygons(const std::string &parameter,
+                  const std::string &filename,
+                  const std::string &layer_name,
+                  const std::string &model_crs_wkt,
+                  const std::string &attribute)
+    {
+      GDALAllRegister();
+      CPLPushErrorHandler(CPLQuietErrorHandler);
+      GDALDatasetUniquePtr dataset(
+        GDALDataset::Open(filename.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+      CPLPopErrorHandler();
+      if (dataset == nullptr || dataset->GetLayerCount() == 0)
+        throw InputError(parameter,
+                         filename,
+                         "a vector file OGR reads (shapefile, GeoJSON, GeoPackage, ...): it "
+                         "does not exist or holds no vector layer");
+      OGRLayer *layer
+        = layer_name.empty() ? dataset->GetLayer(0) : dataset->GetLayerByName(layer_name.c_str());
+      if (layer == nullptr)
+        {
+          std::string names;
+          for (int i = 0; i < dataset->GetLayerCount(); ++i)
+            names += std::string(i > 0 ? ", '" : "'") + dataset->GetLayer(i)->GetName() + "'";
+          throw InputError(parameter,
+                           filename,
+                           "a file with the layer '" + layer_name + "' (its layers: " + names
+                             + ")");
+        }
+      const auto transformation = to_model(*layer, model_crs_wkt, parameter, filename);
+
+      int field = -1;
+      if (!attribute.empty())
+        {
+          field = layer->GetLayerDefn()->GetFieldIndex(attribute.c_str());
+          if (field < 0)
+            throw InputError(parameter,
+                             filename,
+                             "a layer with the numeric field '" + attribute
+                               + "' (this one has "
+                                 "no such field)");
+          const OGRFieldType type = layer->GetLayerDefn()->GetFieldDefn(field)->GetType();
+          if (type != OFTReal && type != OFTInteger && type != OFTInteger64)
+            throw InputError(parameter,
+                             filename,
+                             "a layer whose field '" + attribute + "' is numeric");
+        }
+
+      std::vector<VectorPolygon> polygons;
+      layer->ResetReading();
+      for (const auto &feature : *layer)
+        {
+          const OGRGeometry *geometry = feature->GetGeometryRef();
+          if (geometry == nullptr || geometry->IsEmpty())
+            continue;
+          const GIntBig fid   = feature->GetFID();
+          double        value = std::numeric_limits<double>::quiet_NaN();
+          if (field >= 0)
+            {
+              if (!feature->IsFieldSetAndNotNull(field))
+                throw InputError(parameter,
+                                 filename,
+                                 "a value of '" + attribute + "' on every polygon (feature "
+                                   + std::to_string(fid) + " has none)");
+              value = feature->GetFieldAsDouble(field);
+            }
+          // Curves become line strings; then the model's coordinates.
+          std::unique_ptr<OGRGeometry> linear(geometry->getLinearGeometry());
+          if (transformation != nullptr && linear->transform(transformation.get()) != OGRERR_NONE)
+            throw InputError(parameter,
+                             filename,
+                             "polygons OGR can transform to the terrain's CRS (feature "
+                               + std::to_string(fid) + " failed)");
+          switch (wkbFlatten(linear->getGeometryType()))
+            {
+              case wkbPolygon:
+                append_polygon(*linear->toPolygon(), value, parameter, filename, fid, polygons);
+                break;
+              case wkbMultiPolygon:
+                for (const OGRPolygon *part : *linear->toMultiPolygon())
+                  append_polygon(*part, value, parameter, filename, fid, polygons);
+                break;
+              default:
+                throw InputError(parameter,
+                                 filename,
+                                 "a file of polygons (feature " + std::to_string(fid) + " is a "
+                                   + OGRGeometryTypeToName(linear->getGeometryType()) + ")");
+            }
+        }
+      if (polygons.empty())
+        throw InputError(parameter, filename, "a layer with at least one polygon (it has none)");
+      return polygons;
+    }
+
+
+
+    bool
+    write_polygons(const std::string                &filename,
+                   const std::vector<VectorPolygon> &polygons,
+                   const std::string                &crs_wkt)
+    {
+      GDALAllRegister();
+      GDALDriver *driver = GetGDALDriverManager()->GetDriverByName("GeoJSON");
+      if (driver == nullptr)
+        return false;
+      GDALDatasetUniquePtr dataset(driver->Create(filename.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+      if (dataset == nullptr)
+        return false;
+      OGRSpatialReference crs;
+      if (!crs_wkt.empty())
+        {
+          crs.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+          crs.importFromWkt(crs_wkt.c_str());
+        }
+      OGRLayer *layer
+        = dataset->CreateLayer("release", crs_wkt.empty() ? nullptr : &crs, wkbPolygon, nullptr);
+      if (layer == nullptr)
+        return false;
+      OGRFieldDefn field("value", OFTReal);
+      layer->CreateField(&field);
+      const auto ring_of = [](const std::vector<dealii::Point<2>> &points) {
+        OGRLinearRing ring;
+        for (const auto &p : points)
+          ring.addPoint(p[0], p[1]);
+        ring.closeRings();
+        return ring;
+      };
+      for (const auto &polygon : polygons)
+        {
+          OGRPolygon    geometry;
+          OGRLinearRing outer = ring_of(polygon.outer);
+          geometry.addRing(&outer);
+          for (const auto &hole : polygon.holes)
+            {
+              OGRLinearRing inner = ring_of(hole);
+              geometry.addRing(&inner);
+            }
+          OGRFeature feature(layer->GetLayerDefn());
+          if (std::isfinite(polygon.attribute))
+            feature.SetField("value", polygon.attribute);
+          feature.SetGeometry(&geometry);
+          if (layer->CreateFeature(&feature) != OGRERR_NONE)
+            return false;
+        }
+      return true;
+    }
+  } // namespace terrain
+} // namespace slidewave

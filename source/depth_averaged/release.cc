@@ -14,6 +14,15 @@ namespace slidewave
     {
       const std::string path = "Depth averaged/Release";
 
+      /** Refuses @p area unless it lies inside the grid: an InputError naming @p parameter
+       *  = @p value, what is allowed and @p which ("it", "polygon 2"). */
+      void
+      check_inside_grid(const mpm::MaterialRegion     &area,
+                        const DepthAveragedParameters &prm,
+                        const std::string             &parameter,
+                        const std::string             &value,
+                        const std::string             &which);
+
       /** "[x0, x1] x [y0, y1]" */
       std::string
       box_text(const dealii::Point<2> &lower, const dealii::Point<2> &upper)
@@ -23,6 +32,26 @@ namespace slidewave
         text << "[" << lower[0] << ", " << upper[0] << "] x [" << lower[1] << ", " << upper[1]
              << "]";
         return text.str();
+      }
+
+
+
+      void
+      check_inside_grid(const mpm::MaterialRegion     &area,
+                        const DepthAveragedParameters &prm,
+                        const std::string             &parameter,
+                        const std::string             &value,
+                        const std::string             &which)
+      {
+        const auto [lower, upper] = area.bounding_box();
+        for (unsigned int d = 0; d < 2; ++d)
+          if (lower[d] < prm.lower_left[d] - 1e-12 || upper[d] > prm.upper_right[d] + 1e-12)
+            throw InputError(parameter,
+                             value,
+                             "a release area inside the grid "
+                               + box_text(prm.lower_left, prm.upper_right) + " (" + which
+                               + " spans " + box_text(lower, upper)
+                               + " in the model's coordinates)");
       }
     } // namespace
 
@@ -37,14 +66,7 @@ namespace slidewave
       if (prm.release.vector_file.empty())
         {
           areas.push_back(prm.release);
-          const auto [lower, upper] = prm.release.bounding_box();
-          for (unsigned int d = 0; d < 2; ++d)
-            if (lower[d] < prm.lower_left[d] - 1e-12 || upper[d] > prm.upper_right[d] + 1e-12)
-              throw InputError(path + "/Shape",
-                               prm.release.shape,
-                               "a release area inside the grid "
-                                 + box_text(prm.lower_left, prm.upper_right) + " (it spans "
-                                 + box_text(lower, upper) + ")");
+          check_inside_grid(prm.release, prm, path + "/Shape", prm.release.shape, "it");
         }
       else
         for (auto &polygon : terrain::read_polygons(path + "/Vector file",
@@ -55,17 +77,13 @@ namespace slidewave
           {
             mpm::MaterialRegion area = prm.release;
             area.vector_file.clear();
-            area.polygon              = std::move(polygon.outer);
-            area.holes                = std::move(polygon.holes);
-            const auto [lower, upper] = area.bounding_box();
-            for (unsigned int d = 0; d < 2; ++d)
-              if (lower[d] < prm.lower_left[d] - 1e-12 || upper[d] > prm.upper_right[d] + 1e-12)
-                throw InputError(path + "/Vector file",
-                                 prm.release.vector_file,
-                                 "release polygons inside the grid "
-                                   + box_text(prm.lower_left, prm.upper_right) + " (polygon "
-                                   + std::to_string(areas.size() + 1) + " spans "
-                                   + box_text(lower, upper) + " in the model's coordinates)");
+            area.polygon = std::move(polygon.outer);
+            area.holes   = std::move(polygon.holes);
+            check_inside_grid(area,
+                              prm,
+                              path + "/Vector file",
+                              prm.release.vector_file,
+                              "polygon " + std::to_string(areas.size() + 1));
             if (!prm.depth_attribute.empty() && !std::isfinite(polygon.attribute))
               throw InputError(path + "/Depth attribute",
                                prm.depth_attribute,

@@ -11,6 +11,7 @@
 //  - summary.csv has the affected area, the runout and a travel angle in (0, 90);
 //  - release_area.geojson read back is the release rectangle (to 1e-6 m: GeoJSON keeps
 //    15 significant digits, 1e-9 m at coordinates of 5e6 m).
+#include "depth_averaged_input.h"
 #include "raster_writer.h"
 #include "unit_check.h"
 
@@ -87,15 +88,7 @@ main(int argc, char **argv)
         << "    set Depth = 1\n"
         << "  end\n"
         << "end\n";
-  dealii::ParameterHandler prm;
-  prm.enter_subsection("Depth averaged");
-  depth_averaged::DepthAveragedParameters::declare_parameters(prm);
-  prm.leave_subsection();
-  prm.parse_input_from_string(input.str());
-  depth_averaged::DepthAveragedParameters parameters;
-  prm.enter_subsection("Depth averaged");
-  parameters.parse_parameters(prm, "Depth averaged");
-  prm.leave_subsection();
+  const auto parameters = depth_averaged_parameters(input.str());
 
   depth_averaged::DepthAveragedSolver solver(parameters);
   solver.setup(0.);

@@ -14,6 +14,7 @@
 //    release gets 3 m: mass rho x 3 m x 1e4 m^2 to 1e-12 relative (a sum of 1600 equal
 //    columns), maximum depth 3 m exactly;
 //  - the same with one no-data pixel under the release: refused, on every rank at once.
+#include "depth_averaged_input.h"
 #include "raster_writer.h"
 #include "unit_check.h"
 
@@ -71,32 +72,25 @@ namespace
   depth_averaged::DepthAveragedModel::Integrals
   release_integrals(const std::string &depth_raster)
   {
-    dealii::ParameterHandler prm;
-    prm.enter_subsection("Depth averaged");
-    depth_averaged::DepthAveragedParameters::declare_parameters(prm);
-    prm.leave_subsection();
-    prm.parse_input_from_string("subsection Depth averaged\n"
-                                "  subsection Grid\n"
-                                "    set Lower left = 500000, 4000000\n"
-                                "    set Upper right = 500200, 4000200\n"
-                                "    set Cell size = 5\n"
-                                "  end\n"
-                                "  subsection Terrain\n"
-                                "    set Source = raster\n"
-                                "    set Raster file = terrain_utm.tif\n"
-                                "  end\n"
-                                "  subsection Release\n"
-                                "    set Shape = rectangle\n"
-                                "    set Rectangle = 500050, 4000050, 500150, 4000150\n"
-                                "    set Depth raster = "
-                                + depth_raster
-                                + "\n"
+    const auto parameters
+      = depth_averaged_parameters("subsection Depth averaged\n"
+                                  "  subsection Grid\n"
+                                  "    set Lower left = 500000, 4000000\n"
+                                  "    set Upper right = 500200, 4000200\n"
+                                  "    set Cell size = 5\n"
                                   "  end\n"
-                                  "end\n");
-    depth_averaged::DepthAveragedParameters parameters;
-    prm.enter_subsection("Depth averaged");
-    parameters.parse_parameters(prm, "Depth averaged");
-    prm.leave_subsection();
+                                  "  subsection Terrain\n"
+                                  "    set Source = raster\n"
+                                  "    set Raster file = terrain_utm.tif\n"
+                                  "  end\n"
+                                  "  subsection Release\n"
+                                  "    set Shape = rectangle\n"
+                                  "    set Rectangle = 500050, 4000050, 500150, 4000150\n"
+                                  "    set Depth raster = "
+                                  + depth_raster
+                                  + "\n"
+                                    "  end\n"
+                                    "end\n");
     depth_averaged::DepthAveragedSolver solver(parameters);
     solver.setup(0.);
     return solver.model().integrals(solver.point_cloud());
@@ -141,23 +135,8 @@ main(int argc, char **argv)
       const auto   three  = [](double, double) { return 3.; };
       write_raster("GTiff", "depth_degrees.tif", 80, 80, geo, 4326, three);
       // The same with a hole at the release's centre (500100, 4000100).
-      double lon = -87., lat = 36.;
-      {
-        OGRSpatialReferenceH utm = OSRNewSpatialReference(nullptr),
-                             wgs = OSRNewSpatialReference(nullptr);
-        OSRImportFromEPSG(utm, 32616);
-        OSRImportFromEPSG(wgs, 4326);
-        OSRSetAxisMappingStrategy(utm, OAMS_TRADITIONAL_GIS_ORDER);
-        OSRSetAxisMappingStrategy(wgs, OAMS_TRADITIONAL_GIS_ORDER);
-        OGRCoordinateTransformationH t = OCTNewCoordinateTransformation(utm, wgs);
-        double                       x = 500100., y = 4000100.;
-        OCTTransform(t, 1, &x, &y, nullptr);
-        lon = x;
-        lat = y;
-        OCTDestroyCoordinateTransformation(t);
-        OSRDestroySpatialReference(utm);
-        OSRDestroySpatialReference(wgs);
-      }
+      double lon = 500100., lat = 4000100.;
+      to_degrees(32616, lon, lat);
       write_raster("GTiff", "depth_hole.tif", 80, 80, geo, 4326, three, lon, lat);
     }
   MPI_Barrier(MPI_COMM_WORLD);

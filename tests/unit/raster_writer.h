@@ -61,6 +61,23 @@ namespace
     GDALClose(data);
   }
 
+  /** Takes @p x, @p y from metres in the CRS EPSG:@p epsg to longitude and latitude
+   *  (WGS 84, EPSG:4326), in place. */
+  void
+  to_degrees(const int epsg, double &x, double &y)
+  {
+    OGRSpatialReferenceH from = OSRNewSpatialReference(nullptr);
+    OGRSpatialReferenceH to   = OSRNewSpatialReference(nullptr);
+    OSRImportFromEPSG(from, epsg);
+    OSRImportFromEPSG(to, 4326);
+    OSRSetAxisMappingStrategy(from, OAMS_TRADITIONAL_GIS_ORDER);
+    OSRSetAxisMappingStrategy(to, OAMS_TRADITIONAL_GIS_ORDER);
+    OGRCoordinateTransformationH transformation = OCTNewCoordinateTransformation(from, to);
+    OCTTransform(transformation, 1, &x, &y, nullptr);
+    OCTDestroyCoordinateTransformation(transformation);
+    OSRDestroySpatialReference(from);
+    OSRDestroySpatialReference(to);
+  }
 } // namespace
 
 #endif

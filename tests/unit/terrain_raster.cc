@@ -22,6 +22,7 @@
 //  - a depth-averaged run (a slab sliding on Z = -0.5 x, 20 steps) with the terrain from
 //    the ESRI grid gives the same mass, momentum and energy as with the expression, to
 //    1e-12 relative (both terrains are the exact plane).
+#include "depth_averaged_input.h"
 #include "raster_writer.h"
 #include "unit_check.h"
 
@@ -60,32 +61,24 @@ namespace
   depth_averaged::DepthAveragedModel::Integrals
   slab_run(const std::string &terrain)
   {
-    dealii::ParameterHandler prm;
-    prm.enter_subsection("Depth averaged");
-    depth_averaged::DepthAveragedParameters::declare_parameters(prm);
-    prm.leave_subsection();
-    prm.parse_input_from_string("subsection Depth averaged\n"
-                                "  subsection Grid\n"
-                                "    set Upper right = 40, 4\n"
-                                "    set Cell size = 0.5\n"
-                                "  end\n"
-                                "  subsection Basal friction\n"
-                                "    set Model = Voellmy\n"
-                                "    set Friction angle = 10\n"
-                                "  end\n"
-                                "  subsection Terrain\n"
-                                + terrain
-                                + "  end\n"
-                                  "  subsection Release\n"
-                                  "    set Shape = rectangle\n"
-                                  "    set Rectangle = 5, 0, 15, 4\n"
-                                  "    set Depth = 1\n"
-                                  "  end\n"
-                                  "end\n");
-    depth_averaged::DepthAveragedParameters parameters;
-    prm.enter_subsection("Depth averaged");
-    parameters.parse_parameters(prm, "Depth averaged");
-    prm.leave_subsection();
+    const auto parameters = depth_averaged_parameters("subsection Depth averaged\n"
+                                                      "  subsection Grid\n"
+                                                      "    set Upper right = 40, 4\n"
+                                                      "    set Cell size = 0.5\n"
+                                                      "  end\n"
+                                                      "  subsection Basal friction\n"
+                                                      "    set Model = Voellmy\n"
+                                                      "    set Friction angle = 10\n"
+                                                      "  end\n"
+                                                      "  subsection Terrain\n"
+                                                      + terrain
+                                                      + "  end\n"
+                                                        "  subsection Release\n"
+                                                        "    set Shape = rectangle\n"
+                                                        "    set Rectangle = 5, 0, 15, 4\n"
+                                                        "    set Depth = 1\n"
+                                                        "  end\n"
+                                                        "end\n");
     depth_averaged::DepthAveragedSolver solver(parameters);
     solver.setup(0.);
     for (unsigned int step = 0; step < 20; ++step)
@@ -184,29 +177,19 @@ main(int argc, char **argv)
       check(zone == 32 && north, "reprojected to UTM zone 32N, the zone of its centre");
     }
     // Points inside, in UTM coordinates, taken back to degrees for the exact field.
-    OGRSpatialReferenceH utm = OSRNewSpatialReference(nullptr),
-                         wgs = OSRNewSpatialReference(nullptr);
-    OSRImportFromEPSG(utm, 32632);
-    OSRImportFromEPSG(wgs, 4326);
-    OSRSetAxisMappingStrategy(utm, OAMS_TRADITIONAL_GIS_ORDER);
-    OSRSetAxisMappingStrategy(wgs, OAMS_TRADITIONAL_GIS_ORDER);
-    OGRCoordinateTransformationH back   = OCTNewCoordinateTransformation(utm, wgs);
-    const dealii::Point<2>       centre = 0.5 * (extent.lower + extent.upper);
-    const dealii::Tensor<1, 2>   half({2000., 2000.});
-    const auto                   grid = terrain::read_raster_terrain(
+    const dealii::Point<2>     centre = 0.5 * (extent.lower + extent.upper);
+    const dealii::Tensor<1, 2> half({2000., 2000.});
+    const auto                 grid = terrain::read_raster_terrain(
       "Raster file", "degrees.tif", centre - half, centre + half, strict);
     double error = 0.;
     for (const double fx : {-0.9, -0.3, 0.2, 0.8})
       for (const double fy : {-0.7, 0.1, 0.6})
         {
-          double       x = centre[0] + fx * 2000., y = centre[1] + fy * 2000., z = 0.;
+          double       x = centre[0] + fx * 2000., y = centre[1] + fy * 2000.;
           const double value = grid.value(dealii::Point<2>(x, y));
-          OCTTransform(back, 1, &x, &y, &z);
+          to_degrees(32632, x, y);
           error = std::max(error, std::abs(value - field(x, y)));
         }
-    OCTDestroyCoordinateTransformation(back);
-    OSRDestroySpatialReference(utm);
-    OSRDestroySpatialReference(wgs);
     std::printf("  largest error against the field at 12 points: %.1e m\n", error);
     check(error < 1e-4, "elevations kept (1e-4 m)");
 

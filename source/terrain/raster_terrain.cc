@@ -222,6 +222,23 @@ namespace slidewave
         const long last  = static_cast<long>(std::ceil(hi - 1e-9));
         return {first, std::max(last, first + 1)};
       }
+      /** The extent of the centres of the pixels [@p c0, @p c1] x [@p r0, @p r1] of
+       *  @p raster (columns, rows), its pixel sizes and CRS. */
+      RasterExtent
+      pixel_block(const OpenRaster &raster, const int c0, const int c1, const int r0, const int r1)
+      {
+        const double *gt = raster.transform;
+        RasterExtent  extent;
+        const double  x0 = gt[0] + (c0 + 0.5) * gt[1], x1 = gt[0] + (c1 + 0.5) * gt[1];
+        const double  y0 = gt[3] + (r0 + 0.5) * gt[5], y1 = gt[3] + (r1 + 0.5) * gt[5];
+        extent.lower   = dealii::Point<2>(std::min(x0, x1), std::min(y0, y1));
+        extent.upper   = dealii::Point<2>(std::max(x0, x1), std::max(y0, y1));
+        extent.pixel_x = std::abs(gt[1]);
+        extent.pixel_y = std::abs(gt[5]);
+        if (const char *wkt = GDALGetProjectionRef(raster.dataset()))
+          extent.crs_wkt = wkt;
+        return extent;
+      }
     } // namespace
 
 
@@ -232,19 +249,9 @@ namespace slidewave
                   const RasterOptions &options)
     {
       const OpenRaster raster(parameter, filename, options);
-      const double    *gt = raster.transform;
       const int        nx = GDALGetRasterXSize(raster.dataset());
       const int        ny = GDALGetRasterYSize(raster.dataset());
-      RasterExtent     extent;
-      const double     x0 = gt[0] + 0.5 * gt[1], x1 = gt[0] + (nx - 0.5) * gt[1];
-      const double     y0 = gt[3] + 0.5 * gt[5], y1 = gt[3] + (ny - 0.5) * gt[5];
-      extent.lower   = dealii::Point<2>(std::min(x0, x1), std::min(y0, y1));
-      extent.upper   = dealii::Point<2>(std::max(x0, x1), std::max(y0, y1));
-      extent.pixel_x = std::abs(gt[1]);
-      extent.pixel_y = std::abs(gt[5]);
-      if (const char *wkt = GDALGetProjectionRef(raster.dataset()))
-        extent.crs_wkt = wkt;
-      return extent;
+      return pixel_block(raster, 0, nx - 1, 0, ny - 1);
     }
 
 
@@ -299,16 +306,7 @@ namespace slidewave
         throw InputError(parameter,
                          filename,
                          "a raster with data over at least 2 x 2 pixels (this one has none)");
-      RasterExtent extent;
-      const double x0 = gt[0] + (columns[0] + 0.5) * gt[1], x1 = gt[0] + (columns[1] + 0.5) * gt[1];
-      const double y0 = gt[3] + (rows[0] + 0.5) * gt[5], y1 = gt[3] + (rows[1] + 0.5) * gt[5];
-      extent.lower   = dealii::Point<2>(std::min(x0, x1), std::min(y0, y1));
-      extent.upper   = dealii::Point<2>(std::max(x0, x1), std::max(y0, y1));
-      extent.pixel_x = std::abs(gt[1]);
-      extent.pixel_y = std::abs(gt[5]);
-      if (const char *wkt = GDALGetProjectionRef(data))
-        extent.crs_wkt = wkt;
-      return extent;
+      return pixel_block(raster, columns[0], columns[1], rows[0], rows[1]);
     }
 
 

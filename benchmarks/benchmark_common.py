@@ -2,6 +2,7 @@
 import csv
 import os
 import sys
+import threading
 import time
 
 
@@ -68,3 +69,30 @@ def wait_until_idle(max_wait_s, threshold=0.25):
         time.sleep(4.0)
         load = background_load(1.0)
     return load
+
+
+def on_both_cores(run):
+    """``run(core)`` for cores 0 and 1 at the same time (two threads); their results."""
+    results = [None, None]
+
+    def one(core):
+        results[core] = run(core)
+
+    threads = [threading.Thread(target=one, args=(core,)) for core in (0, 1)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    return results
+
+
+def retry_once(run, exe, wait_s):
+    """``run()``, once more after a failure that is not the program's own (the executable
+    being rebuilt meanwhile: missing, busy, or no timer table): a result whose "status"
+    is neither "ok" nor a message of slidewave's."""
+    r = run()
+    if r["status"] != "ok" and "slidewave:" not in r["status"]:
+        find_executable(exe, wait_s)
+        time.sleep(2)
+        r = run()
+    return r

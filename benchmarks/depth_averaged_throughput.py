@@ -93,12 +93,11 @@ import statistics
 import subprocess
 import sys
 import tempfile
-import threading
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from benchmark_common import (cpu_busy_seconds, find_executable, fmt,  # noqa: E402
-                              wait_until_idle, write_csv)
+                              on_both_cores, retry_once, wait_until_idle, write_csv)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -241,17 +240,8 @@ def run_case(exe, prm, case, mpirun):
     second summed, advance = the slower copy's, memory summed."""
     busy0, own0, t0 = cpu_busy_seconds(), children_cpu_seconds(), time.perf_counter()
     if case["kind"] == "ceiling":
-        parts = [None, None]
-
-        def one(core):
-            parts[core] = run_once(exe, prm, case["settings"], 1, mpirun,
-                                   prefix=("taskset", "-c", str(core)))
-
-        threads = [threading.Thread(target=one, args=(core,)) for core in (0, 1)]
-        for t in threads:
-            t.start()
-        for t in threads:
-            t.join()
+        parts = on_both_cores(lambda core: run_once(exe, prm, case["settings"], 1, mpirun,
+                                                     prefix=("taskset", "-c", str(core))))
         bad = [p for p in parts if p["status"] != "ok"]
         r = dict(bad[0] if bad else parts[0])
         if not bad:
@@ -281,12 +271,7 @@ def run_case(exe, prm, case, mpirun):
 def run_retrying(exe, prm, case, mpirun, wait_s):
     """run_case, once more after a failure that is not the program's own (the executable
     being rebuilt meanwhile)."""
-    r = run_case(exe, prm, case, mpirun)
-    if r["status"] != "ok" and "slidewave:" not in r["status"]:
-        find_executable(exe, wait_s)
-        time.sleep(2)
-        r = run_case(exe, prm, case, mpirun)
-    return r
+    return retry_once(lambda: run_case(exe, prm, case, mpirun), exe, wait_s)
 
 
 # --------------------------------------------------------------------------------------

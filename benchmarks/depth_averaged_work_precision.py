@@ -84,7 +84,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from benchmark_common import (cpu_busy_seconds, find_executable, fmt,  # noqa: E402
-                              wait_until_idle, write_csv)
+                              retry_once, wait_until_idle, write_csv)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -206,12 +206,7 @@ def run_slidewave(exe, prm, settings, problem):
 def run_retrying(exe, prm, settings, problem, wait_s):
     """run_slidewave, run again once after a failure that is not the program's own
     (the executable being rebuilt meanwhile: missing, busy, or no timer table)."""
-    r = run_slidewave(exe, prm, settings, problem)
-    if r["status"] != "ok" and "slidewave:" not in r["status"]:
-        find_executable(exe, wait_s)
-        time.sleep(2)
-        r = run_slidewave(exe, prm, settings, problem)
-    return r
+    return retry_once(lambda: run_slidewave(exe, prm, settings, problem), exe, wait_s)
 
 
 # --------------------------------------------------------------------------------------

@@ -42,11 +42,10 @@ import csv
 import os
 import statistics
 import sys
-import threading
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from benchmark_common import (cpu_steal_seconds, find_executable, fmt,  # noqa: E402
-                              wait_until_idle, write_csv)
+                              on_both_cores, wait_until_idle, write_csv)
 from mpm_throughput import column_collapse_settings, run_slidewave  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -76,18 +75,8 @@ def summarize_timeline(rows):
 
 def side_by_side(exe, prm, settings, mpirun):
     """Two one-rank runs started together, on cores 0 and 1. Returns the two results."""
-    results = [None, None]
-
-    def one(core):
-        results[core] = run_slidewave(exe, prm, settings, 1, mpirun,
-                                      prefix=("taskset", "-c", str(core)))
-
-    threads = [threading.Thread(target=one, args=(core,)) for core in (0, 1)]
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join()
-    return results
+    return on_both_cores(lambda core: run_slidewave(exe, prm, settings, 1, mpirun,
+                                                    prefix=("taskset", "-c", str(core))))
 
 
 def pair_figures(rows):

@@ -307,7 +307,8 @@ namespace slidewave
     CoupledScene::create_soil(dealii::TimerOutput &timer_output)
     {
       timer = &timer_output;
-      soil  = std::make_unique<mpm::MaterialPointSolver>(soil_parameters);
+      grid  = mpm::MaterialPointSolver::make_grid(soil_parameters);
+      soil  = std::make_unique<mpm::MaterialPointSolver>(soil_parameters, *grid);
       soil->set_timer(timer_output);
     }
 

@@ -6,7 +6,7 @@
 #include <slidewave/core/rank_reports.h>
 #include <slidewave/depth_averaged/bingham.h>
 #include <slidewave/depth_averaged/depth_averaged_model.h>
-#include <slidewave/mpm/transfer_kernels.templates.h>
+#include <slidewave/mpm/particle_engine.templates.h>
 #include <sstream>
 
 namespace slidewave
@@ -28,6 +28,7 @@ namespace slidewave
                         parameters.density * parameters.gravity / parameters.turbulence :
                         0.)
       , atmospheric_pressure(parameters.atmospheric_pressure)
+      , project_depth(parameters.depth_update == DepthUpdate::projection)
     {
       property_layout.add_scalar("mass");
       property_layout.add_scalar("volume");
@@ -288,7 +289,22 @@ namespace slidewave
         }
       return rank_reports::of_largest(fastest, out.str());
     }
+
+
+
+    void
+    DepthAveragedModel::finish_nodal_fields(grid::NodalWorkspace &nodes) const
+    {
+      if (!project_depth)
+        return;
+      auto &depth = nodes.fields[depth_field];
+      for (const unsigned int i : nodes.active())
+        depth.local_element(i) *= nodes.inverse_area[i];
+      depth.update_ghost_values();
+      nodes.interpolate_hanging_nodes(depth);
+    }
   } // namespace depth_averaged
 
   template class mpm::TransferKernels<depth_averaged::DepthAveragedModel>;
+  template class mpm::ParticleEngine<depth_averaged::DepthAveragedModel>;
 } // namespace slidewave

@@ -236,7 +236,8 @@ namespace slidewave
     DepthAveragedScene::create_solver(dealii::TimerOutput &timer_output)
     {
       timer  = &timer_output;
-      solver = std::make_unique<DepthAveragedSolver>(parameters);
+      grid   = DepthAveragedSolver::make_grid(parameters);
+      solver = std::make_unique<DepthAveragedSolver>(parameters, *grid);
       solver->set_timer(timer_output);
       if (write_maps)
         maps = std::make_unique<HazardMaps>(parameters, map_threshold);
@@ -415,6 +416,7 @@ namespace slidewave
                                           dam_position,
                                           parameters.gravity);
       const auto                    depth = solver->nodal_depth();
+      const auto                    area  = grid->lumped_nodal_area();
       const auto                   &dofs  = solver->dof_handler();
       std::vector<bool>             done(depth.locally_owned_size(), false);
       double                        sums[2] = {0., 0.};
@@ -430,15 +432,10 @@ namespace slidewave
               if (done[local])
                 continue;
               done[local] = true;
-              // The node's lumped area: a quarter cell per cell around it (half, a quarter
-              // on the sides and corners).
+              // The node's lumped area: a quarter of each cell around it.
               const dealii::Point<2> &x = cell->vertex(v);
-              double                  a = parameters.cell_size * parameters.cell_size;
-              for (unsigned int d = 0; d < 2; ++d)
-                if (std::abs(x[d] - parameters.lower_left[d]) < 1e-9 * parameters.cell_size
-                    || std::abs(x[d] - parameters.upper_right[d]) < 1e-9 * parameters.cell_size)
-                  a *= 0.5;
-              double h, u;
+              const double            a = area.local_element(local);
+              double                  h, u;
               exact.evaluate(x[0], t, h, u);
               sums[0] += std::abs(depth[i] - h) * a;
               sums[1] += h * a;

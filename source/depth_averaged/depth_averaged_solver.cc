@@ -56,23 +56,25 @@ namespace slidewave
           n(1));
       }
 
-      mpm::TransferKernels<DepthAveragedModel>::Settings
-      kernel_settings(const DepthAveragedParameters &prm, const DepthAveragedModel &model)
+      mpm::ParticleEngine<DepthAveragedModel>::Settings
+      engine_settings(const DepthAveragedParameters &prm)
       {
-        mpm::TransferKernels<DepthAveragedModel>::Settings settings;
+        mpm::ParticleEngine<DepthAveragedModel>::Settings settings;
         settings.shape_function  = prm.shape_function;
         settings.flip_fraction   = prm.flip_fraction;
-        settings.empty_node_mass = model.empty_node_mass();
+        settings.particle_weight = prm.balancing.particle_weight;
+        settings.timer_name      = "depth averaged step";
         return settings;
       }
 
-      /** Partitioning weight of a cell without points (deal.II's convention). */
-      constexpr unsigned int cell_base_weight = 1000;
+      /** No rigid walls in a depth-averaged scene. */
+      const std::vector<mpm::RigidWall> no_walls;
     } // namespace
 
 
 
-    DepthAveragedSolver::DepthAveragedSolver(const DepthAveragedParameters &parameters)
+    DepthAveragedSolver::DepthAveragedSolver(const DepthAveragedParameters &parameters,
+                                             grid::BackgroundGrid          &grid)
       : prm(parameters)
       , model_crs(prm.elevation_raster.empty() ?
                     std::string() :
@@ -83,22 +85,23 @@ namespace slidewave
       , elevation(sample_terrain(prm))
       , release(prm, elevation, model_crs)
       , flow(prm, elevation)
-      , grid(prm.lower_left, prm.upper_right, prm.cell_size, 0)
-      , cloud(grid, flow.layout(), DepthAveragedModel::mass, prm.sides)
-      , nodes(grid,
-              /*with_node_positions=*/false,
-              /*with_resistance=*/true,
-              /*with_depth=*/prm.depth_update == DepthUpdate::projection)
-      , constraints(grid, nodes, prm.sides, no_walls)
-      , patches(grid, nodes)
-      , kernels(flow, cloud, nodes, patches, constraints, kernel_settings(prm, flow))
+      , grid(grid)
+      , engine(grid, flow, prm.sides, no_walls, engine_settings(prm))
     {
-      // Rebuilt in this order after a grid change: the points, the nodes, then what is
-      // built on the nodes.
-      grid.attach(cloud);
-      grid.attach(nodes);
-      grid.attach(constraints);
-      grid.attach(patches);
+    }
+
+
+
+    std::unique_ptr<grid::BackgroundGrid>
+    DepthAveragedSolver::make_grid(const DepthAveragedParameters &prm)
+    {
+      grid::GridChanges changes;
+      changes.imbalance_threshold = prm.balancing.imbalance_threshold;
+      changes.balance_interval    = prm.balancing.interval;
+      return std::make_unique<grid::BackgroundGrid>(prm.lower_left,
+                                                    prm.upper_right,
+                                                    prm.cell_size,
+                                                    changes);
     }
 
 
@@ -106,42 +109,25 @@ namespace slidewave
     void
     DepthAveragedSolver::setup(const double start_time)
     {
-      time = start_time;
-      // Until the points exist, the cells weigh the points the release will put there, so
-      // that each rank creates the points it keeps.
-      weights_from_release = true;
-      grid.create_coarse_grid([this](const dealii::Triangulation<2>::cell_iterator &cell,
-                                     const dealii::Triangulation<2>::CellStatus     status) {
-        return cell_weight(cell, status);
-      });
-      grid.refine_to_base();
-      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
-          && prm.balancing.imbalance_threshold > 0.)
-        grid.repartition_initial();
-      grid.setup_dofs();
-      nodes.reinit();
-      constraints.reinit();
-      patches.reinit();
-      cloud.initialize();
       // A depth raster's no-data under the release: refused on every rank at once.
       std::optional<dealii::Point<2>> no_data;
-      cloud.create(prm.particles_per_direction,
-                   release.regions(),
-                   [this, &no_data](std::vector<double>    &properties,
-                                    const dealii::Point<2> &position,
-                                    const unsigned int      region,
-                                    const double            hx,
-                                    const double            hy) {
-                     const double h = release.depth(position, region);
-                     if (std::isnan(h))
-                       {
-                         no_data = position;
-                         return false;
-                       }
-                     return flow.fill_new_point(
-                       properties, position, h, release.velocity(position), hx, hy);
-                   });
-      weights_from_release = false;
+      engine.create_points(start_time,
+                           release.regions(),
+                           prm.particles_per_direction,
+                           [this, &no_data](std::vector<double>    &properties,
+                                            const dealii::Point<2> &position,
+                                            const unsigned int      region,
+                                            const double            hx,
+                                            const double            hy) {
+                             const double h = release.depth(position, region);
+                             if (std::isnan(h))
+                               {
+                                 no_data = position;
+                                 return false;
+                               }
+                             return flow.fill_new_point(
+                               properties, position, h, release.velocity(position), hx, hy);
+                           });
       const int rank_with_no_data
         = dealii::Utilities::MPI::min(no_data ? static_cast<int>(
                                         dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)) :
@@ -156,8 +142,6 @@ namespace slidewave
                            "a depth at every point of the release area (the pixel holding ("
                              + to_string(where[0]) + ", " + to_string(where[1]) + ") is no-data)");
         }
-      balance_load();
-      cloud.sort();
     }
 
 
@@ -165,8 +149,7 @@ namespace slidewave
     void
     DepthAveragedSolver::save(const std::string &prefix)
     {
-      cloud.prepare_for_save();
-      grid.save(prefix);
+      engine.save(prefix);
     }
 
 
@@ -174,17 +157,7 @@ namespace slidewave
     void
     DepthAveragedSolver::load(const std::string &prefix)
     {
-      grid.create_coarse_grid([this](const dealii::Triangulation<2>::cell_iterator &cell,
-                                     const dealii::Triangulation<2>::CellStatus     status) {
-        return cell_weight(cell, status);
-      });
-      cloud.initialize();
-      grid.load(prefix);
-      cloud.load();
-      grid.setup_dofs();
-      nodes.reinit();
-      constraints.reinit();
-      patches.reinit();
+      engine.load(prefix);
     }
 
 
@@ -192,7 +165,7 @@ namespace slidewave
     DepthAveragedSolver::State
     DepthAveragedSolver::state() const
     {
-      return {time, dealii::Utilities::MPI::sum(cloud.lost_mass, MPI_COMM_WORLD), n_steps};
+      return engine.state();
     }
 
 
@@ -200,36 +173,7 @@ namespace slidewave
     void
     DepthAveragedSolver::set_state(const State &state)
     {
-      time    = state.time;
-      n_steps = state.n_steps;
-      // A sum over ranks: rank 0 carries what was lost before.
-      cloud.lost_mass
-        = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? state.lost_mass : 0.;
-    }
-
-
-
-    unsigned int
-    DepthAveragedSolver::cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
-                                     const dealii::Triangulation<2>::CellStatus     status) const
-    {
-      // The grid is never refined or coarsened: a cell persists or is a coarse cell being
-      // refined to the base grid (before any point exists).
-      unsigned int n = 0;
-      if (status == dealii::Triangulation<2>::CELL_PERSIST)
-        {
-          if (weights_from_release)
-            cloud.for_each_point_to_create(cell,
-                                           prm.particles_per_direction,
-                                           release.regions(),
-                                           [&n](const auto &...) { ++n; });
-          else
-            n = cloud.particles().n_particles_in_cell(cell);
-        }
-      const std::uint64_t weight
-        = cell_base_weight + static_cast<std::uint64_t>(prm.balancing.particle_weight) * n;
-      return static_cast<unsigned int>(
-        std::min<std::uint64_t>(weight, std::numeric_limits<int>::max()));
+      engine.set_state(state);
     }
 
 
@@ -237,23 +181,7 @@ namespace slidewave
     double
     DepthAveragedSolver::load_imbalance() const
     {
-      const double work = static_cast<double>(cell_base_weight)
-                            * grid.triangulation().n_locally_owned_active_cells()
-                          + static_cast<double>(prm.balancing.particle_weight)
-                              * cloud.particles().n_locally_owned_particles();
-      return grid::BackgroundGrid::imbalance(work);
-    }
-
-
-
-    void
-    DepthAveragedSolver::balance_load()
-    {
-      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1
-          || !(prm.balancing.imbalance_threshold > 0.)
-          || load_imbalance() <= prm.balancing.imbalance_threshold)
-        return;
-      grid.repartition();
+      return grid.load_imbalance();
     }
 
 
@@ -265,10 +193,9 @@ namespace slidewave
       // limit of an explicit step, rho h^2 / (4 eta) with eta = 2 mu + tau_Y m the largest
       // viscosity of the (regularized) Bingham law: its stress is eta D, and the largest
       // eigenvalue of div(eta D) on the grid is below 8 eta / (rho h^2).
-      const double max_speed
-        = dealii::Utilities::MPI::max(kernels.max_signal_speed(), MPI_COMM_WORLD);
-      const double h   = prm.cell_size;
-      const double eta = 2. * prm.viscosity + prm.yield_stress * prm.regularization;
+      const double max_speed = engine.max_signal_speed();
+      const double h         = prm.cell_size;
+      const double eta       = 2. * prm.viscosity + prm.yield_stress * prm.regularization;
       const double advective
         = max_speed > 0. ? h / max_speed : std::numeric_limits<double>::infinity();
       const double viscous
@@ -290,7 +217,7 @@ namespace slidewave
     void
     DepthAveragedSolver::set_timer(dealii::TimerOutput &timer_output)
     {
-      timer = prm.detailed_timing ? &timer_output : nullptr;
+      engine.set_timer(prm.detailed_timing ? &timer_output : nullptr);
     }
 
 
@@ -298,36 +225,7 @@ namespace slidewave
     void
     DepthAveragedSolver::advance(const double dt)
     {
-      std::optional<dealii::TimerOutput::Scope> part;
-      const auto                                start = [&](const char *name) {
-        if (timer != nullptr)
-          {
-            part.reset();
-            part.emplace(*timer, name);
-          }
-      };
-      if (n_steps > 0 && n_steps % prm.balancing.interval == 0)
-        {
-          start("depth averaged step: load balancing");
-          balance_load();
-        }
-      ++n_steps;
-      start("depth averaged step: particles to grid");
-      kernels.particles_to_grid();
-      start("depth averaged step: grid update");
-      kernels.update_grid(dt, /*damping=*/0., time);
-      std::vector<dealii::Point<2>> &new_positions = kernels.new_positions();
-      new_positions.resize(cloud.particles().get_property_pool().n_slots());
-      start("depth averaged step: grid to particles");
-      kernels.grid_to_particles(dt, /*with_stresses=*/true);
-      start("depth averaged step: sort particles");
-      const bool full_sort = n_steps % prm.balancing.interval == 0;
-      if (full_sort)
-        for (auto &particle : cloud.particles())
-          particle.set_location(new_positions[particle.get_local_index()]);
-      if (full_sort || !cloud.relocate_within_patches(new_positions, patches, nullptr))
-        cloud.sort();
-      time += dt;
+      engine.advance(dt);
     }
 
 
@@ -335,11 +233,7 @@ namespace slidewave
     std::array<double, 3>
     DepthAveragedSolver::nodal_totals()
     {
-      kernels.particles_to_grid();
-      std::array<double, 3> totals{{nodes.nodal_mass.l1_norm(), 0., 0.}};
-      for (unsigned int d = 0; d < 2; ++d)
-        totals[d + 1] = nodes.momentum[d].mean_value() * nodes.momentum[d].size();
-      return totals;
+      return engine.nodal_totals();
     }
 
 
@@ -350,10 +244,11 @@ namespace slidewave
       // sum_p V_p N_i(x_p) over the lumped area of node i (a quarter of each cell around
       // it): the depth the columns give the node; sum_p m_p v_p N_i / sum_p m_p N_i: their
       // mass-weighted mean velocity there.
-      using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
-      Vector volume, area, mass;
+      using Vector       = dealii::LinearAlgebra::distributed::Vector<double>;
+      const auto  &nodes = engine.nodal_workspace();
+      const Vector area  = grid.lumped_nodal_area();
+      Vector       volume, mass;
       volume.reinit(nodes.nodal_mass);
-      area.reinit(nodes.nodal_mass);
       NodalState state;
       if (with_velocity)
         {
@@ -367,10 +262,7 @@ namespace slidewave
         if (cell->is_locally_owned())
           {
             cell->get_dof_indices(indices);
-            const double quarter = 0.25 * cell->measure();
-            for (const auto i : indices)
-              area[i] += quarter;
-            for (const auto &particle : cloud.particles().particles_in_cell(cell))
+            for (const auto &particle : engine.point_cloud().particles().particles_in_cell(cell))
               {
                 const dealii::Point<2> r    = particle.get_reference_location();
                 const auto             p    = particle.get_properties();
@@ -392,7 +284,6 @@ namespace slidewave
               }
           }
       volume.compress(dealii::VectorOperation::add);
-      area.compress(dealii::VectorOperation::add);
       if (with_velocity)
         for (Vector *v : {&mass, &state.velocity[0], &state.velocity[1]})
           v->compress(dealii::VectorOperation::add);
@@ -418,7 +309,7 @@ namespace slidewave
     DepthAveragedSolver::nodal_elevation() const
     {
       dealii::LinearAlgebra::distributed::Vector<double> z;
-      z.reinit(nodes.nodal_mass);
+      z.reinit(engine.nodal_workspace().nodal_mass);
       const auto &dofs = grid.dof_handler();
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())

@@ -1,7 +1,9 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
+#include <limits>
 #include <slidewave/grid/background_grid.h>
 
 namespace slidewave
@@ -11,11 +13,11 @@ namespace slidewave
     BackgroundGrid::BackgroundGrid(const dealii::Point<2> &lower_left,
                                    const dealii::Point<2> &upper_right,
                                    const double            cell_size,
-                                   const unsigned int      adaptive_levels)
+                                   const GridChanges      &changes)
       : corner_low(lower_left)
       , corner_high(upper_right)
       , h(cell_size)
-      , levels(adaptive_levels)
+      , settings(changes)
       , tria(MPI_COMM_WORLD, dealii::Triangulation<2>::limit_level_difference_at_vertices)
       , fe(1)
     {
@@ -24,11 +26,11 @@ namespace slidewave
 
 
     void
-    BackgroundGrid::create_coarse_grid(const CellWeight &weight)
+    BackgroundGrid::create_coarse_grid()
     {
       // With adaptive refinement the base grid is 2^levels times coarser than 'Cell size';
       // the cells holding material (and a buffer around them) are refined to 'Cell size'.
-      const double              base = h * (1u << levels);
+      const double              base = h * (1u << settings.adaptive_levels);
       std::vector<unsigned int> subdivisions{
         static_cast<unsigned int>(std::round((corner_high[0] - corner_low[0]) / base)),
         static_cast<unsigned int>(std::round((corner_high[1] - corner_low[1]) / base))};
@@ -46,16 +48,64 @@ namespace slidewave
         }
       dealii::GridGenerator::subdivided_hyper_rectangle(
         tria, subdivisions, corner_low, corner_high, /*colorize=*/true);
-      tria.signals.weight.connect(weight);
+      // The partition weighs each cell by its own weight plus every follower's share.
+      tria.signals.weight.connect(
+        [this](const CellIterator &cell, const dealii::Triangulation<2>::CellStatus status) {
+          return cell_weight(cell, status);
+        });
     }
 
 
 
     void
-    BackgroundGrid::refine_to_base()
+    BackgroundGrid::create()
     {
+      create_coarse_grid();
       tria.refine_global(n_base_refinements);
       vertex_to_cells = dealii::GridTools::vertex_to_cell_map(tria);
+      // Each adaptive level refines the cells the followers need fine (before any point
+      // exists, a point cloud answers from the regions it will fill), once.
+      for (unsigned int l = 0; l < settings.adaptive_levels; ++l)
+        {
+          const std::vector<bool> refine = cells_to_keep_fine();
+          for (const auto &cell : tria.active_cell_iterators())
+            if (cell->is_locally_owned() && refine[cell->active_cell_index()])
+              cell->set_refine_flag();
+          tria.execute_coarsening_and_refinement();
+          vertex_to_cells = dealii::GridTools::vertex_to_cell_map(tria);
+        }
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
+          && settings.imbalance_threshold > 0.)
+        tria.repartition();
+      distribute_dofs();
+      for (GridFollower *follower : followers)
+        follower->grid_ready();
+    }
+
+
+
+    void
+    BackgroundGrid::load(const std::string &prefix, const std::function<void()> &before_load)
+    {
+      create_coarse_grid();
+      if (before_load)
+        before_load();
+      tria.load(prefix);
+      distribute_dofs();
+      for (GridFollower *follower : followers)
+        follower->grid_ready();
+      for (GridFollower *follower : followers)
+        follower->checkpoint_loaded();
+    }
+
+
+
+    void
+    BackgroundGrid::save(const std::string &prefix) const
+    {
+      for (GridFollower *follower : followers)
+        follower->prepare_for_checkpoint();
+      tria.save(prefix);
     }
 
 
@@ -68,14 +118,94 @@ namespace slidewave
 
 
 
-    void
-    BackgroundGrid::refine(const std::vector<bool> &refine)
+    std::vector<bool>
+    BackgroundGrid::cells_to_keep_fine() const
     {
+      std::vector<bool> keep_fine(tria.n_active_cells(), false);
+      for (const GridFollower *follower : followers)
+        follower->add_refinement_indicators(keep_fine);
+      return grow(std::move(keep_fine), settings.buffer_cells);
+    }
+
+
+
+    unsigned int
+    BackgroundGrid::cell_weight(const CellIterator                        &cell,
+                                const dealii::Triangulation<2>::CellStatus status) const
+    {
+      unsigned long long weight = cell_base_weight;
+      for (const GridFollower *follower : followers)
+        weight += follower->cell_weight(cell, status);
+      // p4est takes the weight as an int: saturate rather than wrap around.
+      return static_cast<unsigned int>(
+        std::min<unsigned long long>(weight, std::numeric_limits<int>::max()));
+    }
+
+
+
+    double
+    BackgroundGrid::load_imbalance() const
+    {
+      // The work of a rank: its owned cells' weights as the partition counts them (not
+      // capped: the sum is exact in a double up to 2^53).
+      unsigned long long work = 0;
       for (const auto &cell : tria.active_cell_iterators())
-        if (cell->is_locally_owned() && refine[cell->active_cell_index()])
-          cell->set_refine_flag();
-      tria.execute_coarsening_and_refinement();
-      vertex_to_cells = dealii::GridTools::vertex_to_cell_map(tria);
+        if (cell->is_locally_owned())
+          {
+            work += cell_base_weight;
+            for (const GridFollower *follower : followers)
+              work += follower->cell_weight(cell, dealii::Triangulation<2>::CELL_PERSIST);
+          }
+      return imbalance(static_cast<double>(work));
+    }
+
+
+
+    bool
+    BackgroundGrid::change_if_due(const unsigned int step)
+    {
+      if (step == 0)
+        return false;
+      if (settings.adaptive_levels > 0 && step % settings.adaptivity_interval == 0)
+        return adapt();
+      if (step % settings.balance_interval == 0)
+        return balance();
+      return false;
+    }
+
+
+
+    bool
+    BackgroundGrid::adapt()
+    {
+      const bool changes   = flag_for_adaptation(cells_to_keep_fine());
+      const bool rebalance = !changes && settings.imbalance_threshold > 0.
+                             && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
+                             && load_imbalance() > settings.imbalance_threshold;
+      if (!changes && !rebalance)
+        return false;
+      // What lives on the cells follows them through refinement, coarsening and
+      // repartitioning.
+      if (changes)
+        execute_coarsening_and_refinement(); // also repartitions by the cell weights
+      else
+        repartition();
+      ++n_grid_changes;
+      return true;
+    }
+
+
+
+    bool
+    BackgroundGrid::balance()
+    {
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1
+          || !(settings.imbalance_threshold > 0.)
+          || load_imbalance() <= settings.imbalance_threshold)
+        return false;
+      repartition();
+      ++n_grid_changes;
+      return true;
     }
 
 
@@ -119,7 +249,7 @@ namespace slidewave
           {
             const bool         fine  = keep_fine[cell->active_cell_index()];
             const unsigned int level = cell->level();
-            if (fine && level < n_base_refinements + levels)
+            if (fine && level < n_base_refinements + settings.adaptive_levels)
               {
                 cell->set_refine_flag();
                 changes = true;
@@ -158,14 +288,6 @@ namespace slidewave
 
 
     void
-    BackgroundGrid::repartition_initial()
-    {
-      tria.repartition();
-    }
-
-
-
-    void
     BackgroundGrid::finish_change()
     {
       vertex_to_cells = dealii::GridTools::vertex_to_cell_map(tria);
@@ -177,11 +299,35 @@ namespace slidewave
 
 
     void
-    BackgroundGrid::setup_dofs()
+    BackgroundGrid::distribute_dofs()
     {
       dofs.reinit(tria);
       vertex_to_cells = dealii::GridTools::vertex_to_cell_map(tria);
       dofs.distribute_dofs(fe);
+    }
+
+
+
+    dealii::LinearAlgebra::distributed::Vector<double>
+    BackgroundGrid::lumped_nodal_area() const
+    {
+      dealii::IndexSet relevant;
+      dealii::DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+      dealii::LinearAlgebra::distributed::Vector<double> area(dofs.locally_owned_dofs(),
+                                                              relevant,
+                                                              MPI_COMM_WORLD);
+      std::vector<dealii::types::global_dof_index>       indices(4);
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(indices);
+            const double quarter = 0.25 * cell->measure();
+            for (const auto i : indices)
+              area[i] += quarter;
+          }
+      area.compress(dealii::VectorOperation::add);
+      area.update_ghost_values();
+      return area;
     }
 
 
@@ -197,18 +343,5 @@ namespace slidewave
 
 
 
-    void
-    BackgroundGrid::save(const std::string &prefix) const
-    {
-      tria.save(prefix);
-    }
-
-
-
-    void
-    BackgroundGrid::load(const std::string &prefix)
-    {
-      tria.load(prefix);
-    }
   } // namespace grid
 } // namespace slidewave

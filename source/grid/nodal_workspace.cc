@@ -10,12 +10,14 @@ namespace slidewave
   {
     NodalWorkspace::NodalWorkspace(const BackgroundGrid &grid,
                                    const bool            with_node_positions,
-                                   const bool            with_resistance,
-                                   const bool            with_depth)
-      : grid(grid)
+                                   const unsigned int    n_model_fields,
+                                   const unsigned int    n_used_fields,
+                                   const bool            with_lumped_area)
+      : fields(n_used_fields)
+      , grid(grid)
       , with_positions(with_node_positions)
-      , with_resistance(with_resistance)
-      , with_depth(with_depth)
+      , stride(n_base_sums + n_model_fields)
+      , with_area(with_lumped_area)
     {
     }
 
@@ -36,28 +38,15 @@ namespace slidewave
           velocity[d].reinit(nodal_mass);
           velocity_old[d].reinit(nodal_mass);
         }
-      if (with_resistance)
-        resistance.reinit(nodal_mass);
-      if (with_depth)
+      for (Vector &field : fields)
+        field.reinit(nodal_mass);
+      if (with_area)
         {
-          // The lumped area of a node: a quarter of every cell around it.
-          depth.reinit(nodal_mass);
-          std::vector<dealii::types::global_dof_index> indices(4);
-          for (const auto &cell : dofs.active_cell_iterators())
-            if (cell->is_locally_owned())
-              {
-                cell->get_dof_indices(indices);
-                for (const auto i : indices)
-                  depth[i] += 0.25 * cell->measure();
-              }
-          depth.compress(dealii::VectorOperation::add);
-          depth.update_ghost_values();
-          const auto &part = *depth.get_partitioner();
+          const Vector area = grid.lumped_nodal_area();
+          const auto  &part = *area.get_partitioner();
           inverse_area.assign(part.locally_owned_size() + part.n_ghost_indices(), 0.);
           for (unsigned int i = 0; i < inverse_area.size(); ++i)
-            inverse_area[i] = depth.local_element(i) > 0. ? 1. / depth.local_element(i) : 0.;
-          depth.zero_out_ghost_values();
-          depth = 0.;
+            inverse_area[i] = area.local_element(i) > 0. ? 1. / area.local_element(i) : 0.;
         }
       if (with_positions)
         {
@@ -75,7 +64,7 @@ namespace slidewave
       const unsigned int n_local
         = partitioner->locally_owned_size() + partitioner->n_ghost_indices();
       node_is_active.assign(n_local, 0);
-      node_sums.assign(n_sums * n_local, 0.);
+      node_sums.assign(stride * n_local, 0.);
       node_velocities.assign(n_velocities * n_local, 0.);
       import_nodes.clear();
       for (const auto &[first, last] : partitioner->import_indices())
@@ -110,10 +99,10 @@ namespace slidewave
     void
     NodalWorkspace::clear_active_nodes()
     {
-      // The depth was sent to the ghost nodes (update_ghost_values): those values must not
-      // return to their owners with the next compress.
-      if (with_depth)
-        depth.zero_out_ghost_values();
+      // A model may send its fields to the ghost nodes (update_ghost_values): those values
+      // must not return to their owners with the next compress.
+      for (Vector &field : fields)
+        field.zero_out_ghost_values();
       for (const unsigned int i : active_nodes)
         {
           nodal_mass.local_element(i) = 0.;
@@ -124,10 +113,8 @@ namespace slidewave
               velocity[d].local_element(i)     = 0.;
               velocity_old[d].local_element(i) = 0.;
             }
-          if (with_resistance)
-            resistance.local_element(i) = 0.;
-          if (with_depth)
-            depth.local_element(i) = 0.;
+          for (Vector &field : fields)
+            field.local_element(i) = 0.;
           node_is_active[i] = 0;
         }
       active_nodes.clear();

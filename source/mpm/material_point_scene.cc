@@ -286,7 +286,8 @@ namespace slidewave
     MaterialPointScene::create_solver(dealii::TimerOutput &timer_output)
     {
       timer  = &timer_output;
-      solver = std::make_unique<MaterialPointSolver>(parameters);
+      grid   = MaterialPointSolver::make_grid(parameters);
+      solver = std::make_unique<MaterialPointSolver>(parameters, *grid);
       solver->set_timer(timer_output);
     }
 

@@ -3,8 +3,8 @@
 #include <deal.II/base/mpi.h>
 #include <limits>
 #include <slidewave/core/rank_reports.h>
+#include <slidewave/mpm/particle_engine.templates.h>
 #include <slidewave/mpm/soil_model.h>
-#include <slidewave/mpm/transfer_kernels.templates.h>
 #include <sstream>
 
 namespace slidewave
@@ -15,6 +15,7 @@ namespace slidewave
       : prm(parameters)
       , gravity(parameters.gravity)
       , point_forces(parameters.point_forces)
+      , damping(parameters.damping)
     {
       for (const auto &material : prm.materials)
         materials.emplace_back(material);
@@ -387,4 +388,5 @@ namespace slidewave
 
   // The particle–grid cycle for the soil, with its terms inlined.
   template class mpm::TransferKernels<mpm::SoilModel>;
+  template class mpm::ParticleEngine<mpm::SoilModel>;
 } // namespace slidewave

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/mapping_cartesian.h>
 #include <slidewave/particles/point_cloud.h>
@@ -11,12 +12,100 @@ namespace slidewave
     PointCloud::PointCloud(grid::BackgroundGrid                    &grid,
                            const PropertyLayout                    &layout,
                            const unsigned int                       mass_index,
-                           const std::array<grid::GridBoundary, 4> &sides)
+                           const std::array<grid::GridBoundary, 4> &sides,
+                           const unsigned int                       particle_weight)
       : grid(grid)
       , properties(layout)
       , mass(mass_index)
       , sides(sides)
+      , particle_weight(particle_weight)
     {
+    }
+
+
+
+    void
+    PointCloud::expect_points(const std::vector<mpm::MaterialRegion> &regions, const unsigned int n)
+    {
+      expected_regions       = &regions;
+      expected_per_direction = n;
+    }
+
+
+
+    unsigned int
+    PointCloud::points_in(const CellIterator &cell, const unsigned int n) const
+    {
+      unsigned int count = 0;
+      if (expected_regions != nullptr)
+        for_each_point_to_create(cell, n, *expected_regions, [&count](const auto &...) {
+          ++count;
+        });
+      else
+        count = handler.n_particles_in_cell(cell);
+      return count;
+    }
+
+
+
+    unsigned long long
+    PointCloud::cell_weight(const CellIterator &cell, const CellStatus status) const
+    {
+      // The cell's points: those it holds or, before they exist, those the regions will
+      // put there with 'per_direction' of them per direction.
+      const unsigned int per_direction = expected_per_direction;
+      unsigned int       n             = 0;
+      switch (status)
+        {
+          case dealii::Triangulation<2>::CELL_PERSIST:
+            n = points_in(cell, per_direction);
+            break;
+          case dealii::Triangulation<2>::CELL_REFINE:
+            // The children's lattices together are the parent's at twice the density.
+            n = points_in(cell, 2 * per_direction);
+            break;
+          case dealii::Triangulation<2>::CELL_COARSEN:
+            for (const auto &child : cell->child_iterators())
+              n += points_in(child, per_direction);
+            break;
+          default:
+            break;
+        }
+      return static_cast<unsigned long long>(particle_weight) * n;
+    }
+
+
+
+    void
+    PointCloud::add_refinement_indicators(std::vector<bool> &keep_fine) const
+    {
+      // Cells holding material: from the regions (at set-up: any point of the finest
+      // lattice of points in the cell lies in a region) or from the points.
+      for (const auto &cell : grid.triangulation().active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          bool has_material = false;
+          if (expected_regions != nullptr)
+            {
+              const dealii::Point<2> origin = cell->vertex(0);
+              const double           h      = cell->vertex(1)[0] - origin[0];
+              const unsigned int     m      = expected_per_direction
+                                     * static_cast<unsigned int>(std::round(h / grid.cell_size()));
+              for (unsigned int j = 0; j < m && !has_material; ++j)
+                for (unsigned int i = 0; i < m && !has_material; ++i)
+                  {
+                    const dealii::Point<2> x(origin[0] + (i + 0.5) * h / m,
+                                             origin[1] + (j + 0.5) * h / m);
+                    for (const auto &region : *expected_regions)
+                      has_material = has_material || region.contains(x);
+                  }
+            }
+          else
+            has_material = handler.n_particles_in_cell(cell) > 0;
+          if (has_material)
+            keep_fine[cell->active_cell_index()] = true;
+        }
     }
 
 
@@ -89,6 +178,7 @@ namespace slidewave
                                    });
         }
       handler.update_cached_numbers();
+      expected_regions = nullptr;
     }
 
 
@@ -210,7 +300,7 @@ namespace slidewave
 
 
     void
-    PointCloud::prepare_for_save()
+    PointCloud::prepare_for_checkpoint()
     {
       handler.prepare_for_serialization();
     }
@@ -218,7 +308,7 @@ namespace slidewave
 
 
     void
-    PointCloud::load()
+    PointCloud::checkpoint_loaded()
     {
       handler.deserialize();
     }

@@ -176,7 +176,9 @@ main(int argc, char **argv)
   root              = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   unit_check::print = root;
   {
-    mpm::MaterialPointSolver soil(block_in_a_tank());
+    const auto               soil_parameters = block_in_a_tank();
+    auto                     grid            = mpm::MaterialPointSolver::make_grid(soil_parameters);
+    mpm::MaterialPointSolver soil(soil_parameters, *grid);
     soil.setup();
     check_level(soil, 1.5, 1.5, 0., 0.);
     check_level(soil, 1.5, 1.6, -rho_g * 0.1, -rho_g * 0.1);

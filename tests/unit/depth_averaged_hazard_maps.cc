@@ -90,7 +90,8 @@ main(int argc, char **argv)
         << "end\n";
   const auto parameters = depth_averaged_parameters(input.str());
 
-  depth_averaged::DepthAveragedSolver solver(parameters);
+  auto grid = depth_averaged::DepthAveragedSolver::make_grid(parameters);
+  depth_averaged::DepthAveragedSolver solver(parameters, *grid);
   solver.setup(0.);
   depth_averaged::HazardMaps maps(parameters, 0.05);
   double                     time = 0.;

@@ -91,7 +91,8 @@ namespace
                                   + "\n"
                                     "  end\n"
                                     "end\n");
-    depth_averaged::DepthAveragedSolver solver(parameters);
+    auto grid = depth_averaged::DepthAveragedSolver::make_grid(parameters);
+    depth_averaged::DepthAveragedSolver solver(parameters, *grid);
     solver.setup(0.);
     return solver.model().integrals(solver.point_cloud());
   }

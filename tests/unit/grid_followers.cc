@@ -73,15 +73,18 @@ main(int argc, char **argv)
   root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   // A 1 m x 1 m grid of 0.125 m cells, two adaptive levels: the base grid has 0.5 m cells.
-  grid::BackgroundGrid grid(dealii::Point<2>(0., 0.), dealii::Point<2>(1., 1.), 0.125, 2);
-  grid.create_coarse_grid([](const grid::BackgroundGrid::CellIterator &,
-                             dealii::Triangulation<2>::CellStatus) { return 1000u; });
-  grid.refine_to_base();
-  grid.setup_dofs();
+  grid::GridChanges grid_changes;
+  grid_changes.adaptive_levels = 2;
+  grid_changes.buffer_cells    = 0;
+  grid::BackgroundGrid     grid(dealii::Point<2>(0., 0.),
+                            dealii::Point<2>(1., 1.),
+                            0.125,
+                            grid_changes);
   std::vector<std::string> log;
   CountingFollower         first(grid, log, "first"), second(grid, log, "second");
   grid.attach(first);
   grid.attach(second);
+  grid.create();
   if (root)
     std::printf("base grid: %u cells, %u dofs\n",
                 grid.triangulation().n_global_active_cells(),

@@ -172,8 +172,9 @@ main(int argc, char **argv)
   const unsigned int n_steps = 10;
   for (const std::string shape : {"q1", "gimp", "cpgimp"})
     {
-      const MaterialPointParameters prm = parameters(shape);
-      MaterialPointSolver           solver(prm);
+      const MaterialPointParameters prm  = parameters(shape);
+      auto                          grid = MaterialPointSolver::make_grid(prm);
+      MaterialPointSolver           solver(prm, *grid);
       solver.setup();
       if (root)
         std::printf("%s, at the start:\n", shape.c_str());

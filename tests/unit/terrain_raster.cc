@@ -79,7 +79,8 @@ namespace
                                                         "    set Depth = 1\n"
                                                         "  end\n"
                                                         "end\n");
-    depth_averaged::DepthAveragedSolver solver(parameters);
+    auto       grid       = depth_averaged::DepthAveragedSolver::make_grid(parameters);
+    depth_averaged::DepthAveragedSolver solver(parameters, *grid);
     solver.setup(0.);
     for (unsigned int step = 0; step < 20; ++step)
       solver.advance(solver.stable_time_step());

@@ -149,6 +149,8 @@ namespace slidewave
       std::string                     gauge_text;
       unsigned int                    check_interval = 10;
 
+      /** The soil's background grid (declared before the soil: it outlives it). */
+      std::unique_ptr<grid::BackgroundGrid>     grid;
       std::unique_ptr<mpm::MaterialPointSolver> soil;
       std::unique_ptr<water::ShallowWater1D>    water;
       std::unique_ptr<SoilWaterInterface>       interface;

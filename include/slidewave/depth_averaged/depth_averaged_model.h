@@ -7,6 +7,7 @@
 #include <deal.II/particles/particle_handler.h>
 #include <memory>
 #include <slidewave/depth_averaged/depth_averaged_parameters.h>
+#include <slidewave/mpm/particle_model_defaults.h>
 #include <slidewave/mpm/shape_functions.h>
 #include <slidewave/particles/point_cloud.h>
 #include <slidewave/particles/property_layout.h>
@@ -60,7 +61,7 @@ namespace slidewave
      * The terrain is a terrain::ElevationGrid: Z and grad Z at a point are one bilinear
      * lookup.
      */
-    class DepthAveragedModel
+    class DepthAveragedModel : public mpm::ParticleModelDefaults
     {
     public:
       static constexpr unsigned int mass          = property::mass;
@@ -70,15 +71,37 @@ namespace slidewave
       static constexpr unsigned int domain_half_x = property::domain_half_x;
       static constexpr unsigned int domain_half_y = property::domain_half_y;
       static constexpr unsigned int depth         = property::depth;
-      /** Voellmy's friction acts at the nodes (TransferKernels::update_grid). */
-      static constexpr bool has_basal_resistance = true;
-      /** The depth may be projected on the nodes and read back ('Depth update'). */
-      static constexpr bool has_nodal_depth = true;
+      /**
+       * The model's nodal fields: the basal resistance (the largest force Voellmy's
+       * friction can exert at the node [N], applied in the grid update) and, with 'Depth
+       * update = projection', the columns' volume, divided by the node's lumped area into
+       * the depth the columns give the node (read back by the points).
+       */
+      enum NodalField : unsigned int
+      {
+        resistance_field,
+        depth_field,
+      };
+      static constexpr unsigned int n_nodal_fields = 2;
 
       bool
       projects_depth() const
       {
-        return prm.depth_update == DepthUpdate::projection;
+        return project_depth;
+      }
+
+      /** The resistance always; the depth only when it is projected. */
+      unsigned int
+      n_used_nodal_fields() const
+      {
+        return project_depth ? 2 : 1;
+      }
+
+      /** The depth is a volume over the node's lumped area. */
+      bool
+      needs_lumped_area() const
+      {
+        return project_depth;
       }
 
       using ParticleRange = dealii::Particles::ParticleHandler<2>::particle_iterator_range;
@@ -163,10 +186,61 @@ namespace slidewave
         fy = -t.V * (t.sxy * w.grad_x[k] + t.syy * w.grad_y[k]) + mk * t.by;
       }
 
-      double
-      basal_resistance(const ScatterTerms &t) const
+      /** The column's basal resistance A_p tau_b and, when the depth is projected, its
+       *  volume V_p, to its k-th node with weight @p N_k. */
+      void
+      scatter_fields(const ScatterTerms &t, const double N_k, double *sums) const
       {
-        return t.resistance;
+        sums[resistance_field] += N_k * t.resistance;
+        if (project_depth)
+          sums[depth_field] += N_k * t.V;
+      }
+
+      /** The projected volume over the nodes' lumped area: the depth the columns give each
+       *  node, read by the gather at owned and ghost nodes. */
+      void
+      finish_nodal_fields(grid::NodalWorkspace &nodes) const;
+
+      /**
+       * Voellmy's friction as a nodal force of at most R_i opposing the motion the node
+       * would have without it: it takes |v| dt R_i / m off the speed, down to zero, never
+       * past it. So friction stops a node but cannot reverse it, and a node at rest stays
+       * there while the other forces stay below R_i (static friction).
+       */
+      void
+      update_nodal_velocity(const grid::NodalWorkspace &nodes,
+                            const unsigned int          i,
+                            const double                m,
+                            const double                dt,
+                            double                     &vx_node,
+                            double                     &vy_node) const
+      {
+        const double vx    = vx_node;
+        const double vy    = vy_node;
+        const double speed = std::sqrt(vx * vx + vy * vy);
+        const double loss  = dt * nodes.fields[resistance_field].local_element(i) / m;
+        const double scale = speed > loss ? 1. - loss / speed : 0.;
+        vx_node            = scale * vx;
+        vy_node            = scale * vy;
+      }
+
+      /** With the projected depth, before the update: the depth the columns around give
+       *  the point at the start of the step; the update then adds the step's own change. */
+      template <typename Properties>
+      void
+      gather_fields(const mpm::NodeWeights     &w,
+                    const grid::NodalWorkspace &nodes,
+                    Properties                 &p,
+                    const bool                  before_update) const
+      {
+        if (project_depth && before_update)
+          {
+            const auto &depth = nodes.fields[depth_field];
+            double      h     = 0.;
+            for (unsigned int e = 0; e < w.n; ++e)
+              h += w.value[e] * depth.local_element(w.node[e]);
+            p[property::depth] = h;
+          }
       }
 
       /** USL (Eqs. 36–38): new depths and Bingham stresses of the points of one cell. */
@@ -252,6 +326,8 @@ namespace slidewave
       const double still_level;
       const bool   friction;
       const double tan_phi, rho_g_over_xi, atmospheric_pressure;
+      /** 'Depth update = projection'. */
+      const bool project_depth;
     };
   } // namespace depth_averaged
 } // namespace slidewave

@@ -128,19 +128,22 @@ namespace slidewave
       void
       write_point_table(unsigned int index) const;
 
-      const SceneParameters               &scene;
-      DepthAveragedParameters              parameters;
-      std::unique_ptr<DepthAveragedSolver> solver;
-      dealii::TimerOutput                 *timer = nullptr;
-      io::ParticleOutput                   particle_output;
-      io::GridOutput                       grid_output;
-      bool                                 write_grid             = true;
-      unsigned int                         check_interval         = 10;
-      bool                                 write_table            = false;
-      bool                                 check_conservation     = false;
-      double                               conservation_tolerance = 0.;
-      std::array<double, 2>                conservation{{0., 0.}};
-      double                               max_conservation_error = 0.;
+      const SceneParameters  &scene;
+      DepthAveragedParameters parameters;
+      /** The scene's background grid, shared by what lives on it (declared before the
+       *  solver: it outlives it). */
+      std::unique_ptr<grid::BackgroundGrid> grid;
+      std::unique_ptr<DepthAveragedSolver>  solver;
+      dealii::TimerOutput                  *timer = nullptr;
+      io::ParticleOutput                    particle_output;
+      io::GridOutput                        grid_output;
+      bool                                  write_grid             = true;
+      unsigned int                          check_interval         = 10;
+      bool                                  write_table            = false;
+      bool                                  check_conservation     = false;
+      double                                conservation_tolerance = 0.;
+      std::array<double, 2>                 conservation{{0., 0.}};
+      double                                max_conservation_error = 0.;
       /** 'Symmetry line' (NaN: off) and the largest asymmetry so far. */
       double symmetry_line      = std::numeric_limits<double>::quiet_NaN();
       double symmetry_tolerance = 1e-9, max_asymmetry = 0.;

@@ -7,6 +7,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/particles/particle_handler.h>
+#include <memory>
 #include <slidewave/depth_averaged/depth_averaged_model.h>
 #include <slidewave/depth_averaged/depth_averaged_parameters.h>
 #include <slidewave/depth_averaged/release.h>
@@ -14,6 +15,7 @@
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/nodal_workspace.h>
 #include <slidewave/grid/velocity_constraints.h>
+#include <slidewave/mpm/particle_engine.h>
 #include <slidewave/mpm/rigid_wall.h>
 #include <slidewave/mpm/transfer_kernels.h>
 #include <slidewave/particles/point_cloud.h>
@@ -37,14 +39,20 @@ namespace slidewave
      *   4. USL: depth (Eq. 38) and Bingham stress (Eqs. 36–37) from the new nodal
      *      velocities.
      *
-     * The same engine as the soil (grid::BackgroundGrid, particles::PointCloud,
-     * grid::NodalWorkspace, the constraints and patches, mpm::TransferKernels) with the
-     * model DepthAveragedModel. The terrain is sampled once onto a terrain::ElevationGrid.
+     * The same engine as the soil (mpm::ParticleEngine: point cloud, nodal workspace,
+     * constraints, patches and the particle–grid cycle, on the scene's background grid)
+     * with the model DepthAveragedModel. The terrain is sampled once onto a
+     * terrain::ElevationGrid.
      */
     class DepthAveragedSolver
     {
     public:
-      explicit DepthAveragedSolver(const DepthAveragedParameters &parameters);
+      /** The flow of @p parameters on the scene's @p grid (attaches to it). */
+      DepthAveragedSolver(const DepthAveragedParameters &parameters, grid::BackgroundGrid &grid);
+
+      /** The grid of the flow's parameters ('Grid', 'Load balancing'; no adaptivity). */
+      static std::unique_ptr<grid::BackgroundGrid>
+      make_grid(const DepthAveragedParameters &parameters);
 
       /** Creates the grid and fills the release with columns at @p start_time. */
       void
@@ -59,11 +67,7 @@ namespace slidewave
       load(const std::string &prefix);
 
       /** Time, lost mass (summed over ranks) and step counter. */
-      struct State
-      {
-        double       time = 0., lost_mass = 0.;
-        unsigned int n_steps = 0;
-      };
+      using State = mpm::ParticleEngine<DepthAveragedModel>::State;
 
       State
       state() const;
@@ -128,19 +132,19 @@ namespace slidewave
       particles::PointCloud &
       point_cloud()
       {
-        return cloud;
+        return engine.point_cloud();
       }
 
       const particles::PointCloud &
       point_cloud() const
       {
-        return cloud;
+        return engine.point_cloud();
       }
 
       const dealii::Particles::ParticleHandler<2> &
       particles() const
       {
-        return cloud.particles();
+        return engine.point_cloud().particles();
       }
 
       const dealii::DoFHandler<2> &
@@ -159,7 +163,7 @@ namespace slidewave
       const dealii::LinearAlgebra::distributed::Vector<double> &
       nodal_velocity(const unsigned int component) const
       {
-        return nodes.velocity[component];
+        return engine.nodal_workspace().velocity[component];
       }
 
       /** The released material. */
@@ -177,36 +181,19 @@ namespace slidewave
       }
 
     private:
-      unsigned int
-      cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
-                  dealii::Triangulation<2>::CellStatus           status) const;
-
-      void
-      balance_load();
-
       DepthAveragedParameters prm;
       /** The terrain raster's CRS as WKT; "" for an expression or a table. */
-      std::string                              model_crs;
-      terrain::ElevationGrid                   elevation;
-      Release                                  release;
-      DepthAveragedModel                       flow;
-      grid::BackgroundGrid                     grid;
-      particles::PointCloud                    cloud;
-      grid::NodalWorkspace                     nodes;
-      std::vector<mpm::RigidWall>              no_walls;
-      grid::VelocityConstraints                constraints;
-      grid::CellPatches                        patches;
-      mpm::TransferKernels<DepthAveragedModel> kernels;
-      dealii::TimerOutput                     *timer = nullptr;
-
-      double       time    = 0.;
-      unsigned int n_steps = 0;
-      /** Set-up: cells weigh the points the release will put there. */
-      bool weights_from_release = false;
+      std::string                             model_crs;
+      terrain::ElevationGrid                  elevation;
+      Release                                 release;
+      DepthAveragedModel                      flow;
+      grid::BackgroundGrid                   &grid;
+      mpm::ParticleEngine<DepthAveragedModel> engine;
     };
   } // namespace depth_averaged
 
   extern template class mpm::TransferKernels<depth_averaged::DepthAveragedModel>;
+  extern template class mpm::ParticleEngine<depth_averaged::DepthAveragedModel>;
 } // namespace slidewave
 
 #endif

@@ -5,6 +5,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <functional>
 #include <set>
 #include <slidewave/grid/grid_follower.h>
@@ -16,43 +17,103 @@ namespace slidewave
   namespace grid
   {
     /**
-     * The background grid of the material point method (paper 000, §3.1): a
-     * parallel::distributed::Triangulation of axis-aligned square cells over the domain,
-     * with the scalar Q1 element and its DoFHandler (one degree of freedom per node); the
-     * coarse grid, adaptivity (the caller says where the grid must be fine), partitioning
-     * by cell weights that the caller gives, repartitioning, and the triangulation's
-     * checkpoint files. Objects living on the grid attach themselves as GridFollower and
-     * follow every refinement and repartitioning.
+     * How the grid changes during a run: adaptive refinement where the followers need it
+     * and repartitioning by the followers' cell weights ("Adaptive grid" and "Load
+     * balancing" of the scenes).
+     */
+    struct GridChanges
+    {
+      /** Refinement levels above the base grid (0: no adaptivity). */
+      unsigned int adaptive_levels = 0;
+      /** Steps between two adaptations. */
+      unsigned int adaptivity_interval = 50;
+      /** Layers of cells kept fine around the cells the followers need fine. */
+      unsigned int buffer_cells = 2;
+      /** Repartition when max over mean of the ranks' work exceeds this (<= 0: never). */
+      double imbalance_threshold = 1.1;
+      /** Steps between two checks of the balance (and a full sort of the points). */
+      unsigned int balance_interval = 50;
+    };
+
+
+
+    /**
+     * The background grid shared by every physics of a scene (paper 000, §3.1; paper
+     * 002, §3): a parallel::distributed::Triangulation of axis-aligned square cells over
+     * the domain, with the scalar Q1 element and its DoFHandler (one degree of freedom
+     * per node, the nodes of the material point method). The scene owns it; each physics
+     * takes it by reference and attaches the objects that hold its data as GridFollower.
+     * The grid drives every event of the cells' life for all of them in one place: the
+     * set-up, adaptive refinement (the followers say where the grid must be fine),
+     * partitioning by the sum of the followers' cell weights, repartitioning, and the
+     * checkpoint files (the followers' data attached in attach order).
      */
     class BackgroundGrid
     {
     public:
       using CellIterator       = dealii::Triangulation<2>::cell_iterator;
       using ActiveCellIterator = dealii::Triangulation<2>::active_cell_iterator;
-      /** The partitioning weight of a cell (deal.II's 'weight' signal). */
-      using CellWeight
-        = std::function<unsigned int(const CellIterator &, dealii::Triangulation<2>::CellStatus)>;
+
+      /** Partitioning weight of a cell of its own, before the followers' shares
+       *  (deal.II's convention; its 'weight' signal adds none of its own). */
+      static constexpr unsigned int cell_base_weight = 1000;
 
       /**
        * A grid of square cells of side @p cell_size over [@p lower_left, @p upper_right];
-       * with @p adaptive_levels > 0 the base grid is 2^adaptive_levels times coarser and
-       * refined where material is.
+       * with changes.adaptive_levels > 0 the base grid is 2^adaptive_levels times coarser
+       * and refined where the followers need it.
        */
       BackgroundGrid(const dealii::Point<2> &lower_left,
                      const dealii::Point<2> &upper_right,
                      double                  cell_size,
-                     unsigned int            adaptive_levels);
+                     const GridChanges      &changes = GridChanges());
 
       /**
-       * The coarse grid (as few cells as the sides allow; base_refinements() global
-       * refinements make the base grid), weighed for partitioning by @p weight.
+       * Set-up: the coarse grid (as few cells as the sides allow), refined globally to
+       * the base grid, then adaptive_levels times where the followers need it fine
+       * (add_refinement_indicators, grown by the buffer), repartitioned by the followers'
+       * weights (on several ranks, unless balancing is off), the dofs distributed, and
+       * every follower's grid_ready(). Attach the followers first.
        */
       void
-      create_coarse_grid(const CellWeight &weight);
+      create();
 
-      /** Refines the coarse grid globally to the base grid (no follower is attached yet). */
+      /**
+       * Resume: the coarse grid, then the cells written by save() under @p prefix (on any
+       * number of ranks), the dofs, every follower's grid_ready() and then its
+       * checkpoint_loaded(), in attach order. @p before_load is called once the coarse
+       * grid exists, before the cells are read (a particle handler is initialized there).
+       */
       void
-      refine_to_base();
+      load(const std::string &prefix, const std::function<void()> &before_load = {});
+
+      /** Writes the cells and every follower's data (prepare_for_checkpoint, in attach
+       *  order) under @p prefix (collective). */
+      void
+      save(const std::string &prefix) const;
+
+      /** Attaches @p follower: it follows every later event of the cells. */
+      void
+      attach(GridFollower &follower);
+
+      /**
+       * The grid's changes due at step @p step (the number of steps done): every
+       * adaptivity_interval steps an adaptation (and a repartition if the work is
+       * unbalanced), otherwise every balance_interval steps a repartition if the work is
+       * unbalanced. Returns whether the cells changed (collective).
+       */
+      bool
+      change_if_due(unsigned int step);
+
+      /** Refines where the followers need it, coarsens elsewhere, repartitions if
+       *  unbalanced; returns whether the cells changed (collective). */
+      bool
+      adapt();
+
+      /** Repartitions by the cell weights when the imbalance exceeds the threshold (on
+       *  several ranks); returns whether it did (collective). */
+      bool
+      balance();
 
       /** Global refinements of the coarse grid up to the base grid. */
       unsigned int
@@ -65,19 +126,21 @@ namespace slidewave
       unsigned int
       adaptive_levels() const
       {
-        return levels;
+        return settings.adaptive_levels;
       }
 
-      /** Attaches @p follower: it follows every later change of the cells. */
-      void
-      attach(GridFollower &follower);
+      const GridChanges &
+      changes() const
+      {
+        return settings;
+      }
 
-      /**
-       * Refines the locally owned cells flagged in @p refine (by active cell index) once;
-       * set-up only, before the degrees of freedom exist.
-       */
-      void
-      refine(const std::vector<bool> &refine);
+      /** How often the cells were adapted or repartitioned during the steps. */
+      unsigned int
+      n_changes() const
+      {
+        return n_grid_changes;
+      }
 
       /**
        * The cells flagged in @p near (owned cells, by active cell index) grown by
@@ -104,25 +167,19 @@ namespace slidewave
       void
       repartition();
 
-      /** Repartitions before the degrees of freedom exist (set-up; no followers). */
-      void
-      repartition_initial();
+      /** The partitioning weight of @p cell: cell_base_weight plus every follower's share,
+       *  capped at 2^31 - 1 (p4est takes an int). */
+      unsigned int
+      cell_weight(const CellIterator &cell, dealii::Triangulation<2>::CellStatus status) const;
 
-      /** Distributes the degrees of freedom on the current cells (set-up and load). */
-      void
-      setup_dofs();
+      /** Max over mean of the ranks' work, the sum of their owned cells' weights
+       *  (collective). */
+      double
+      load_imbalance() const;
 
       /** Max over mean of @p work over the ranks (collective). */
       static double
       imbalance(double work);
-
-      /** Writes the triangulation (and what the followers attached) under @p prefix. */
-      void
-      save(const std::string &prefix) const;
-
-      /** Reads the triangulation written by save() into the coarse grid. */
-      void
-      load(const std::string &prefix);
 
       const dealii::parallel::distributed::Triangulation<2> &
       triangulation() const
@@ -149,6 +206,14 @@ namespace slidewave
         return vertex_to_cells;
       }
 
+      /**
+       * The lumped area of each node: a quarter of every cell around it (owned and ghost
+       * entries, ghosted). The one place it is computed: the depth the columns give a
+       * node, its nodal mass per area and the error norms of the depth all divide by it.
+       */
+      dealii::LinearAlgebra::distributed::Vector<double>
+      lumped_nodal_area() const;
+
       const dealii::Point<2> &
       lower_left() const
       {
@@ -168,14 +233,27 @@ namespace slidewave
       }
 
     private:
+      /** The coarse grid and its weight signal. */
+      void
+      create_coarse_grid();
+
+      /** Distributes the dofs on the current cells and rebuilds the vertex map. */
+      void
+      distribute_dofs();
+
+      /** Owned cells the followers need fine, grown by the buffer (collective). */
+      std::vector<bool>
+      cells_to_keep_fine() const;
+
       /** After the cells changed: the dofs and vertex map, then the followers. */
       void
       finish_change();
 
       dealii::Point<2>                                corner_low, corner_high;
       double                                          h;
-      unsigned int                                    levels;
+      GridChanges                                     settings;
       unsigned int                                    n_base_refinements = 0;
+      unsigned int                                    n_grid_changes     = 0;
       dealii::parallel::distributed::Triangulation<2> tria;
       dealii::FE_Q<2>                                 fe;
       dealii::DoFHandler<2>                           dofs;

@@ -30,8 +30,9 @@ namespace slidewave
       reinit();
 
       void
-      prepare_for_grid_change() override
+      grid_ready() override
       {
+        reinit();
       }
 
       void

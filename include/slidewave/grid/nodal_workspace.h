@@ -22,8 +22,12 @@ namespace slidewave
      *   of hanging ones among them and the owned nodes other ranks send to; outside them
      *   every nodal value is zero (a step clears last step's active nodes before it
      *   scatters);
+     * - the nodal fields a particle model declares beyond those (its number of them,
+     *   Model::n_nodal_fields, and how many a run uses): what its points scatter to the
+     *   nodes and read back (a basal resistance, a volume, later a fluid's drag), each a
+     *   distributed vector; the workspace holds no model's names;
      * - side-by-side arrays per node that the per-point loops read and write (the
-     *   scatter's five sums, the gather's four velocities: one cache line per node);
+     *   scatter's sums, five plus the model's fields, and the gather's four velocities);
      * - hanging-node condensation (sums to the parents) and interpolation (values from
      *   the parents), as local-index tables.
      *
@@ -34,30 +38,33 @@ namespace slidewave
     public:
       using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
 
-      /** Sums per node in node_sums: mass, momentum x, y, force x, y, and for the
-       *  depth-averaged flow the basal resistance (Voellmy's friction) and the volume of
-       *  the columns (zero for other models). */
-      static constexpr unsigned int n_sums = 7;
+      /** Sums per node in node_sums before the model's fields: mass, momentum x, y,
+       *  force x, y. */
+      static constexpr unsigned int n_base_sums = 5;
       /** Values per node in node_velocities: v^new x, y, v^new - v^old x, y. */
       static constexpr unsigned int n_velocities = 4;
 
-      /** @p with_node_positions: keep the positions of the owned nodes (a prescribed
-       *  velocity field needs them); @p with_resistance: a model with a basal resistance
-       *  (the vector resistance is allocated only then); @p with_depth: a model whose
-       *  points' depth is projected on the nodes (the vectors depth and the lumped area
-       *  are allocated only then). */
+      /**
+       * @p with_node_positions: keep the positions of the owned nodes (a prescribed
+       * velocity field needs them); @p n_model_fields: the nodal fields the model
+       * declares (the stride of the scatter's sums is n_base_sums + n_model_fields);
+       * @p n_used_fields: how many of them (the first ones) this run uses, allocated as
+       * vectors; @p with_lumped_area: keep 1 / the lumped area of each node.
+       */
       NodalWorkspace(const BackgroundGrid &grid,
                      bool                  with_node_positions,
-                     bool                  with_resistance = false,
-                     bool                  with_depth      = false);
+                     unsigned int          n_model_fields   = 0,
+                     unsigned int          n_used_fields    = 0,
+                     bool                  with_lumped_area = false);
 
       /** Vectors, arrays, import nodes and hanging nodes of the current grid. */
       void
       reinit();
 
       void
-      prepare_for_grid_change() override
+      grid_ready() override
       {
+        reinit();
       }
 
       void
@@ -93,11 +100,25 @@ namespace slidewave
       void
       interpolate_hanging_nodes(Vector &v) const;
 
-      /** The scatter's sums of local node @p i (n_sums of them). */
+      /** The scatter's sums of local node @p i (n_sums() of them). */
       double *
       sums(const unsigned int i)
       {
-        return node_sums.data() + n_sums * i;
+        return node_sums.data() + stride * i;
+      }
+
+      /** Sums per node: n_base_sums plus the model's fields. */
+      unsigned int
+      n_sums() const
+      {
+        return stride;
+      }
+
+      /** The model's nodal fields this run uses. */
+      unsigned int
+      n_fields() const
+      {
+        return fields.size();
       }
 
       /** The gather's velocities of local node @p i (n_velocities of them). */
@@ -142,21 +163,17 @@ namespace slidewave
       /** Lumped mass, momentum, force, velocity after and before the grid update. */
       Vector                nodal_mass;
       std::array<Vector, 2> momentum, force, velocity, velocity_old;
-      /** The largest force the basal friction can exert on the node [N], for models with a
-       *  basal resistance (otherwise empty). */
-      Vector resistance;
-      /** sum_p V_p N_i over the lumped area of node i: the depth the columns give the node
-       *  (models that project the depth; otherwise empty). */
-      Vector depth;
-      /** 1 / the lumped area of each local node (a quarter of each cell around it), for
-       *  models that project the depth. */
+      /** The model's nodal fields (in the order of its declaration; n_used_fields of
+       *  them), summed from the points like the mass. */
+      std::vector<Vector> fields;
+      /** 1 / the lumped area of each local node (with_lumped_area; otherwise empty). */
       std::vector<double> inverse_area;
 
     private:
       const BackgroundGrid &grid;
       const bool            with_positions;
-      const bool            with_resistance;
-      const bool            with_depth;
+      const unsigned int    stride;
+      const bool            with_area;
 
       std::vector<unsigned int> active_nodes;
       /** Zero between steps. */

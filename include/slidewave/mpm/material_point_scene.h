@@ -124,18 +124,21 @@ namespace slidewave
       double           rotation_rate = 1.;
       dealii::Point<2> rotation_centre;
 
-      const SceneParameters               &scene;
-      ExactSolution                        exact_solution = ExactSolution::none;
-      double                               bar_length = 25., bar_amplitude = 0.1;
-      double                               column_height = 1.;
-      double                               tolerance     = 0.;
-      MaterialPointParameters              parameters;
-      std::unique_ptr<MaterialPointSolver> solver;
-      dealii::TimerOutput                 *timer = nullptr;
-      io::ParticleOutput                   particle_output;
-      io::GridOutput                       grid_output;
-      bool                                 write_grid     = false;
-      unsigned int                         check_interval = 10;
+      const SceneParameters  &scene;
+      ExactSolution           exact_solution = ExactSolution::none;
+      double                  bar_length = 25., bar_amplitude = 0.1;
+      double                  column_height = 1.;
+      double                  tolerance     = 0.;
+      MaterialPointParameters parameters;
+      /** The scene's background grid, shared by what lives on it (declared before the
+       *  solver: it outlives it). */
+      std::unique_ptr<grid::BackgroundGrid> grid;
+      std::unique_ptr<MaterialPointSolver>  solver;
+      dealii::TimerOutput                  *timer = nullptr;
+      io::ParticleOutput                    particle_output;
+      io::GridOutput                        grid_output;
+      bool                                  write_grid     = false;
+      unsigned int                          check_interval = 10;
       /** Kinetic + elastic energy at the start, and the total mass (for the guards). */
       double initial_energy = 0., total_mass = 0.;
       /** The largest error against the exact solution so far (bar vibration). */

@@ -19,6 +19,7 @@
 #include <slidewave/grid/nodal_workspace.h>
 #include <slidewave/grid/velocity_constraints.h>
 #include <slidewave/mpm/material_point_parameters.h>
+#include <slidewave/mpm/particle_engine.h>
 #include <slidewave/mpm/soil_model.h>
 #include <slidewave/mpm/step_timeline.h>
 #include <slidewave/mpm/transfer_kernels.h>
@@ -44,18 +45,23 @@ namespace slidewave
      *      from the particles (MUSL), with the Jaumann rate (Eqs. 5–6) and, optionally, the
      *      B-bar treatment of the volumetric strain against locking.
      *
-     * The solver composes the parts (one job each) for the soil: the background grid
-     * (grid::BackgroundGrid) with its followers, the point cloud (particles::PointCloud),
-     * the nodal workspace (grid::NodalWorkspace), the velocity constraints and cell patches,
-     * the soil as particle model (SoilModel) and the particle–grid cycle
-     * (TransferKernels<SoilModel>, its per-point terms inlined); it runs the step's
-     * cadence (grid changes, the parts of the step, relocation) and keeps the interface
-     * the scenes call. Nothing is allocated per particle per step.
+     * The solver is the soil's model (SoilModel) on the engine every particle model
+     * shares (ParticleEngine<SoilModel>: point cloud, nodal workspace, constraints,
+     * patches and the particle–grid cycle, attached to the scene's background grid, which
+     * it takes by reference). It adds what is the soil's: its initial stress (uniform,
+     * geostatic, gravity loading), its time step (Eq. 23), point forces, diagnostics.
+     * Nothing is allocated per particle per step.
      */
     class MaterialPointSolver
     {
     public:
-      explicit MaterialPointSolver(const MaterialPointParameters &parameters);
+      /** The soil of @p parameters on the scene's @p grid (attaches to it). */
+      MaterialPointSolver(const MaterialPointParameters &parameters, grid::BackgroundGrid &grid);
+
+      /** The grid of the soil's parameters ('Grid', 'Adaptive grid', 'Load balancing'):
+       *  what a scene of soil creates and shares. */
+      static std::unique_ptr<grid::BackgroundGrid>
+      make_grid(const MaterialPointParameters &parameters);
 
       /**
        * Creates the grid, fills the regions with material points and sets up their
@@ -102,11 +108,7 @@ namespace slidewave
       load(const std::string &prefix);
 
       /** What else determines the future of a run: time, lost mass, step counter. */
-      struct State
-      {
-        double       time = 0., lost_mass = 0.;
-        unsigned int n_steps = 0;
-      };
+      using State = ParticleEngine<SoilModel>::State;
 
       State
       state() const;
@@ -170,7 +172,7 @@ namespace slidewave
       const dealii::Particles::ParticleHandler<2> &
       particles() const
       {
-        return cloud.particles();
+        return engine.point_cloud().particles();
       }
 
       const dealii::DoFHandler<2> &
@@ -183,14 +185,14 @@ namespace slidewave
       const dealii::LinearAlgebra::distributed::Vector<double> &
       nodal_velocity(unsigned int component) const
       {
-        return nodes.velocity[component];
+        return engine.nodal_workspace().velocity[component];
       }
 
       /** Lumped nodal masses of the last particle-to-grid transfer (owned entries). */
       const dealii::LinearAlgebra::distributed::Vector<double> &
       lumped_nodal_mass() const
       {
-        return nodes.nodal_mass;
+        return engine.nodal_workspace().nodal_mass;
       }
 
       /** Max over mean of the ranks' work (cells and points; collective). */
@@ -201,7 +203,7 @@ namespace slidewave
       unsigned int
       n_grid_adaptations() const
       {
-        return n_grid_changes;
+        return grid.n_changes();
       }
 
       /** The per-step, per-rank times of the parts of the step ('Step timeline'), or null
@@ -216,14 +218,14 @@ namespace slidewave
       unsigned int
       n_full_particle_sorts() const
       {
-        return n_full_sorts;
+        return engine.n_full_particle_sorts();
       }
 
       /** Time of the particles' state. */
       double
       current_time() const
       {
-        return time;
+        return engine.time();
       }
 
       /**
@@ -248,73 +250,24 @@ namespace slidewave
       }
 
     private:
-      /** Active cells (owned and ghost) that hold material or lie within the buffer. */
-      std::vector<bool>
-      cells_near_material(bool from_regions) const;
-
-      /** Partitioning weight of a cell without points (deal.II's convention; its 'weight'
-       * signal adds none of its own). */
-      static constexpr unsigned int cell_base_weight = 1000;
-
-      /** Weight of a cell for partitioning: cell_base_weight plus particle_weight per point
-       * (before the points exist, per point that the regions will put there), capped at
-       * 2^31 - 1 (p4est takes an int). */
-      unsigned int
-      cell_weight(const dealii::Triangulation<2>::cell_iterator &cell,
-                  dealii::Triangulation<2>::CellStatus           status) const;
-
-      /** Rebuilds the nodal workspace, constraints and patches on the current grid. */
-      void
-      setup_grid_data();
-
-      /** Repartition by cells and points when the imbalance exceeds the threshold. */
-      void
-      balance_load();
-
-      /** Refine where material is, coarsen where it left, repartition if needed. */
-      void
-      adapt_grid();
-
       /** Gravity with heavy local damping, walls held, until gravity_loading_time. */
       void
       load_gravity();
 
-      /** The end of a part of the step for the step timeline, when it is on. */
-      void
-      lap(const StepTimeline::Part part)
-      {
-        if (timeline)
-          timeline->lap(part);
-      }
+      MaterialPointParameters   prm;
+      SoilModel                 model;
+      grid::BackgroundGrid     &grid;
+      ParticleEngine<SoilModel> engine;
 
-      MaterialPointParameters    prm;
-      SoilModel                  model;
-      grid::BackgroundGrid       grid;
-      particles::PointCloud      cloud;
-      grid::NodalWorkspace       nodes;
-      grid::VelocityConstraints  constraints;
-      grid::CellPatches          patches;
-      TransferKernels<SoilModel> kernels;
-
-      unsigned int n_steps = 0, n_grid_changes = 0;
-      /** Steps relocated by the full sort (advance). */
-      unsigned int n_full_sorts = 0;
-
-      /** Where the parts of a step are timed ('Detailed timing'), or null. */
-      dealii::TimerOutput *timer = nullptr;
       /** Per-step times of the parts ('Step timeline'): only allocated when on. */
       std::unique_ptr<StepTimeline> timeline;
 
-      double time = 0.;
-      /** Local damping in force now (heavier during gravity loading). */
-      double damping         = 0.;
-      bool   loading_gravity = false;
-      /** Set-up, before the points exist: the cell weights count the points to come, so
-       * that they are created on the ranks that keep them. */
-      bool weights_from_regions = false;
+      /** Gravity loading: every wall holds. */
+      bool loading_gravity = false;
     };
 
     extern template class TransferKernels<SoilModel>;
+    extern template class ParticleEngine<SoilModel>;
   } // namespace mpm
 } // namespace slidewave
 

@@ -7,6 +7,7 @@
 #include <functional>
 #include <slidewave/materials/material.h>
 #include <slidewave/mpm/material_point_parameters.h>
+#include <slidewave/mpm/particle_model_defaults.h>
 #include <slidewave/mpm/particle_properties.h>
 #include <slidewave/mpm/shape_functions.h>
 #include <slidewave/particles/point_cloud.h>
@@ -31,7 +32,7 @@ namespace slidewave
      * point). The transfer kernels (TransferKernels<SoilModel>) are instantiated in its
      * source.
      */
-    class SoilModel
+    class SoilModel : public ParticleModelDefaults
     {
     public:
       /** The properties the transfer kernels read (TransferKernels). */
@@ -42,10 +43,23 @@ namespace slidewave
       static constexpr unsigned int domain_half_x = property::domain_half_x;
       static constexpr unsigned int domain_half_y = property::domain_half_y;
 
-      /** The soil has no basal resistance (TransferKernels). */
-      static constexpr bool has_basal_resistance = false;
-      /** Nor a depth projected on the nodes. */
-      static constexpr bool has_nodal_depth = false;
+      /** Cundall's local damping of the unbalanced nodal force (TransferKernels): a
+       *  force opposing the motion, proportional to the unbalanced force. */
+      double
+      nodal_force_at_node(const double v, double f) const
+      {
+        if (damping > 0.)
+          f -= damping * std::abs(f) * (v > 0. ? 1. : v < 0. ? -1. : 0.);
+        return f;
+      }
+
+      /** The local damping coefficient in force now ('Local damping', heavier during
+       *  gravity loading). */
+      void
+      set_damping(const double alpha)
+      {
+        damping = alpha;
+      }
 
       using ParticleRange = dealii::Particles::ParticleHandler<2>::particle_iterator_range;
 
@@ -196,6 +210,8 @@ namespace slidewave
       particles::PropertyLayout        property_layout;
       const dealii::Tensor<1, 2>       gravity;
       const bool                       point_forces;
+      /** Cundall's local damping in force now. */
+      double damping;
     };
   } // namespace mpm
 } // namespace slidewave

@@ -27,18 +27,27 @@ namespace slidewave
      *
      * A template on the particle model, instantiated in the model's own source, so that
      * the model's per-point terms are inlined into the loops: nothing is virtual, nothing
-     * is allocated per point. A model class provides
+     * is allocated per point, and the kernels hold no model's name or flag. What a model
+     * declares (mpm::ParticleModelDefaults gives every optional part a default that
+     * compiles to nothing; doc/architecture.md walks through it):
      *
      * - the property indices `mass`, `volume`, `velocity_x`, `velocity_y`,
      *   `domain_half_x`, `domain_half_y` (static constexpr unsigned int);
-     * - `static constexpr bool has_basal_resistance`; if true, `double
-     *   basal_resistance(const ScatterTerms &) const`: the largest friction force the
-     *   point's base can exert [N], scattered to the nodes and applied there as a force
-     *   that opposes the nodal velocity but never reverses it (update_grid);
      * - `ScatterTerms scatter_terms(const Properties &p, const Point<2> &x) const` (what
-     *   the point at @p x scatters, read once per point) and `void nodal_force(const ScatterTerms
-     * &, const NodeWeights &, unsigned int k, double m_k, double &f_x, double &f_y) const` (the
-     *   point's force on its k-th node);
+     *   the point at @p x scatters, read once per point) and `void nodal_force(const
+     *   ScatterTerms &, const NodeWeights &, unsigned int k, double m_k, double &f_x,
+     *   double &f_y) const` (the point's force on its k-th node);
+     * - its nodal fields beyond mass, momentum and force: `static constexpr unsigned int
+     *   n_nodal_fields`, `void scatter_fields(const ScatterTerms &, double N_k, double
+     *   *sums) const` (adds the point's share to its k-th node's fields), and `void
+     *   finish_nodal_fields(grid::NodalWorkspace &) const` (after the fields' exchange);
+     * - what it does at the nodes in the grid update: `double nodal_force_at_node(double
+     *   v, double f) const` (the force of one component that drives the node, e.g.
+     *   damped) and `void update_nodal_velocity(const grid::NodalWorkspace &, unsigned
+     *   int i, double m, double dt, double &v_x, double &v_y) const` (after Eqs. 18–19,
+     *   before the constraints: e.g. friction);
+     * - what it gathers at its points: `void gather_fields(const NodeWeights &, const
+     *   grid::NodalWorkspace &, Properties &p, bool before_update) const`;
      * - `void update_cell(const particle_iterator_range &, const dealii::Tensor<2, 2> *L,
      *   double dt) const`: the constitutive update of the points of one cell from their
      *   velocity gradients (in the order of the points);
@@ -78,10 +87,10 @@ namespace slidewave
       void
       particles_to_grid();
 
-      /** Nodal velocities after and before the step (Eqs. 18–19), with Cundall's local
-       *  damping @p damping and the constraints; @p time: the start of the step. */
+      /** Nodal velocities after and before the step (Eqs. 18–19), with the model's nodal
+       *  force and velocity update and the constraints; @p time: the start of the step. */
       void
-      update_grid(double dt, double damping, double time);
+      update_grid(double dt, double time);
 
       /** Velocities (PIC/FLIP, Eq. 20) and new positions (Eq. 21, in new_positions());
        *  with @p with_stresses (USL) also the model's update in the same pass. */

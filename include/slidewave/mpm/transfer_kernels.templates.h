@@ -69,12 +69,10 @@ namespace slidewave
       // Q1 talks to the nodes of the point's cell, GIMP to those of the cell's patch.
       const bool whole_patch = settings.shape_function != ShapeFunction::q1;
       // The workspace's sums as a plain pointer, taken once: the point loop then indexes
-      // it directly instead of going through the workspace on every node.
-      double *const all_sums = nodes.sums(0);
-      // Only models that may project their depth on the nodes ask whether they do.
-      bool project_depth = false;
-      if constexpr (Model::has_nodal_depth)
-        project_depth = model.projects_depth();
+      // it directly instead of going through the workspace on every node. The stride is
+      // known at compile time: mass, momentum, force and the model's nodal fields.
+      constexpr unsigned int n_sums   = grid::NodalWorkspace::n_base_sums + Model::n_nodal_fields;
+      double *const          all_sums = nodes.sums(0);
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
         const unsigned int cell_index = cell->active_cell_index();
         if (whole_patch)
@@ -93,7 +91,7 @@ namespace slidewave
               {
                 // Everything read from the weights before anything is written to the
                 // sums (the compiler cannot tell that the two do not overlap).
-                double      *sums = all_sums + grid::NodalWorkspace::n_sums * w.node[k];
+                double      *sums = all_sums + n_sums * w.node[k];
                 const double mk   = w.value[k] * terms.m;
                 double       fx, fy;
                 model.nodal_force(terms, w, k, mk, fx, fy);
@@ -102,15 +100,12 @@ namespace slidewave
                 sums[2] += mk * terms.vy;
                 sums[3] += fx;
                 sums[4] += fy;
-                if constexpr (Model::has_basal_resistance)
-                  sums[5] += w.value[k] * model.basal_resistance(terms);
-                if constexpr (Model::has_nodal_depth)
-                  if (project_depth)
-                    sums[6] += w.value[k] * terms.V;
+                model.scatter_fields(terms, w.value[k], sums + grid::NodalWorkspace::n_base_sums);
               }
           }
       });
       // Into the distributed vectors (the scratch is left zero for the next step).
+      const unsigned int n_fields = nodes.n_fields();
       for (const unsigned int i : nodes.active())
         {
           double *sums                       = nodes.sums(i);
@@ -119,11 +114,9 @@ namespace slidewave
           nodes.momentum[1].local_element(i) = sums[2];
           nodes.force[0].local_element(i)    = sums[3];
           nodes.force[1].local_element(i)    = sums[4];
-          if constexpr (Model::has_basal_resistance)
-            nodes.resistance.local_element(i) = sums[5];
-          if (project_depth)
-            nodes.depth.local_element(i) = sums[6];
-          std::fill(sums, sums + grid::NodalWorkspace::n_sums, 0.);
+          for (unsigned int f = 0; f < n_fields; ++f)
+            nodes.fields[f].local_element(i) = sums[grid::NodalWorkspace::n_base_sums + f];
+          std::fill(sums, sums + n_sums, 0.);
         }
       nodes.complete_active_nodes();
       nodes.condense_hanging_nodes(nodes.nodal_mass);
@@ -132,10 +125,8 @@ namespace slidewave
           nodes.condense_hanging_nodes(nodes.momentum[d]);
           nodes.condense_hanging_nodes(nodes.force[d]);
         }
-      if constexpr (Model::has_basal_resistance)
-        nodes.condense_hanging_nodes(nodes.resistance);
-      if (project_depth)
-        nodes.condense_hanging_nodes(nodes.depth);
+      for (auto &field : nodes.fields)
+        nodes.condense_hanging_nodes(field);
       lap(StepTimeline::scatter);
       nodes.nodal_mass.compress(dealii::VectorOperation::add);
       for (unsigned int d = 0; d < 2; ++d)
@@ -143,18 +134,11 @@ namespace slidewave
           nodes.momentum[d].compress(dealii::VectorOperation::add);
           nodes.force[d].compress(dealii::VectorOperation::add);
         }
-      if constexpr (Model::has_basal_resistance)
-        nodes.resistance.compress(dealii::VectorOperation::add);
-      if (project_depth)
-        {
-          // The nodal volume over the node's lumped area: the depth the columns give the
-          // node, read by the gather at owned and ghost nodes.
-          nodes.depth.compress(dealii::VectorOperation::add);
-          for (const unsigned int i : nodes.active())
-            nodes.depth.local_element(i) *= nodes.inverse_area[i];
-          nodes.depth.update_ghost_values();
-          nodes.interpolate_hanging_nodes(nodes.depth);
-        }
+      for (auto &field : nodes.fields)
+        field.compress(dealii::VectorOperation::add);
+      // What the model does with its summed fields (a depth from a volume, ghost values
+      // for its gather).
+      model.finish_nodal_fields(nodes);
       lap(StepTimeline::exchange_sums);
     }
 
@@ -162,10 +146,9 @@ namespace slidewave
 
     template <class Model>
     void
-    TransferKernels<Model>::update_grid(const double dt, const double damping, const double time)
+    TransferKernels<Model>::update_grid(const double dt, const double time)
     {
       const double tiny         = settings.empty_node_mass;
-      const double alpha        = damping;
       auto        &velocity     = nodes.velocity;
       auto        &velocity_old = nodes.velocity_old;
       if (settings.prescribed_velocity != nullptr)
@@ -182,11 +165,10 @@ namespace slidewave
                   if (m > tiny)
                     {
                       const double v = nodes.momentum[d].local_element(i) / m;
-                      double       f = nodes.force[d].local_element(i);
-                      // Cundall's local damping: a force opposing the motion, proportional
-                      // to the unbalanced force.
-                      if (alpha > 0.)
-                        f -= alpha * std::abs(f) * (v > 0. ? 1. : v < 0. ? -1. : 0.);
+                      // The model's own force at the node (a damping of the unbalanced
+                      // force), then Eqs. 18-19.
+                      const double f
+                        = model.nodal_force_at_node(v, nodes.force[d].local_element(i));
                       velocity_old[d].local_element(i) = v;
                       velocity[d].local_element(i)     = v + dt * f / m; // Eqs. 18-19
                     }
@@ -196,22 +178,11 @@ namespace slidewave
                       velocity[d].local_element(i)     = 0.;
                     }
                 }
-              if constexpr (Model::has_basal_resistance)
-                if (m > tiny)
-                  {
-                    // Basal friction as a nodal force of at most R_i opposing the motion
-                    // the node would have without it: it takes |v| dt R_i / m off the
-                    // speed, down to zero, never past it. So friction stops a node but
-                    // cannot reverse it, and a node at rest stays there while the other
-                    // forces stay below R_i (static friction).
-                    const double vx              = velocity[0].local_element(i);
-                    const double vy              = velocity[1].local_element(i);
-                    const double speed           = std::sqrt(vx * vx + vy * vy);
-                    const double loss            = dt * nodes.resistance.local_element(i) / m;
-                    const double scale           = speed > loss ? 1. - loss / speed : 0.;
-                    velocity[0].local_element(i) = scale * vx;
-                    velocity[1].local_element(i) = scale * vy;
-                  }
+              // What the model does at a node with mass after the update (friction
+              // that stops the node but never reverses it).
+              if (m > tiny)
+                model.update_nodal_velocity(
+                  nodes, i, m, dt, velocity[0].local_element(i), velocity[1].local_element(i));
             }
         }
       constraints.apply(velocity[0], velocity[1]);
@@ -325,10 +296,7 @@ namespace slidewave
       // the velocity gradients come from the same nodal velocities, so the stresses are
       // updated in the same pass.
       NodeWeights  w;
-      const double flip          = settings.flip_fraction;
-      bool         project_depth = false;
-      if constexpr (Model::has_nodal_depth)
-        project_depth = with_stresses && model.projects_depth();
+      const double flip = settings.flip_fraction;
       // The workspace's velocities as a plain pointer, taken once (see particles_to_grid).
       const double *const all_velocities = nodes.velocities(0);
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
@@ -354,16 +322,8 @@ namespace slidewave
                 L[1][1] += vy * w.grad_y[e];
               }
             auto p = particle.get_properties();
-            if constexpr (Model::has_nodal_depth)
-              if (project_depth)
-                {
-                  // The depth the columns around give the point, at the start of the step;
-                  // the model's update then adds the step's own change.
-                  double h = 0.;
-                  for (unsigned int e = 0; e < w.n; ++e)
-                    h += w.value[e] * nodes.depth.local_element(w.node[e]);
-                  p[Model::depth] = h;
-                }
+            // The model's nodal fields at the point (before its update, with_stresses).
+            model.gather_fields(w, nodes, p, with_stresses);
             p[Model::velocity_x] = flip * (p[Model::velocity_x] + dv[0]) + (1. - flip) * v_new[0];
             p[Model::velocity_y] = flip * (p[Model::velocity_y] + dv[1]) + (1. - flip) * v_new[1];
             positions[particle.get_local_index()]

@@ -41,7 +41,17 @@ namespace slidewave
       PointCloud(grid::BackgroundGrid                    &grid,
                  const PropertyLayout                    &layout,
                  unsigned int                             mass_index,
-                 const std::array<grid::GridBoundary, 4> &sides);
+                 const std::array<grid::GridBoundary, 4> &sides,
+                 unsigned int                             particle_weight);
+
+      /**
+       * Until create() is called, the cells weigh (cell_weight) and need fine
+       * (add_refinement_indicators) the points that @p regions will put there with @p n
+       * per direction: the grid is then refined and partitioned at set-up so that each
+       * rank creates the points it keeps. @p regions must outlive create().
+       */
+      void
+      expect_points(const std::vector<mpm::MaterialRegion> &regions, unsigned int n);
 
       /** The particle handler on the grid (its cells must exist) and the lost-point
        *  signal. */
@@ -68,7 +78,8 @@ namespace slidewave
                                               double                  hy)>;
 
       /** Fills the owned cells with n x n points per cell where they lie in a region;
-       *  identifiers from the global cell index and the lattice position. */
+       *  identifiers from the global cell index and the lattice position. Ends the
+       *  expectation of expect_points(). */
       void
       create(unsigned int                            n,
              const std::vector<mpm::MaterialRegion> &regions,
@@ -109,19 +120,31 @@ namespace slidewave
       void
       sort();
 
+      /** The points travel with their cells: attached before the change. */
       void
       prepare_for_grid_change() override;
 
+      /** The points taken back on their new cells. */
       void
       grid_changed() override;
 
       /** Attaches the points to the cells before the grid is saved. */
       void
-      prepare_for_save();
+      prepare_for_checkpoint() override;
 
       /** Takes the points back from the cells after the grid was loaded. */
       void
-      load();
+      checkpoint_loaded() override;
+
+      /** Cells holding points (or, before create(), points to come) must be fine. */
+      void
+      add_refinement_indicators(std::vector<bool> &keep_fine) const override;
+
+      /** 'Particle weight' per point the cell holds (before create(): will hold); for a
+       *  cell to be refined, its children's points, for one to be coarsened, its
+       *  children's. */
+      unsigned long long
+      cell_weight(const CellIterator &cell, CellStatus status) const override;
 
       ParticleHandler &
       particles()
@@ -152,7 +175,16 @@ namespace slidewave
       const PropertyLayout                   &properties;
       const unsigned int                      mass;
       const std::array<grid::GridBoundary, 4> sides;
+      const unsigned int                      particle_weight;
       ParticleHandler                         handler;
+      /** Set-up, until create(): the regions and the points per direction to come. */
+      const std::vector<mpm::MaterialRegion> *expected_regions       = nullptr;
+      unsigned int                            expected_per_direction = 0;
+
+      /** The points create() puts in @p cell with @p n per direction (expect_points()),
+       *  or the points the cell holds. */
+      unsigned int
+      points_in(const CellIterator &cell, unsigned int n) const;
 
       /** A point that changed cell within its patch (relocate_within_patches). */
       struct MovingParticle

@@ -1,0 +1,210 @@
+#ifndef slidewave_mpm_particle_engine_h
+#define slidewave_mpm_particle_engine_h
+
+#include <array>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/timer.h>
+#include <slidewave/grid/background_grid.h>
+#include <slidewave/grid/cell_patches.h>
+#include <slidewave/grid/grid_boundary.h>
+#include <slidewave/grid/nodal_workspace.h>
+#include <slidewave/grid/velocity_constraints.h>
+#include <slidewave/mpm/material_region.h>
+#include <slidewave/mpm/rigid_wall.h>
+#include <slidewave/mpm/shape_functions.h>
+#include <slidewave/mpm/step_timeline.h>
+#include <slidewave/mpm/transfer_kernels.h>
+#include <slidewave/particles/point_cloud.h>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    /**
+     * The one composition of the explicit material point method that every particle
+     * model shares (the soil of paper 000, the depth-averaged columns of paper 001, the
+     * porous skeleton of paper 002 to come): on the scene's background grid, which it
+     * takes by reference, it attaches its followers (the point cloud, the nodal
+     * workspace, the velocity constraints, the cell patches, in that order: rebuilt in
+     * that order after a grid change) and runs the particle–grid cycle of the model
+     * (TransferKernels<Model>) with its cadence: the grid's changes when due, the walls,
+     * particles to grid, the grid update, grid to particles (USL, or MUSL's re-map and
+     * update), and the relocation of the points (within their patches, or deal.II's full
+     * sort). It also holds the state every such run has besides its points: time, step
+     * counter, lost mass.
+     *
+     * A template on the model, instantiated in the model's source next to its kernels
+     * (particle_engine.templates.h). A model's solver (the soil's MaterialPointSolver,
+     * DepthAveragedSolver) owns the model and an engine, and adds only what is the
+     * model's: its initial state, its time-step limit, its diagnostics.
+     */
+    template <class Model>
+    class ParticleEngine
+    {
+    public:
+      /** The engine's settings that are not the model's. */
+      struct Settings
+      {
+        ShapeFunction shape_function = ShapeFunction::q1;
+        double        flip_fraction  = 0.99;
+        /** Modified update stress last: re-map the velocities before the update. */
+        bool musl = false;
+        /** Relocate the points by deal.II's full sort every step. */
+        bool full_sort_every_step = false;
+        /** Keep the positions of the owned nodes (a prescribed velocity needs them). */
+        bool with_node_positions = false;
+        /** Kinematic mode: the nodal velocities are this field (null: off). */
+        dealii::FunctionParser<2> *prescribed_velocity = nullptr;
+        /** 'Particle weight' of a point against a cell's 1000 in the partition. */
+        unsigned int particle_weight = 1000000;
+        /** The prefix of the timer sections ("mpm step"). */
+        std::string timer_name = "mpm step";
+      };
+
+      /** Time, lost mass (summed over the ranks) and step counter. */
+      struct State
+      {
+        double       time = 0., lost_mass = 0.;
+        unsigned int n_steps = 0;
+      };
+
+      /**
+       * The engine of @p model on @p grid: attaches its followers. @p sides: the grid
+       * sides' conditions; @p walls: rigid walls (empty: none).
+       */
+      ParticleEngine(grid::BackgroundGrid                    &grid,
+                     const Model                             &model,
+                     const std::array<grid::GridBoundary, 4> &sides,
+                     const std::vector<RigidWall>            &walls,
+                     const Settings                          &settings);
+
+      /**
+       * Set-up at @p start_time: the grid's cells (refined and partitioned by the points
+       * that @p regions will get, @p n per direction), the points (@p fill gives their
+       * properties), a repartition by the points if unbalanced and a first full sort.
+       */
+      void
+      create_points(double                                     start_time,
+                    const std::vector<MaterialRegion>         &regions,
+                    unsigned int                               n,
+                    const particles::PointCloud::PropertyFill &fill);
+
+      /** Writes the grid and the points under @p prefix (collective). */
+      void
+      save(const std::string &prefix) const;
+
+      /** Instead of create_points(): the grid and the points written by save(), on any
+       *  number of ranks (collective). */
+      void
+      load(const std::string &prefix);
+
+      State
+      state() const;
+
+      void
+      set_state(const State &state);
+
+      /** One step of length @p dt; @p hold_walls: every rigid wall holds (gravity
+       *  loading). */
+      void
+      advance(double dt, bool hold_walls = false);
+
+      /** max_p (c_p + |v_p|) over all ranks (collective). */
+      double
+      max_signal_speed() const;
+
+      /** Scatters the points and returns the nodal totals {mass, momentum x, momentum y}
+       *  (a check of the transfer; collective). */
+      std::array<double, 3>
+      nodal_totals();
+
+      /** Times the parts of each step in @p timer_output (null: nowhere). */
+      void
+      set_timer(dealii::TimerOutput *timer_output)
+      {
+        timer = timer_output;
+      }
+
+      /** Per-step, per-rank times of the parts of the step (null: none). */
+      void
+      set_timeline(StepTimeline *step_timeline)
+      {
+        timeline = step_timeline;
+        kernels.set_timeline(step_timeline);
+      }
+
+      double
+      time() const
+      {
+        return current_time;
+      }
+
+      void
+      set_time(const double t)
+      {
+        current_time = t;
+      }
+
+      /** Steps whose points were relocated by deal.II's full sort. */
+      unsigned int
+      n_full_particle_sorts() const
+      {
+        return n_full_sorts;
+      }
+
+      particles::PointCloud &
+      point_cloud()
+      {
+        return cloud;
+      }
+
+      const particles::PointCloud &
+      point_cloud() const
+      {
+        return cloud;
+      }
+
+      const grid::NodalWorkspace &
+      nodal_workspace() const
+      {
+        return nodes;
+      }
+
+      const grid::BackgroundGrid &
+      background_grid() const
+      {
+        return grid;
+      }
+
+    private:
+      /** The end of a part of the step for the step timeline, when it is on. */
+      void
+      lap(const StepTimeline::Part part)
+      {
+        if (timeline)
+          timeline->lap(part);
+      }
+
+      /** Puts the points at their new positions in their cells (collective). */
+      void
+      relocate();
+
+      grid::BackgroundGrid     &grid;
+      const Settings            settings;
+      particles::PointCloud     cloud;
+      grid::NodalWorkspace      nodes;
+      grid::VelocityConstraints constraints;
+      grid::CellPatches         patches;
+      TransferKernels<Model>    kernels;
+
+      double               current_time = 0.;
+      unsigned int         n_steps = 0, n_full_sorts = 0;
+      dealii::TimerOutput *timer    = nullptr;
+      StepTimeline        *timeline = nullptr;
+    };
+  } // namespace mpm
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,206 @@
+#ifndef slidewave_mpm_particle_engine_templates_h
+#define slidewave_mpm_particle_engine_templates_h
+
+#include <deal.II/base/mpi.h>
+#include <optional>
+#include <slidewave/mpm/particle_engine.h>
+#include <slidewave/mpm/transfer_kernels.templates.h>
+
+// The definitions of ParticleEngine, included only by the sources of the particle models
+// that instantiate it (explicitly, for their model class, next to their kernels).
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    template <class Model>
+    ParticleEngine<Model>::ParticleEngine(grid::BackgroundGrid                    &grid,
+                                          const Model                             &model,
+                                          const std::array<grid::GridBoundary, 4> &sides,
+                                          const std::vector<RigidWall>            &walls,
+                                          const Settings                          &settings)
+      : grid(grid)
+      , settings(settings)
+      , cloud(grid, model.layout(), Model::mass, sides, settings.particle_weight)
+      , nodes(grid,
+              settings.with_node_positions,
+              Model::n_nodal_fields,
+              model.n_used_nodal_fields(),
+              model.needs_lumped_area())
+      , constraints(grid, nodes, sides, walls)
+      , patches(grid, nodes)
+      , kernels(model,
+                cloud,
+                nodes,
+                patches,
+                constraints,
+                {settings.shape_function,
+                 settings.flip_fraction,
+                 model.empty_node_mass(),
+                 settings.prescribed_velocity})
+    {
+      // The order of the followers is the order of their rebuilding after a grid change:
+      // the points first, then the nodes, and what is built on the nodes.
+      grid.attach(cloud);
+      grid.attach(nodes);
+      grid.attach(constraints);
+      grid.attach(patches);
+    }
+
+
+
+    template <class Model>
+    void
+    ParticleEngine<Model>::create_points(const double                               start_time,
+                                         const std::vector<MaterialRegion>         &regions,
+                                         const unsigned int                         n,
+                                         const particles::PointCloud::PropertyFill &fill)
+    {
+      current_time = start_time;
+      // Until the points exist, every partition of the grid (the refinements, the
+      // repartition) weighs the cells by the points they will get, so that each rank
+      // creates the points it keeps: none move and their memory is in cell order.
+      cloud.expect_points(regions, n);
+      grid.create();
+      cloud.initialize();
+      cloud.create(n, regions, fill);
+      grid.balance();
+      // The first full sort builds deal.II's search structures of the grid (a few seconds
+      // at a million cells): here, not in the first step that needs one. It also puts the
+      // memory of points that arrived from other ranks in cell order.
+      cloud.sort();
+    }
+
+
+
+    template <class Model>
+    void
+    ParticleEngine<Model>::save(const std::string &prefix) const
+    {
+      grid.save(prefix);
+    }
+
+
+
+    template <class Model>
+    void
+    ParticleEngine<Model>::load(const std::string &prefix)
+    {
+      // The particle handler lives on the coarse grid before the cells are read.
+      grid.load(prefix, [this]() { cloud.initialize(); });
+    }
+
+
+
+    template <class Model>
+    typename ParticleEngine<Model>::State
+    ParticleEngine<Model>::state() const
+    {
+      return {current_time, dealii::Utilities::MPI::sum(cloud.lost_mass, MPI_COMM_WORLD), n_steps};
+    }
+
+
+
+    template <class Model>
+    void
+    ParticleEngine<Model>::set_state(const State &state)
+    {
+      current_time = state.time;
+      n_steps      = state.n_steps;
+      // The lost mass is a sum over ranks: rank 0 carries what was lost before.
+      cloud.lost_mass
+        = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? state.lost_mass : 0.;
+    }
+
+
+
+    template <class Model>
+    void
+    ParticleEngine<Model>::advance(const double dt, const bool hold_walls)
+    {
+      // A timer section per part of the step when a timer is given.
+      std::optional<dealii::TimerOutput::Scope> part;
+      const auto                                start = [&](const char *name) {
+        if (timer != nullptr)
+          {
+            part.reset();
+            part.emplace(*timer, settings.timer_name + ": " + name);
+          }
+      };
+      if (timeline)
+        timeline->begin_step(n_steps + 1);
+      start("grid changes");
+      grid.change_if_due(n_steps);
+      lap(StepTimeline::grid_changes);
+      ++n_steps;
+      constraints.update_walls(current_time, hold_walls);
+      start("particles to grid");
+      kernels.particles_to_grid();
+      start("grid update");
+      kernels.update_grid(dt, current_time);
+      // Indexed by the points' local indices (their memory slots), which may have gaps
+      // after a relocation.
+      kernels.new_positions().resize(cloud.particles().get_property_pool().n_slots());
+      start("grid to particles");
+      kernels.grid_to_particles(dt, /*with_stresses=*/!settings.musl);
+      lap(StepTimeline::gather);
+      if (settings.musl)
+        {
+          start("MUSL re-map and stresses");
+          kernels.remap_velocities_to_grid();
+          kernels.update_stresses(dt);
+          lap(StepTimeline::musl_remap);
+        }
+      start("sort particles");
+      relocate();
+      current_time += dt;
+    }
+
+
+
+    template <class Model>
+    void
+    ParticleEngine<Model>::relocate()
+    {
+      const std::vector<dealii::Point<2>> &new_positions = kernels.new_positions();
+      const bool                           full_sort
+        = settings.full_sort_every_step || n_steps % grid.changes().balance_interval == 0;
+      if (full_sort)
+        for (auto &particle : cloud.particles())
+          particle.set_location(new_positions[particle.get_local_index()]);
+      // relocate_within_patches() sets the locations itself, also when it gives up.
+      if (full_sort || !cloud.relocate_within_patches(new_positions, patches, timeline))
+        {
+          lap(StepTimeline::relocation);
+          ++n_full_sorts;
+          cloud.sort();
+          lap(StepTimeline::full_sort);
+        }
+      lap(StepTimeline::relocation);
+    }
+
+
+
+    template <class Model>
+    double
+    ParticleEngine<Model>::max_signal_speed() const
+    {
+      return dealii::Utilities::MPI::max(kernels.max_signal_speed(), MPI_COMM_WORLD);
+    }
+
+
+
+    template <class Model>
+    std::array<double, 3>
+    ParticleEngine<Model>::nodal_totals()
+    {
+      kernels.particles_to_grid();
+      std::array<double, 3> totals{{nodes.nodal_mass.l1_norm(), 0., 0.}};
+      for (unsigned int d = 0; d < 2; ++d)
+        totals[d + 1] = nodes.momentum[d].mean_value() * nodes.momentum[d].size();
+      return totals;
+    }
+  } // namespace mpm
+} // namespace slidewave
+
+#endif

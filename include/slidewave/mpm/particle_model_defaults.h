@@ -1,0 +1,89 @@
+#ifndef slidewave_mpm_particle_model_defaults_h
+#define slidewave_mpm_particle_model_defaults_h
+
+#include <slidewave/grid/nodal_workspace.h>
+#include <slidewave/mpm/shape_functions.h>
+
+namespace slidewave
+{
+  namespace mpm
+  {
+    /**
+     * The optional parts of a particle model of the engine (TransferKernels<Model>), each
+     * with a default that does nothing and compiles to nothing: a model derives from this
+     * struct and declares again (hides) only what it does. Nothing here is virtual: the
+     * kernels call the model's own function, inlined in the point loop.
+     *
+     * A model's nodal fields are its own: it says how many it has (n_nodal_fields), what
+     * each point adds to them (scatter_fields), what to do with them once summed
+     * (finish_nodal_fields), how they act at a node in the grid update
+     * (update_nodal_velocity) and what the points read back (gather_fields). The engine
+     * sums, condenses and exchanges them like the mass, and knows nothing else of them.
+     */
+    struct ParticleModelDefaults
+    {
+      /** Nodal fields beyond mass, momentum and force: none. */
+      static constexpr unsigned int n_nodal_fields = 0;
+
+      /** How many of the nodal fields this run uses (the first ones); all by default. */
+      unsigned int
+      n_used_nodal_fields() const
+      {
+        return 0;
+      }
+
+      /** Whether the workspace keeps 1 / the lumped area of each node. */
+      bool
+      needs_lumped_area() const
+      {
+        return false;
+      }
+
+      /** Adds the point's share (with the shape weight @p N_k) to the fields of its k-th
+       *  node, @p sums[f] for field f. */
+      template <typename ScatterTerms>
+      void
+      scatter_fields(const ScatterTerms & /*terms*/, double /*N_k*/, double * /*sums*/) const
+      {
+      }
+
+      /** After the fields were summed and exchanged (owned nodes hold the totals). */
+      void
+      finish_nodal_fields(grid::NodalWorkspace & /*nodes*/) const
+      {
+      }
+
+      /** The force of one component that drives a node of velocity @p v (from its
+       *  momentum) under the summed force @p f: f itself. */
+      double
+      nodal_force_at_node(const double /*v*/, const double f) const
+      {
+        return f;
+      }
+
+      /** After Eqs. 18–19 at a node @p i with mass @p m, before the constraints. */
+      void
+      update_nodal_velocity(const grid::NodalWorkspace & /*nodes*/,
+                            unsigned int /*i*/,
+                            double /*m*/,
+                            double /*dt*/,
+                            double & /*vx*/,
+                            double & /*vy*/) const
+      {
+      }
+
+      /** The model's nodal fields at a point with shape weights @p w, into its properties
+       *  @p p; @p before_update: the model's update follows in the same pass (USL). */
+      template <typename Properties>
+      void
+      gather_fields(const NodeWeights & /*w*/,
+                    const grid::NodalWorkspace & /*nodes*/,
+                    Properties & /*p*/,
+                    bool /*before_update*/) const
+      {
+      }
+    };
+  } // namespace mpm
+} // namespace slidewave
+
+#endif

@@ -14,7 +14,7 @@
 #include <slidewave/depth_averaged/depth_averaged_scene.h>
 #include <slidewave/grid/grid_extent.h>
 #include <slidewave/io/solver_checkpoints.h>
-#include <slidewave/terrain/raster_terrain.h>
+#include <slidewave/terrain/raster_source.h>
 #include <slidewave/water/dam_break_solutions.h>
 #include <sstream>
 
@@ -149,9 +149,13 @@ namespace slidewave
         parameters.depth_raster = scene.resolve_path(parameters.depth_raster);
       if (parameters.grid_from_raster)
         {
-          const auto       footprint = terrain::raster_footprint(section + "/Terrain/Raster file",
-                                                           parameters.elevation_raster,
-                                                           parameters.raster_options);
+          // Opened (and warped) here once; the solver takes the CRS and the elevations
+          // from the same opening.
+          parameters.terrain_raster
+            = std::make_shared<const terrain::RasterSource>(section + "/Terrain/Raster file",
+                                                            parameters.elevation_raster,
+                                                            parameters.raster_options);
+          const auto       footprint = parameters.terrain_raster->footprint();
           grid::GridExtent extent;
           extent.cell_size = parameters.cell_size;
           extent.fit_inside(footprint.lower, footprint.upper, section + "/Grid", "terrain raster");
@@ -238,6 +242,9 @@ namespace slidewave
       timer  = &timer_output;
       grid   = DepthAveragedSolver::make_grid(parameters);
       solver = std::make_unique<DepthAveragedSolver>(parameters, *grid);
+      // The solver has read what it needs from the terrain raster: no copy of it is kept
+      // for the run.
+      parameters.terrain_raster.reset();
       solver->set_timer(timer_output);
       if (write_maps)
         maps = std::make_unique<HazardMaps>(parameters, map_threshold);

@@ -16,16 +16,27 @@ namespace slidewave
   {
     namespace
     {
-      /** The terrain expression sampled on a grid of the given spacing over the domain. */
+      /** @p prm with its terrain raster open: the one the scene opened for its footprint
+       *  or, if none, one opened here, so that the CRS and the elevations come from one
+       *  opening and one warp of the file. */
+      DepthAveragedParameters
+      with_terrain_raster(DepthAveragedParameters prm)
+      {
+        if (!prm.elevation_raster.empty() && prm.terrain_raster == nullptr)
+          prm.terrain_raster
+            = std::make_shared<const terrain::RasterSource>("Depth averaged/Terrain/Raster file",
+                                                            prm.elevation_raster,
+                                                            prm.raster_options);
+        return prm;
+      }
+
+      /** The terrain under the domain: the raster's window, the table, or the expression
+       *  sampled on a grid of the given spacing. */
       terrain::ElevationGrid
       sample_terrain(const DepthAveragedParameters &prm)
       {
-        if (!prm.elevation_raster.empty())
-          return terrain::read_raster_terrain("Depth averaged/Terrain/Raster file",
-                                              prm.elevation_raster,
-                                              prm.lower_left,
-                                              prm.upper_right,
-                                              prm.raster_options);
+        if (prm.terrain_raster != nullptr)
+          return prm.terrain_raster->window(prm.lower_left, prm.upper_right);
         if (!prm.elevation_table.empty())
           {
             auto table = terrain::read_elevation_table("Depth averaged/Terrain/Table file",
@@ -75,19 +86,18 @@ namespace slidewave
 
     DepthAveragedSolver::DepthAveragedSolver(const DepthAveragedParameters &parameters,
                                              grid::BackgroundGrid          &grid)
-      : prm(parameters)
-      , model_crs(prm.elevation_raster.empty() ?
-                    std::string() :
-                    terrain::raster_extent("Depth averaged/Terrain/Raster file",
-                                           prm.elevation_raster,
-                                           prm.raster_options)
-                      .crs_wkt)
+      : prm(with_terrain_raster(parameters))
+      , model_crs(prm.terrain_raster == nullptr ? std::string() :
+                                                  prm.terrain_raster->extent().crs_wkt)
       , elevation(sample_terrain(prm))
       , release(prm, elevation, model_crs)
       , flow(prm, elevation)
       , grid(grid)
       , engine(grid, flow, prm.sides, no_walls, engine_settings(prm))
     {
+      // The raster (a warped copy of a large DEM, maybe) has given its CRS and
+      // elevations: it is not kept for the run.
+      prm.terrain_raster.reset();
     }
 
 

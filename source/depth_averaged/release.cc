@@ -2,7 +2,7 @@
 #include <cmath>
 #include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/release.h>
-#include <slidewave/terrain/raster_terrain.h>
+#include <slidewave/terrain/raster_source.h>
 #include <slidewave/terrain/vector_polygons.h>
 #include <sstream>
 
@@ -111,9 +111,10 @@ namespace slidewave
           options.resampling             = "near";
           options.nodata_as_nan          = true;
           options.window_name            = "the release area";
-          const auto extent
-            = terrain::raster_extent(path + "/Depth raster", prm.depth_raster, options);
-          const double half[2] = {0.5 * extent.pixel_x, 0.5 * extent.pixel_y};
+          // One opening (and warp) for the extent and the values.
+          const terrain::RasterSource raster(path + "/Depth raster", prm.depth_raster, options);
+          const auto                  extent  = raster.extent();
+          const double                half[2] = {0.5 * extent.pixel_x, 0.5 * extent.pixel_y};
           for (unsigned int d = 0; d < 2; ++d)
             {
               if (lower[d] < extent.lower[d] && lower[d] >= extent.lower[d] - half[d])
@@ -121,8 +122,7 @@ namespace slidewave
               if (upper[d] > extent.upper[d] && upper[d] <= extent.upper[d] + half[d])
                 upper[d] = extent.upper[d];
             }
-          depth_raster = std::make_unique<terrain::ElevationGrid>(terrain::read_raster_terrain(
-            path + "/Depth raster", prm.depth_raster, lower, upper, options));
+          depth_raster = std::make_unique<terrain::ElevationGrid>(raster.window(lower, upper));
         }
       else if (prm.depth_attribute.empty())
         {

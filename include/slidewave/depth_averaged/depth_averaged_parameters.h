@@ -86,6 +86,11 @@ namespace slidewave
        *  coordinates are taken; empty: not a raster. */
       std::string            elevation_raster;
       terrain::RasterOptions raster_options;
+      /** The terrain raster, opened (and warped) once for the whole set-up and shared:
+       *  by the scene when 'Extent = terrain raster' asks it for its footprint, else by
+       *  the solver, which takes its CRS and elevations from it and lets it go; null until
+       *  then, and for a terrain that is not a raster. */
+      std::shared_ptr<const terrain::RasterSource> terrain_raster;
       /** Spacing of the elevation grid the expression is sampled on [m]. */
       double terrain_spacing = 0.;
 

@@ -13,12 +13,13 @@ namespace slidewave
     BackgroundGrid::BackgroundGrid(const dealii::Point<2> &lower_left,
                                    const dealii::Point<2> &upper_right,
                                    const double            cell_size,
-                                   const GridChanges      &changes)
+                                   const GridChanges      &changes,
+                                   MPI_Comm                communicator)
       : corner_low(lower_left)
       , corner_high(upper_right)
       , h(cell_size)
       , settings(changes)
-      , tria(MPI_COMM_WORLD, dealii::Triangulation<2>::limit_level_difference_at_vertices)
+      , tria(communicator, dealii::Triangulation<2>::limit_level_difference_at_vertices)
       , fe(1)
     {
     }
@@ -74,7 +75,7 @@ namespace slidewave
           tria.execute_coarsening_and_refinement();
           vertex_to_cells = dealii::GridTools::vertex_to_cell_map(tria);
         }
-      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
+      if (dealii::Utilities::MPI::n_mpi_processes(tria.get_communicator()) > 1
           && settings.imbalance_threshold > 0.)
         tria.repartition();
       distribute_dofs();
@@ -156,7 +157,7 @@ namespace slidewave
             for (const GridFollower *follower : followers)
               work += follower->cell_weight(cell, dealii::Triangulation<2>::CELL_PERSIST);
           }
-      return imbalance(static_cast<double>(work));
+      return imbalance(static_cast<double>(work), tria.get_communicator());
     }
 
 
@@ -180,7 +181,7 @@ namespace slidewave
     {
       const bool changes   = flag_for_adaptation(cells_to_keep_fine());
       const bool rebalance = !changes && settings.imbalance_threshold > 0.
-                             && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1
+                             && dealii::Utilities::MPI::n_mpi_processes(tria.get_communicator()) > 1
                              && load_imbalance() > settings.imbalance_threshold;
       if (!changes && !rebalance)
         return false;
@@ -199,7 +200,7 @@ namespace slidewave
     bool
     BackgroundGrid::balance()
     {
-      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1
+      if (dealii::Utilities::MPI::n_mpi_processes(tria.get_communicator()) == 1
           || !(settings.imbalance_threshold > 0.)
           || load_imbalance() <= settings.imbalance_threshold)
         return false;
@@ -260,7 +261,7 @@ namespace slidewave
                 changes = true;
               }
           }
-      return dealii::Utilities::MPI::logical_or(changes, MPI_COMM_WORLD);
+      return dealii::Utilities::MPI::logical_or(changes, tria.get_communicator());
     }
 
 
@@ -315,7 +316,7 @@ namespace slidewave
       dealii::DoFTools::extract_locally_relevant_dofs(dofs, relevant);
       dealii::LinearAlgebra::distributed::Vector<double> area(dofs.locally_owned_dofs(),
                                                               relevant,
-                                                              MPI_COMM_WORLD);
+                                                              tria.get_communicator());
       std::vector<dealii::types::global_dof_index>       indices(4);
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -333,11 +334,11 @@ namespace slidewave
 
 
     double
-    BackgroundGrid::imbalance(const double work)
+    BackgroundGrid::imbalance(const double work, MPI_Comm communicator)
     {
-      const double max  = dealii::Utilities::MPI::max(work, MPI_COMM_WORLD);
-      const double mean = dealii::Utilities::MPI::sum(work, MPI_COMM_WORLD)
-                          / dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      const double max  = dealii::Utilities::MPI::max(work, communicator);
+      const double mean = dealii::Utilities::MPI::sum(work, communicator)
+                          / dealii::Utilities::MPI::n_mpi_processes(communicator);
       return mean > 0. ? max / mean : 1.;
     }
 

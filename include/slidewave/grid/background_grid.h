@@ -61,12 +61,15 @@ namespace slidewave
       /**
        * A grid of square cells of side @p cell_size over [@p lower_left, @p upper_right];
        * with changes.adaptive_levels > 0 the base grid is 2^adaptive_levels times coarser
-       * and refined where the followers need it.
+       * and refined where the followers need it. The cells are distributed over the ranks
+       * of @p communicator (a scene uses all of them; a test reading a checkpoint on fewer
+       * ranks than wrote it passes a smaller communicator).
        */
       BackgroundGrid(const dealii::Point<2> &lower_left,
                      const dealii::Point<2> &upper_right,
                      double                  cell_size,
-                     const GridChanges      &changes = GridChanges());
+                     const GridChanges      &changes      = GridChanges(),
+                     MPI_Comm                communicator = MPI_COMM_WORLD);
 
       /**
        * Set-up: the coarse grid (as few cells as the sides allow), refined globally to
@@ -177,9 +180,16 @@ namespace slidewave
       double
       load_imbalance() const;
 
-      /** Max over mean of @p work over the ranks (collective). */
+      /** Max over mean of @p work over the ranks of @p communicator (collective). */
       static double
-      imbalance(double work);
+      imbalance(double work, MPI_Comm communicator = MPI_COMM_WORLD);
+
+      /** The ranks the cells are distributed over. */
+      MPI_Comm
+      communicator() const
+      {
+        return tria.get_communicator();
+      }
 
       const dealii::parallel::distributed::Triangulation<2> &
       triangulation() const

@@ -1,0 +1,189 @@
+#ifndef slidewave_grid_finite_element_field_h
+#define slidewave_grid_finite_element_field_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <functional>
+#include <memory>
+#include <slidewave/grid/background_grid.h>
+#include <slidewave/grid/grid_follower.h>
+
+namespace slidewave
+{
+  namespace grid
+  {
+    /**
+     * A continuous scalar finite-element field (Q1 Lagrange element) living on the
+     * background grid and following every event of its cells: the pattern a grid
+     * physics solved by finite elements (the stabilized fluid of issue 26) copies, with
+     * an FESystem in place of the scalar element.
+     *
+     * The field has its own DoFHandler on the grid's triangulation (the grid's own Q1
+     * DoFHandler belongs to the material point method and is renumbered at the grid's
+     * will), its hanging-node constraints, and its values in two Trilinos vectors: the
+     * locally owned entries (what a solver writes) and a ghosted copy (what assembly,
+     * the transfer and the indicators read). Through the grid's events:
+     * - grid_ready(): the dofs are distributed, the constraints built, the vectors sized
+     *   (zero);
+     * - prepare_for_grid_change() / grid_changed(): deal.II's
+     *   parallel::distributed::SolutionTransfer packs the values per cell before the
+     *   cells change and interpolates them onto the new cells (Q1 interpolation from the
+     *   parent to the children, the children's vertex values for the parent; unchanged
+     *   cells keep their values on whichever rank they land), then the constraints make the
+     *   field continuous at hanging nodes;
+     * - prepare_for_checkpoint() / checkpoint_loaded(): the same per-cell values are
+     *   written with the grid's cells and read back, on any number of ranks.
+     *
+     * It may also ask for fine cells where it is steep (|grad u| h above a threshold) and
+     * add its work to the cells' partitioning weight (a weight per degree of freedom of
+     * the cell, plus an optional user weight).
+     */
+    class FiniteElementField : public GridFollower
+    {
+    public:
+      using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+      /** A user share of a cell's partitioning weight (see GridFollower::cell_weight()). */
+      using CellWeight = std::function<unsigned long long(const CellIterator &, CellStatus)>;
+
+      /** A field on @p grid; attaches itself to the grid, so create it before the grid's
+       *  create() or load(). The field is zero until interpolate() or a checkpoint. */
+      explicit FiniteElementField(BackgroundGrid &grid);
+
+      FiniteElementField(const FiniteElementField &) = delete;
+      FiniteElementField &
+      operator=(const FiniteElementField &)
+        = delete;
+
+      /** Sets the field to the Q1 interpolant of @p function (nodal values), made
+       *  continuous at hanging nodes (collective). */
+      void
+      interpolate(const dealii::Function<2> &function);
+
+      /** The locally owned values, for a solver to write; call values_changed() after. */
+      VectorType &
+      locally_owned_values()
+      {
+        return owned_values;
+      }
+
+      /** After the owned values were written: hanging nodes made conforming and the
+       *  ghosted copy updated (collective). */
+      void
+      values_changed();
+
+      /** The field's values on the locally relevant dofs (owned and ghost). */
+      const VectorType &
+      values() const
+      {
+        return ghosted_values;
+      }
+
+      /** The integral of the field over the domain (2x2 Gauss points per cell, exact for
+       *  the bilinear Q1 function on the grid's square cells; collective). */
+      double
+      integral() const;
+
+      const dealii::DoFHandler<2> &
+      dof_handler() const
+      {
+        return dofs;
+      }
+
+      const dealii::FiniteElement<2> &
+      finite_element() const
+      {
+        return fe;
+      }
+
+      /** The hanging-node constraints of the current cells. */
+      const dealii::AffineConstraints<double> &
+      constraints() const
+      {
+        return hanging_node_constraints;
+      }
+
+      const dealii::IndexSet &
+      locally_owned_dofs() const
+      {
+        return owned_dofs;
+      }
+
+      const dealii::IndexSet &
+      locally_relevant_dofs() const
+      {
+        return relevant_dofs;
+      }
+
+      /** Cells where |grad u| h exceeds @p threshold (u in its units, h the cell side)
+       *  are kept fine by the grid's adaptation; <= 0 (the default): no indicator. */
+      void
+      set_refinement_threshold(const double threshold)
+      {
+        gradient_threshold = threshold;
+      }
+
+      /** The field's share of a cell's partitioning weight: @p weight per degree of
+       *  freedom of the cell (the grid counts 1000 for the cell itself; default 0). */
+      void
+      set_weight_per_dof(const unsigned int weight)
+      {
+        weight_per_dof = weight;
+      }
+
+      /** An additional share of the cells' weight computed by @p weight (empty: none). It
+       *  is called during repartitioning: it may read the cell, not the field. */
+      void
+      set_cell_weight(CellWeight weight)
+      {
+        user_weight = std::move(weight);
+      }
+
+      void
+      grid_ready() override;
+
+      void
+      prepare_for_grid_change() override;
+
+      void
+      grid_changed() override;
+
+      void
+      prepare_for_checkpoint() override;
+
+      void
+      checkpoint_loaded() override;
+
+      void
+      add_refinement_indicators(std::vector<bool> &keep_fine) const override;
+
+      unsigned long long
+      cell_weight(const CellIterator &cell, CellStatus status) const override;
+
+    private:
+      /** Distributes the dofs on the current cells, builds the constraints and sizes the
+       *  vectors (zero). */
+      void
+      setup_dofs();
+
+      const BackgroundGrid             &grid;
+      dealii::FE_Q<2>                   fe;
+      dealii::DoFHandler<2>             dofs;
+      dealii::IndexSet                  owned_dofs, relevant_dofs;
+      dealii::AffineConstraints<double> hanging_node_constraints;
+      VectorType                        owned_values, ghosted_values;
+      double                            gradient_threshold = 0.;
+      unsigned int                      weight_per_dof     = 0;
+      CellWeight                        user_weight;
+      /** The values packed for the next change or checkpoint; alive until they are
+       *  taken back, since deal.II calls it when the cells are written or moved. */
+      std::unique_ptr<dealii::parallel::distributed::SolutionTransfer<2, VectorType>> transfer;
+    };
+  } // namespace grid
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,190 @@
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <slidewave/grid/finite_element_field.h>
+
+namespace slidewave
+{
+  namespace grid
+  {
+    FiniteElementField::FiniteElementField(BackgroundGrid &grid)
+      : grid(grid)
+      , fe(1)
+    {
+      grid.attach(*this);
+    }
+
+
+
+    void
+    FiniteElementField::setup_dofs()
+    {
+      dofs.distribute_dofs(fe);
+      owned_dofs = dofs.locally_owned_dofs();
+      dealii::DoFTools::extract_locally_relevant_dofs(dofs, relevant_dofs);
+
+      hanging_node_constraints.clear();
+      hanging_node_constraints.reinit(relevant_dofs);
+      dealii::DoFTools::make_hanging_node_constraints(dofs, hanging_node_constraints);
+      hanging_node_constraints.close();
+
+      const MPI_Comm communicator = grid.communicator();
+      owned_values.reinit(owned_dofs, communicator);
+      ghosted_values.reinit(owned_dofs, relevant_dofs, communicator);
+    }
+
+
+
+    void
+    FiniteElementField::interpolate(const dealii::Function<2> &function)
+    {
+      dealii::VectorTools::interpolate(dofs, function, owned_values);
+      values_changed();
+    }
+
+
+
+    void
+    FiniteElementField::values_changed()
+    {
+      // The value at a hanging node is the one of the coarse side's edge: without it the
+      // field would jump across the edge (and a transfer would carry the jump along).
+      hanging_node_constraints.distribute(owned_values);
+      ghosted_values = owned_values;
+    }
+
+
+
+    double
+    FiniteElementField::integral() const
+    {
+      const dealii::QGauss<2> quadrature(2);
+      dealii::FEValues<2>     fe_values(fe,
+                                    quadrature,
+                                    dealii::update_values | dealii::update_JxW_values);
+      std::vector<double>     u(quadrature.size());
+      double                  sum = 0.;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values.get_function_values(ghosted_values, u);
+            for (unsigned int q = 0; q < quadrature.size(); ++q)
+              sum += u[q] * fe_values.JxW(q);
+          }
+      return dealii::Utilities::MPI::sum(sum, grid.communicator());
+    }
+
+
+
+    void
+    FiniteElementField::grid_ready()
+    {
+      // The triangulation was built anew from its coarse grid (create() or load()): the
+      // DoFHandler is bound to it again.
+      dofs.reinit(grid.triangulation());
+      setup_dofs();
+      transfer.reset();
+    }
+
+
+
+    void
+    FiniteElementField::prepare_for_grid_change()
+    {
+      // The transfer reads the ghosted values of every owned cell now, and keeps a pointer
+      // to them until the cells have changed: ghosted_values must not change before
+      // grid_changed().
+      transfer
+        = std::make_unique<dealii::parallel::distributed::SolutionTransfer<2, VectorType>>(dofs);
+      transfer->prepare_for_coarsening_and_refinement(ghosted_values);
+    }
+
+
+
+    void
+    FiniteElementField::grid_changed()
+    {
+      // The transfer interpolates from the old dof indices it stored: the new dofs are
+      // distributed first, then the vectors sized for them.
+      setup_dofs();
+      if (transfer)
+        {
+          transfer->interpolate(owned_values);
+          transfer.reset();
+        }
+      values_changed();
+    }
+
+
+
+    void
+    FiniteElementField::prepare_for_checkpoint()
+    {
+      // Per-cell values, written with the cells by the triangulation's save(): a run
+      // resumed on another number of ranks gets each cell's values wherever the cell lands.
+      transfer
+        = std::make_unique<dealii::parallel::distributed::SolutionTransfer<2, VectorType>>(dofs);
+      transfer->prepare_for_serialization(ghosted_values);
+    }
+
+
+
+    void
+    FiniteElementField::checkpoint_loaded()
+    {
+      // grid_ready() has distributed the dofs on the cells that were read.
+      transfer
+        = std::make_unique<dealii::parallel::distributed::SolutionTransfer<2, VectorType>>(dofs);
+      transfer->deserialize(owned_values);
+      transfer.reset();
+      values_changed();
+    }
+
+
+
+    void
+    FiniteElementField::add_refinement_indicators(std::vector<bool> &keep_fine) const
+    {
+      // Before grid_ready() (the grid's initial adaptive levels) the field has no values:
+      // it asks for nothing.
+      if (!(gradient_threshold > 0.) || ghosted_values.size() != dofs.n_dofs()
+          || !dofs.has_active_dofs())
+        return;
+      // The gradient of a Q1 function is largest at one of the corners of the cell; the
+      // 2x2 Gauss points see it closely enough for an indicator and cost four points.
+      const dealii::QGauss<2>           quadrature(2);
+      dealii::FEValues<2>               fe_values(fe, quadrature, dealii::update_gradients);
+      std::vector<dealii::Tensor<1, 2>> gradients(quadrature.size());
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            fe_values.get_function_gradients(ghosted_values, gradients);
+            double steepest = 0.;
+            for (const auto &gradient : gradients)
+              steepest = std::max(steepest, gradient.norm());
+            if (steepest * std::sqrt(cell->measure()) > gradient_threshold) // h of a square
+              keep_fine[cell->active_cell_index()] = true;
+          }
+    }
+
+
+
+    unsigned long long
+    FiniteElementField::cell_weight(const CellIterator &cell, const CellStatus status) const
+    {
+      // Every cell of Q1 has the same number of dofs, whether it persists, is a parent to
+      // be refined (each child weighs the same) or a parent made of coarsened children:
+      // the share does not read the DoFHandler, which is out of date during the change.
+      unsigned long long weight
+        = static_cast<unsigned long long>(weight_per_dof) * fe.n_dofs_per_cell();
+      if (user_weight)
+        weight += user_weight(cell, status);
+      return weight;
+    }
+  } // namespace grid
+} // namespace slidewave

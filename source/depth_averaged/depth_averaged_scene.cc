@@ -25,7 +25,97 @@ namespace slidewave
     namespace
     {
       const std::string section = "Depth averaged";
-    }
+
+
+
+      /** Subsection "Hazard maps": whether and how the maps are written at the end. */
+      void
+      declare_hazard_map_parameters(dealii::ParameterHandler &prm)
+      {
+        using namespace dealii::Patterns;
+        prm.enter_subsection("Hazard maps");
+        {
+          prm.declare_entry("Enable",
+                            "false",
+                            Bool(),
+                            "Write hazard maps at the end of the run into OUTPUT/maps: GeoTIFFs "
+                            "of one pixel per grid node (in the terrain raster's CRS when the "
+                            "terrain is a raster) of the peak flow thickness, peak flow "
+                            "velocity, peak dynamic pressure rho v^2, peak static pressure "
+                            "rho g h, the time of arrival and the deposit thickness at the end; "
+                            "the outlines of the affected and the deposit areas as GeoJSON; "
+                            "summary.csv with their areas, the runout from the release's centre "
+                            "of mass, the elevation drop and the travel angle.");
+          prm.declare_entry("Thickness threshold",
+                            "0.05",
+                            Double(0.),
+                            "A node is reached (affected, part of the deposit) where the flow "
+                            "is thicker than this [m].");
+          prm.declare_entry("Interval",
+                            "5",
+                            Integer(1),
+                            "Steps between updates of the peaks and arrival times (and the "
+                            "last step). Each update costs about one step (a pass over the "
+                            "columns and an exchange): 1 for the sharpest maps.");
+        }
+        prm.leave_subsection();
+      }
+
+
+
+      /** Subsection "Verification": the exact solutions, the conservation and symmetry
+       *  checks and their tolerances. */
+      void
+      declare_verification_parameters(dealii::ParameterHandler &prm)
+      {
+        using namespace dealii::Patterns;
+        prm.enter_subsection("Verification");
+        {
+          prm.declare_entry("Exact solution",
+                            "none",
+                            Selection("none|still state|dam break"),
+                            "'still state': material at rest with its surface at the "
+                            "release's 'Surface' (the lake at rest of paper 001, §4.1): the "
+                            "L1 (sum of |e| A_p) and L-infinity errors of h, hu and hv at the "
+                            "points in the statistics and at the end (the paper's Table 1). "
+                            "'dam break': the dam break along x of 'Left depth' and 'Right "
+                            "depth' at 'Dam position' (Ritter for a dry bed, Stoker for a wet "
+                            "one): the L1 error of the nodal depth relative to the exact "
+                            "volume, sum |h_i - h(x_i, t)| a_i / sum h(x_i, t) a_i.");
+          prm.declare_entry("Dam position", "0", Double(), "x0 of the dam break [m].");
+          prm.declare_entry("Left depth", "1", Double(0.), "h_l of the dam break [m].");
+          prm.declare_entry("Right depth", "0", Double(0.), "h_r of the dam break [m].");
+          prm.declare_entry("Conservation check",
+                            "false",
+                            Bool(),
+                            "Add the columns nodal_mass_error and nodal_momentum_error to the "
+                            "statistics: the totals of a particle-to-grid transfer against "
+                            "the points' (paper 001, Eq. 44), relative to the mass and to "
+                            "mass times the largest speed.");
+          prm.declare_entry("Conservation tolerance",
+                            "0",
+                            Double(0.),
+                            "With 'Conservation check': if > 0, the run fails (exit status 3) "
+                            "when either relative error exceeds it at any statistics row.");
+          prm.declare_entry("Symmetry line",
+                            "",
+                            Anything(),
+                            "If a number y_s: the flow must stay symmetric about the line y = "
+                            "y_s (a symmetric terrain and release, e.g. paper 001, §4.2). After "
+                            "every step, |centroid_y - y_s| / cell size and |momentum_y| / "
+                            "(mass x largest speed) are measured; the run fails (exit status 3) "
+                            "if the largest exceeds 'Symmetry tolerance'.");
+          prm.declare_entry("Symmetry tolerance", "1e-9", Double(0.), "See 'Symmetry line'.");
+          prm.declare_entry("Tolerance",
+                            "0",
+                            Double(0.),
+                            "If > 0, the run fails (exit status 3) when the error at the end "
+                            "exceeds it (still state: L-infinity of h; dam break: the L1 "
+                            "error).");
+        }
+        prm.leave_subsection();
+      }
+    } // namespace
 
 
 
@@ -55,77 +145,8 @@ namespace slidewave
                         Bool(),
                         "Also write the grid (grid/*.pvtu, grid.pvd) with the nodal depth, "
                         "the flow surface h + Z, the terrain and the nodal velocity.");
-      prm.enter_subsection("Hazard maps");
-      {
-        prm.declare_entry("Enable",
-                          "false",
-                          Bool(),
-                          "Write hazard maps at the end of the run into OUTPUT/maps: GeoTIFFs "
-                          "of one pixel per grid node (in the terrain raster's CRS when the "
-                          "terrain is a raster) of the peak flow thickness, peak flow "
-                          "velocity, peak dynamic pressure rho v^2, peak static pressure "
-                          "rho g h, the time of arrival and the deposit thickness at the end; "
-                          "the outlines of the affected and the deposit areas as GeoJSON; "
-                          "summary.csv with their areas, the runout from the release's centre "
-                          "of mass, the elevation drop and the travel angle.");
-        prm.declare_entry("Thickness threshold",
-                          "0.05",
-                          Double(0.),
-                          "A node is reached (affected, part of the deposit) where the flow "
-                          "is thicker than this [m].");
-        prm.declare_entry("Interval",
-                          "5",
-                          Integer(1),
-                          "Steps between updates of the peaks and arrival times (and the "
-                          "last step). Each update costs about one step (a pass over the "
-                          "columns and an exchange): 1 for the sharpest maps.");
-      }
-      prm.leave_subsection();
-      prm.enter_subsection("Verification");
-      {
-        prm.declare_entry("Exact solution",
-                          "none",
-                          Selection("none|still state|dam break"),
-                          "'still state': material at rest with its surface at the "
-                          "release's 'Surface' (the lake at rest of paper 001, §4.1): the "
-                          "L1 (sum of |e| A_p) and L-infinity errors of h, hu and hv at the "
-                          "points in the statistics and at the end (the paper's Table 1). "
-                          "'dam break': the dam break along x of 'Left depth' and 'Right "
-                          "depth' at 'Dam position' (Ritter for a dry bed, Stoker for a wet "
-                          "one): the L1 error of the nodal depth relative to the exact "
-                          "volume, sum |h_i - h(x_i, t)| a_i / sum h(x_i, t) a_i.");
-        prm.declare_entry("Dam position", "0", Double(), "x0 of the dam break [m].");
-        prm.declare_entry("Left depth", "1", Double(0.), "h_l of the dam break [m].");
-        prm.declare_entry("Right depth", "0", Double(0.), "h_r of the dam break [m].");
-        prm.declare_entry("Conservation check",
-                          "false",
-                          Bool(),
-                          "Add the columns nodal_mass_error and nodal_momentum_error to the "
-                          "statistics: the totals of a particle-to-grid transfer against "
-                          "the points' (paper 001, Eq. 44), relative to the mass and to "
-                          "mass times the largest speed.");
-        prm.declare_entry("Conservation tolerance",
-                          "0",
-                          Double(0.),
-                          "With 'Conservation check': if > 0, the run fails (exit status 3) "
-                          "when either relative error exceeds it at any statistics row.");
-        prm.declare_entry("Symmetry line",
-                          "",
-                          Anything(),
-                          "If a number y_s: the flow must stay symmetric about the line y = "
-                          "y_s (a symmetric terrain and release, e.g. paper 001, §4.2). After "
-                          "every step, |centroid_y - y_s| / cell size and |momentum_y| / "
-                          "(mass x largest speed) are measured; the run fails (exit status 3) "
-                          "if the largest exceeds 'Symmetry tolerance'.");
-        prm.declare_entry("Symmetry tolerance", "1e-9", Double(0.), "See 'Symmetry line'.");
-        prm.declare_entry("Tolerance",
-                          "0",
-                          Double(0.),
-                          "If > 0, the run fails (exit status 3) when the error at the end "
-                          "exceeds it (still state: L-infinity of h; dam break: the L1 "
-                          "error).");
-      }
-      prm.leave_subsection();
+      declare_hazard_map_parameters(prm);
+      declare_verification_parameters(prm);
       prm.leave_subsection();
     }
 

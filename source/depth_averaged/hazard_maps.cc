@@ -9,7 +9,9 @@
 #include <ogr_api.h>
 #include <ogr_srs_api.h>
 #include <slidewave/depth_averaged/hazard_maps.h>
+#include <slidewave/terrain/elevation_grid.h>
 #include <slidewave/terrain/vector_polygons.h>
+#include <utility>
 
 namespace slidewave
 {
@@ -82,6 +84,128 @@ namespace slidewave
           OSRDestroySpatialReference(crs);
         GDALClose(vector);
         GDALClose(mask);
+      }
+
+
+
+      /** The nodes the flow reached and the deposit's, their areas, and the runout from the
+       *  crown to the toe with its elevation drop (what summary.csv reports). */
+      struct Runout
+      {
+        std::vector<char> affected, deposit;
+        double            affected_area, deposit_area, runout, drop;
+        dealii::Point<2>  crown, toe;
+      };
+
+
+
+      /** Measures the Runout on the reduced @p maps (thickness first, arrival fifth, deposit
+       *  sixth) of the grid of @p nx x @p ny cells of size @p c from @p lower_left. */
+      Runout
+      measure_runout(const std::vector<std::vector<double>> &maps,
+                     const terrain::ElevationGrid           &terrain,
+                     const dealii::Point<2>                 &lower_left,
+                     const double                            c,
+                     const unsigned int                      nx,
+                     const unsigned int                      ny,
+                     const double                            threshold,
+                     const dealii::Point<2>                 &release_centre,
+                     const double                            start_time)
+      {
+        // Areas, and the runout as a landslide's travel angle is measured: from the crown
+        // (the highest node of the release, reached at the start) to the toe (the affected
+        // node farthest from it), H / L (the Fahrboeschung).
+        std::vector<char> affected(maps[0].size()), deposit(maps[0].size());
+        double            affected_area = 0., deposit_area = 0., runout = 0., drop = 0.;
+        const auto        node = [&](const unsigned int i, const unsigned int j) {
+          return dealii::Point<2>(lower_left[0] + i * c, lower_left[1] + j * c);
+        };
+        dealii::Point<2> crown = release_centre, toe = release_centre;
+        double           crown_elevation = -std::numeric_limits<double>::infinity();
+        for (unsigned int j = 0; j <= ny; ++j)
+          for (unsigned int i = 0; i <= nx; ++i)
+            {
+              const std::size_t k = static_cast<std::size_t>(j) * (nx + 1) + i;
+              // A node's share of the area: a quarter of each cell around it.
+              const double a
+                = c * c * (i == 0 || i == nx ? 0.5 : 1.) * (j == 0 || j == ny ? 0.5 : 1.);
+              affected[k] = maps[0][k] > threshold;
+              deposit[k]  = maps[5][k] > threshold;
+              affected_area += affected[k] ? a : 0.;
+              deposit_area += deposit[k] ? a : 0.;
+              if (affected[k] && maps[4][k] <= start_time
+                  && terrain.value(node(i, j)) > crown_elevation)
+                {
+                  crown_elevation = terrain.value(node(i, j));
+                  crown           = node(i, j);
+                }
+            }
+        for (unsigned int j = 0; j <= ny; ++j)
+          for (unsigned int i = 0; i <= nx; ++i)
+            if (affected[static_cast<std::size_t>(j) * (nx + 1) + i]
+                && node(i, j).distance(crown) > runout)
+              {
+                runout = node(i, j).distance(crown);
+                toe    = node(i, j);
+              }
+        drop = terrain.value(crown) - terrain.value(toe);
+        return {std::move(affected),
+                std::move(deposit),
+                affected_area,
+                deposit_area,
+                runout,
+                drop,
+                crown,
+                toe};
+      }
+
+
+
+      /** The release as the model took it (a vector file's polygons reprojected), for
+       *  plots and GIS: release_area.geojson in @p directory. */
+      void
+      write_release_area(const std::string         &directory,
+                         const DepthAveragedSolver &solver,
+                         const std::string         &crs_wkt)
+      {
+        std::vector<terrain::VectorPolygon> release;
+        for (const auto &area : solver.release_area().regions())
+          release.push_back({area.polygon, area.holes});
+        if (!terrain::write_polygons(directory + "/release_area.geojson", release, crs_wkt))
+          std::fprintf(stderr,
+                       "slidewave: could not write %s/release_area.geojson\n",
+                       directory.c_str());
+      }
+
+
+
+      /** summary.csv in @p directory: the threshold, the areas, the runout and the largest
+       *  value of each peak map. */
+      void
+      write_summary(const std::string                      &directory,
+                    const double                            threshold,
+                    const Runout                           &r,
+                    const std::vector<std::vector<double>> &maps)
+      {
+        std::ofstream summary(directory + "/summary.csv");
+        summary.precision(10);
+        summary << "quantity,value,unit\n"
+                << "threshold," << threshold << ",m\n"
+                << "affected_area," << r.affected_area << ",m^2\n"
+                << "deposit_area," << r.deposit_area << ",m^2\n"
+                << "crown_x," << r.crown[0] << ",m\n"
+                << "crown_y," << r.crown[1] << ",m\n"
+                << "toe_x," << r.toe[0] << ",m\n"
+                << "toe_y," << r.toe[1] << ",m\n"
+                << "runout," << r.runout << ",m\n"
+                << "elevation_drop," << r.drop << ",m\n"
+                << "travel_angle,"
+                << (r.runout > 0. ? std::atan2(r.drop, r.runout) * 180. / M_PI : 0.)
+                << ",degrees\n";
+        const char *units[] = {"m", "m/s", "Pa", "Pa"};
+        for (unsigned int m = 0; m < 4; ++m)
+          summary << "max_" << HazardMaps::names()[m] << ","
+                  << *std::max_element(maps[m].begin(), maps[m].end()) << "," << units[m] << "\n";
       }
     } // namespace
 
@@ -195,74 +319,20 @@ namespace slidewave
       for (unsigned int m = 0; m < maps.size(); ++m)
         write_geotiff(directory + "/" + names()[m] + ".tif", maps[m], nx, ny, transform, crs_wkt);
 
-      // Outlines, areas, and the runout as a landslide's travel angle is measured: from
-      // the crown (the highest node of the release, reached at the start) to the toe (the
-      // affected node farthest from it), H / L (the Fahrboeschung).
-      const auto       &terrain = solver.model().terrain();
-      std::vector<char> affected(maps[0].size()), deposit(maps[0].size());
-      double            affected_area = 0., deposit_area = 0., runout = 0., drop = 0.;
-      const auto        node = [&](const unsigned int i, const unsigned int j) {
-        return dealii::Point<2>(prm.lower_left[0] + i * c, prm.lower_left[1] + j * c);
-      };
-      dealii::Point<2> crown = release_centre, toe = release_centre;
-      double           crown_elevation = -std::numeric_limits<double>::infinity();
-      for (unsigned int j = 0; j <= ny; ++j)
-        for (unsigned int i = 0; i <= nx; ++i)
-          {
-            const std::size_t k = static_cast<std::size_t>(j) * (nx + 1) + i;
-            // A node's share of the area: a quarter of each cell around it.
-            const double a
-              = c * c * (i == 0 || i == nx ? 0.5 : 1.) * (j == 0 || j == ny ? 0.5 : 1.);
-            affected[k] = maps[0][k] > threshold;
-            deposit[k]  = maps[5][k] > threshold;
-            affected_area += affected[k] ? a : 0.;
-            deposit_area += deposit[k] ? a : 0.;
-            if (affected[k] && maps[4][k] <= start_time
-                && terrain.value(node(i, j)) > crown_elevation)
-              {
-                crown_elevation = terrain.value(node(i, j));
-                crown           = node(i, j);
-              }
-          }
-      for (unsigned int j = 0; j <= ny; ++j)
-        for (unsigned int i = 0; i <= nx; ++i)
-          if (affected[static_cast<std::size_t>(j) * (nx + 1) + i]
-              && node(i, j).distance(crown) > runout)
-            {
-              runout = node(i, j).distance(crown);
-              toe    = node(i, j);
-            }
-      drop = terrain.value(crown) - terrain.value(toe);
-      write_outline(directory + "/affected_area.geojson", affected, nx, ny, transform, crs_wkt);
-      write_outline(directory + "/deposit_area.geojson", deposit, nx, ny, transform, crs_wkt);
-      // The release as the model took it (a vector file's polygons reprojected), for
-      // plots and GIS.
-      std::vector<terrain::VectorPolygon> release;
-      for (const auto &area : solver.release_area().regions())
-        release.push_back({area.polygon, area.holes});
-      if (!terrain::write_polygons(directory + "/release_area.geojson", release, crs_wkt))
-        std::fprintf(stderr,
-                     "slidewave: could not write %s/release_area.geojson\n",
-                     directory.c_str());
-
-      std::ofstream summary(directory + "/summary.csv");
-      summary.precision(10);
-      summary << "quantity,value,unit\n"
-              << "threshold," << threshold << ",m\n"
-              << "affected_area," << affected_area << ",m^2\n"
-              << "deposit_area," << deposit_area << ",m^2\n"
-              << "crown_x," << crown[0] << ",m\n"
-              << "crown_y," << crown[1] << ",m\n"
-              << "toe_x," << toe[0] << ",m\n"
-              << "toe_y," << toe[1] << ",m\n"
-              << "runout," << runout << ",m\n"
-              << "elevation_drop," << drop << ",m\n"
-              << "travel_angle," << (runout > 0. ? std::atan2(drop, runout) * 180. / M_PI : 0.)
-              << ",degrees\n";
-      const char *units[] = {"m", "m/s", "Pa", "Pa"};
-      for (unsigned int m = 0; m < 4; ++m)
-        summary << "max_" << names()[m] << "," << *std::max_element(maps[m].begin(), maps[m].end())
-                << "," << units[m] << "\n";
+      // The outlines and the release for GIS, the areas and the runout in the summary.
+      const Runout r = measure_runout(maps,
+                                      solver.model().terrain(),
+                                      prm.lower_left,
+                                      c,
+                                      nx,
+                                      ny,
+                                      threshold,
+                                      release_centre,
+                                      start_time);
+      write_outline(directory + "/affected_area.geojson", r.affected, nx, ny, transform, crs_wkt);
+      write_outline(directory + "/deposit_area.geojson", r.deposit, nx, ny, transform, crs_wkt);
+      write_release_area(directory, solver, crs_wkt);
+      write_summary(directory, threshold, r, maps);
     }
   } // namespace depth_averaged
 } // namespace slidewave

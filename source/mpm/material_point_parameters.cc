@@ -30,6 +30,449 @@ namespace slidewave
                                   GridBoundary::free;
       }
 
+
+
+      /** The transfer scheme, the time step and gravity. */
+      void
+      declare_scheme_parameters(dealii::ParameterHandler &prm)
+      {
+        using namespace dealii::Patterns;
+        prm.declare_entry("Shape functions",
+                          "q1",
+                          Selection("q1|gimp|cpgimp"),
+                          "'q1': bilinear functions of the cell holding the point (standard "
+                          "MPM). 'gimp': uGIMP, Q1 averaged over a square domain of the "
+                          "point's initial size (paper 000, Eq. 11), smooth across cell faces "
+                          "(no cell-crossing noise). 'cpgimp': the domain stretches with the "
+                          "point along x and y.");
+        prm.declare_entry("Update scheme",
+                          "usl",
+                          Selection("usl|musl"),
+                          "'usl': stresses from the updated nodal velocities (update stress "
+                          "last, paper 000). 'musl': from nodal velocities re-mapped from the "
+                          "updated particle velocities (less noisy for fast flows).");
+        prm.declare_entry("FLIP fraction",
+                          "0.99",
+                          Double(0., 1.),
+                          "Blend of the particle velocity update: 1 is pure FLIP (increments "
+                          "of the nodal velocities, no dissipation, noisy), 0 pure PIC (nodal "
+                          "velocities, dissipative).");
+        prm.declare_entry("Time step multiplier",
+                          "0.5",
+                          Double(),
+                          "alpha in dt = alpha h / max_p (c_p + |v_p|) (paper 000, Eq. 23); "
+                          "in (0, 0.7071]: with lumped mass the highest mode of a 2D grid is "
+                          "sqrt(2) times faster than along a line, so alpha above 1/sqrt(2) is "
+                          "unstable (doc/stability.md).");
+        prm.declare_entry("Fixed time step",
+                          "0",
+                          Double(0.),
+                          "If > 0, this time step [s] instead of Eq. 23 (it is checked against "
+                          "the stability limit at the start).");
+        prm.declare_entry("B-bar",
+                          "true",
+                          Bool(),
+                          "Average the volumetric strain increment over each cell (B-bar / "
+                          "mean dilatation, paper 000 §3.1) against volumetric locking.");
+        prm.declare_entry("Gravity", "0, -9.81", Anything(), "Gravity vector g_x, g_y [m/s^2].");
+      }
+
+
+
+      /** How the points find their cells after a step, and how the step is timed. */
+      void
+      declare_relocation_and_timing_parameters(dealii::ParameterHandler &prm)
+      {
+        using namespace dealii::Patterns;
+        prm.declare_entry("Particle relocation",
+                          "neighbour cells",
+                          Selection("neighbour cells|full sort"),
+                          "How the points find their cells after moving. 'neighbour cells': "
+                          "each point looks in the cells of its old cell's patch (a step moves "
+                          "a point less than a cell) and only the points that changed cell are "
+                          "moved in the particle handler; when any point on any rank leaves "
+                          "its rank's cells or the patch, and every 'Load balancing/Interval' "
+                          "steps (to keep the points' memory in cell order), deal.II's full "
+                          "sort runs instead. 'full sort': deal.II's sort every step. Both "
+                          "give the same cells and reference coordinates.");
+        prm.declare_entry("Detailed timing",
+                          "false",
+                          Bool(),
+                          "Time the parts of each step (grid changes, particle to grid, grid "
+                          "update, grid to particle with the stresses, MUSL re-map, sorting "
+                          "the points into cells) as rows 'mpm step: ...' of the timer summary. "
+                          "Each rank times its own parts (no barriers); with several ranks "
+                          "a table of each part's least, mean and largest time over the ranks "
+                          "comes first, and a rank waiting for another shows in the part where "
+                          "it waits (the ghost exchange of the scatter, the relocation's "
+                          "reduction).");
+        prm.declare_entry("Step timeline",
+                          "false",
+                          Bool(),
+                          "Write OUTPUT/step_timeline.csv at the end of the run: per step and "
+                          "per rank the wall time of each part of the step, with the exchanges "
+                          "between ranks (where a rank waits for a slower one) apart from the "
+                          "rank's own work. For profiling runs: it keeps a row per step in "
+                          "memory (doc/mpm.md, Where the time goes).");
+      }
+
+
+
+      /** Local damping, the points seeded per cell and the prescribed-velocity mode. */
+      void
+      declare_damping_and_point_parameters(dealii::ParameterHandler &prm)
+      {
+        using namespace dealii::Patterns;
+        prm.declare_entry("Local damping",
+                          "0",
+                          Double(0., 1.),
+                          "Cundall's local non-viscous damping coefficient of the nodal "
+                          "forces, for quasi-static loading; 0 for dynamics.");
+        prm.declare_entry("Particles per direction",
+                          "2",
+                          Integer(1, 10),
+                          "Material points per cell per direction at the start (n x n per "
+                          "cell, at the centres of n x n sub-cells).");
+        prm.declare_entry("Prescribed velocity",
+                          "",
+                          Anything(),
+                          "Kinematic verification mode: if not empty, two expressions of x, y "
+                          "and t separated by ';' (e.g. '-(y-0.5); x-0.5', a rigid rotation): "
+                          "the nodal velocities are this field instead of the solution of the "
+                          "momentum balance (Eqs. 18-19); the points move with it and their "
+                          "stresses follow from it as usual (strain rate, Jaumann rate, "
+                          "B-bar).");
+      }
+
+
+
+      /** Subsections "Grid", "Adaptive grid", "Load balancing" and "Boundary conditions". */
+      void
+      declare_grid_parameters(dealii::ParameterHandler &prm)
+      {
+        using namespace dealii::Patterns;
+        prm.enter_subsection("Grid");
+        grid::GridExtent::declare_parameters(prm);
+        prm.leave_subsection();
+        prm.enter_subsection("Adaptive grid");
+        {
+          prm.declare_entry("Enable",
+                            "false",
+                            Bool(),
+                            "Refine the background grid where material is (to 'Cell size') and "
+                            "keep it coarse elsewhere; re-evaluated every 'Interval' steps.");
+          prm.declare_entry("Levels",
+                            "2",
+                            Integer(1, 8),
+                            "Refinement levels: the coarsest cells are 2^Levels times 'Cell "
+                            "size', which must divide the domain.");
+          prm.declare_entry("Buffer cells",
+                            "2",
+                            Integer(0, 10),
+                            "Layers of fine cells kept around the material (GIMP domains and "
+                            "the motion until the next adaptation reach there).");
+          prm.declare_entry("Interval",
+                            "50",
+                            Integer(1),
+                            "Steps between adaptations; material must not cross the buffer in "
+                            "that time.");
+        }
+        prm.leave_subsection();
+        prm.enter_subsection("Load balancing");
+        grid::LoadBalancingParameters::declare_parameters(prm);
+        prm.leave_subsection();
+        prm.enter_subsection("Boundary conditions");
+        for (const std::string side : {"Left", "Right", "Bottom", "Top"})
+          prm.declare_entry(side,
+                            side == "Bottom" ? "fixed" :
+                            side == "Top"    ? "free" :
+                                               "roller",
+                            Selection("free|roller|fixed"),
+                            "Grid velocity condition on this side: 'fixed' (no slip), "
+                            "'roller' (free slip), 'free'.");
+        prm.leave_subsection();
+      }
+
+
+
+      /** Subsection "Initial stress". */
+      void
+      declare_initial_stress_parameters(dealii::ParameterHandler &prm)
+      {
+        using namespace dealii::Patterns;
+        prm.enter_subsection("Initial stress");
+        {
+          prm.declare_entry("Type",
+                            "none",
+                            Selection("none|geostatic|gravity loading|uniform"),
+                            "'none': stress free. 'geostatic': sigma_yy = -g (weight of the "
+                            "material above the point per unit width), sigma_xx = sigma_zz = "
+                            "K0 sigma_yy (at rest, exact for horizontal layers). 'gravity "
+                            "loading': gravity is applied with heavy local damping and all "
+                            "rigid walls held, for 'Gravity loading time', before the start "
+                            "time; then velocities are zeroed and the scene starts. "
+                            "'uniform': 'Uniform stress' in every point.");
+          prm.declare_entry("Uniform stress",
+                            "0, 0, 0, 0",
+                            Anything(),
+                            "For 'uniform': sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa], "
+                            "tension positive.");
+          prm.declare_entry("K0",
+                            "auto",
+                            Anything(),
+                            "Coefficient of earth pressure at rest for 'geostatic': a number "
+                            "> 0, or 'auto': 1 - sin(phi) (Jaky) for Drucker-Prager, "
+                            "nu / (1 - nu) for linear elastic materials.");
+          prm.declare_entry("Gravity loading time",
+                            "0.5",
+                            Double(0.),
+                            "Duration [s] of the gravity loading phase; give it several "
+                            "periods of the slowest mode (about 4 H / c_p).");
+          prm.declare_entry("Gravity loading damping",
+                            "0.7",
+                            Double(0., 1.),
+                            "Cundall's local damping coefficient during gravity loading.");
+        }
+        prm.leave_subsection();
+      }
+
+
+
+      /** Subsections "Grid", "Adaptive grid", "Load balancing" and "Boundary conditions";
+       *  the adaptive grid's coarsest cells must divide the domain. */
+      void
+      parse_grid_parameters(dealii::ParameterHandler &prm,
+                            const std::string        &path,
+                            MaterialPointParameters  &parameters)
+      {
+        prm.enter_subsection("Grid");
+        {
+          grid::GridExtent extent;
+          extent.parse_parameters(prm, path + "/Grid");
+          parameters.lower_left  = extent.lower_left;
+          parameters.upper_right = extent.upper_right;
+          parameters.cell_size   = extent.cell_size;
+        }
+        prm.leave_subsection();
+
+        prm.enter_subsection("Adaptive grid");
+        {
+          parameters.adaptivity.enabled      = prm.get_bool("Enable");
+          parameters.adaptivity.levels       = prm.get_integer("Levels");
+          parameters.adaptivity.buffer_cells = prm.get_integer("Buffer cells");
+          parameters.adaptivity.interval     = prm.get_integer("Interval");
+          if (parameters.adaptivity.enabled)
+            {
+              const double base = parameters.cell_size * (1u << parameters.adaptivity.levels);
+              for (unsigned int d = 0; d < 2; ++d)
+                {
+                  const double n = (parameters.upper_right[d] - parameters.lower_left[d]) / base;
+                  if (std::abs(n - std::round(n)) > 1e-6 * n || std::round(n) < 1)
+                    throw InputError(
+                      path + "/Adaptive grid/Levels",
+                      std::to_string(parameters.adaptivity.levels),
+                      "a number of levels such that the coarsest cells (Cell "
+                      "size x 2^Levels = "
+                        + to_string(base) + " m) divide the domain sides ("
+                        + to_string(parameters.upper_right[0] - parameters.lower_left[0]) + " x "
+                        + to_string(parameters.upper_right[1] - parameters.lower_left[1]) + " m)");
+                }
+            }
+        }
+        prm.leave_subsection();
+
+        prm.enter_subsection("Load balancing");
+        {
+          grid::LoadBalancingParameters balancing;
+          balancing.parse_parameters(prm);
+          parameters.adaptivity.particle_weight     = balancing.particle_weight;
+          parameters.adaptivity.imbalance_threshold = balancing.imbalance_threshold;
+          parameters.balance_interval               = balancing.interval;
+        }
+        prm.leave_subsection();
+
+        prm.enter_subsection("Boundary conditions");
+        parameters.boundaries = {{boundary_type(prm.get("Left")),
+                                  boundary_type(prm.get("Right")),
+                                  boundary_type(prm.get("Bottom")),
+                                  boundary_type(prm.get("Top"))}};
+        prm.leave_subsection();
+      }
+
+
+
+      /** "Prescribed velocity": empty, or the two components of the kinematic mode. */
+      void
+      parse_prescribed_velocity(dealii::ParameterHandler &prm,
+                                const std::string        &path,
+                                MaterialPointParameters  &parameters)
+      {
+        const std::string text = dealii::Utilities::trim(prm.get("Prescribed velocity"));
+        parameters.prescribed_velocity.reset();
+        if (!text.empty())
+          {
+            // deal.II prints muparser's diagnosis to std::cerr before it throws: keep it
+            // quiet, the InputError says what is wrong.
+            std::ostringstream diagnosis;
+            std::streambuf    *cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
+            try
+              {
+                if (dealii::Utilities::split_string_list(text, ';').size() != 2)
+                  throw std::invalid_argument("two components");
+                parameters.prescribed_velocity = std::make_shared<dealii::FunctionParser<2>>(2);
+                parameters.prescribed_velocity->initialize("x,y,t",
+                                                           text,
+                                                           {{"pi", M_PI}},
+                                                           /*time_dependent=*/true);
+                parameters.prescribed_velocity->value(dealii::Point<2>(), 0);
+                std::cerr.rdbuf(cerr_buffer);
+              }
+            catch (...)
+              {
+                std::cerr.rdbuf(cerr_buffer);
+                throw InputError(path + "/Prescribed velocity",
+                                 text,
+                                 "empty, or two expressions of x, y and t separated by ';'");
+              }
+          }
+      }
+
+
+
+      /** Subsection "Initial stress": the type, the uniform stress, K0 and the gravity
+       *  loading phase. */
+      void
+      parse_initial_stress_parameters(dealii::ParameterHandler &prm,
+                                      const std::string        &path,
+                                      MaterialPointParameters  &parameters)
+      {
+        prm.enter_subsection("Initial stress");
+        {
+          const std::string type    = prm.get("Type");
+          parameters.initial_stress = type == "geostatic"       ? InitialStress::geostatic :
+                                      type == "gravity loading" ? InitialStress::gravity_loading :
+                                      type == "uniform"         ? InitialStress::uniform :
+                                                                  InitialStress::none;
+          {
+            const auto stress
+              = parse_number_list(path + "/Initial stress/Uniform stress",
+                                  prm.get("Uniform stress"),
+                                  "four finite numbers sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa]",
+                                  4);
+            std::copy(stress.begin(), stress.end(), parameters.uniform_stress.begin());
+          }
+          const std::string k0 = dealii::Utilities::trim(prm.get("K0"));
+          if (k0 == "auto")
+            parameters.lateral_stress_ratio = -1.;
+          else
+            {
+              bool ok = true;
+              try
+                {
+                  std::size_t used                = 0;
+                  parameters.lateral_stress_ratio = std::stod(k0, &used);
+                  ok = used == k0.size() && std::isfinite(parameters.lateral_stress_ratio)
+                       && parameters.lateral_stress_ratio > 0.;
+                }
+              catch (const std::exception &)
+                {
+                  ok = false;
+                }
+              if (!ok)
+                throw InputError(path + "/Initial stress/K0", k0, "'auto' or a number > 0");
+            }
+          parameters.gravity_loading_time    = prm.get_double("Gravity loading time");
+          parameters.gravity_loading_damping = prm.get_double("Gravity loading damping");
+          if (parameters.initial_stress == InitialStress::gravity_loading)
+            require_positive(path + "/Initial stress/Gravity loading time",
+                             parameters.gravity_loading_time);
+        }
+        prm.leave_subsection();
+      }
+
+
+
+      /** The "Region N" subsections in use, each checked to lie inside the grid. */
+      void
+      parse_regions(dealii::ParameterHandler &prm,
+                    const std::string        &path,
+                    MaterialPointParameters  &parameters)
+      {
+        parameters.regions.clear();
+        for (unsigned int r = 1; r <= MaterialRegion::max_regions; ++r)
+          {
+            prm.enter_subsection("Region " + std::to_string(r));
+            MaterialRegion    region;
+            const std::string region_path = path + "/Region " + std::to_string(r);
+            if (region.parse_parameters(prm, region_path))
+              {
+                const std::string entry = prm.get("Shape") == "rectangle" ? "Rectangle" : "Polygon";
+                const auto        box   = region.bounding_box();
+                for (unsigned int d = 0; d < 2; ++d)
+                  if (box.first[d] < parameters.lower_left[d] - 1e-12
+                      || box.second[d] > parameters.upper_right[d] + 1e-12)
+                    throw InputError(region_path + "/" + entry,
+                                     prm.get(entry),
+                                     "a region inside the grid ["
+                                       + to_string(parameters.lower_left[0]) + ", "
+                                       + to_string(parameters.upper_right[0]) + "] x ["
+                                       + to_string(parameters.lower_left[1]) + ", "
+                                       + to_string(parameters.upper_right[1]) + "]");
+                parameters.regions.push_back(region);
+              }
+            prm.leave_subsection();
+          }
+      }
+
+
+
+      /** The "Material N" subsections the regions name, each read once; sets each region's
+       *  material index. */
+      void
+      parse_used_materials(dealii::ParameterHandler &prm,
+                           const std::string        &path,
+                           MaterialPointParameters  &parameters)
+      {
+        parameters.materials.clear();
+        for (unsigned int r = 0; r < parameters.regions.size(); ++r)
+          {
+            MaterialRegion           &region      = parameters.regions[r];
+            const std::string         region_path = path + "/Region " + std::to_string(r + 1);
+            std::vector<unsigned int> slots;
+            for (unsigned int m = 1; m <= MaterialPointParameters::max_materials; ++m)
+              {
+                prm.enter_subsection("Material " + std::to_string(m));
+                if (dealii::Utilities::trim(prm.get("Name")) == region.material_name)
+                  slots.push_back(m);
+                prm.leave_subsection();
+              }
+            if (slots.empty())
+              throw InputError(region_path + "/Material",
+                               region.material_name,
+                               "the name of a declared material ('Material N/Name')");
+            if (slots.size() > 1)
+              throw InputError(region_path + "/Material",
+                               region.material_name,
+                               "a material name declared once (it is the name of 'Material "
+                                 + std::to_string(slots[0]) + "' and 'Material "
+                                 + std::to_string(slots[1]) + "')");
+            // Read each used material once, however many regions use it.
+            region.material_index = parameters.materials.size();
+            for (unsigned int k = 0; k < parameters.materials.size(); ++k)
+              if (parameters.materials[k].name == region.material_name)
+                region.material_index = k;
+            if (region.material_index == parameters.materials.size())
+              {
+                const std::string slot = "Material " + std::to_string(slots[0]);
+                prm.enter_subsection(slot);
+                materials::MaterialParameters material;
+                material.parse_parameters(prm, path + "/" + slot);
+                material.name = region.material_name;
+                prm.leave_subsection();
+                parameters.materials.push_back(material);
+              }
+          }
+      }
     } // namespace
 
 
@@ -37,174 +480,17 @@ namespace slidewave
     void
     MaterialPointParameters::declare_parameters(dealii::ParameterHandler &prm)
     {
-      using namespace dealii::Patterns;
-      prm.declare_entry("Shape functions",
-                        "q1",
-                        Selection("q1|gimp|cpgimp"),
-                        "'q1': bilinear functions of the cell holding the point (standard "
-                        "MPM). 'gimp': uGIMP, Q1 averaged over a square domain of the "
-                        "point's initial size (paper 000, Eq. 11), smooth across cell faces "
-                        "(no cell-crossing noise). 'cpgimp': the domain stretches with the "
-                        "point along x and y.");
-      prm.declare_entry("Update scheme",
-                        "usl",
-                        Selection("usl|musl"),
-                        "'usl': stresses from the updated nodal velocities (update stress "
-                        "last, paper 000). 'musl': from nodal velocities re-mapped from the "
-                        "updated particle velocities (less noisy for fast flows).");
-      prm.declare_entry("FLIP fraction",
-                        "0.99",
-                        Double(0., 1.),
-                        "Blend of the particle velocity update: 1 is pure FLIP (increments "
-                        "of the nodal velocities, no dissipation, noisy), 0 pure PIC (nodal "
-                        "velocities, dissipative).");
-      prm.declare_entry("Time step multiplier",
-                        "0.5",
-                        Double(),
-                        "alpha in dt = alpha h / max_p (c_p + |v_p|) (paper 000, Eq. 23); "
-                        "in (0, 0.7071]: with lumped mass the highest mode of a 2D grid is "
-                        "sqrt(2) times faster than along a line, so alpha above 1/sqrt(2) is "
-                        "unstable (doc/stability.md).");
-      prm.declare_entry("Fixed time step",
-                        "0",
-                        Double(0.),
-                        "If > 0, this time step [s] instead of Eq. 23 (it is checked against "
-                        "the stability limit at the start).");
-      prm.declare_entry("B-bar",
-                        "true",
-                        Bool(),
-                        "Average the volumetric strain increment over each cell (B-bar / "
-                        "mean dilatation, paper 000 §3.1) against volumetric locking.");
-      prm.declare_entry("Gravity", "0, -9.81", Anything(), "Gravity vector g_x, g_y [m/s^2].");
-      prm.declare_entry("Particle relocation",
-                        "neighbour cells",
-                        Selection("neighbour cells|full sort"),
-                        "How the points find their cells after moving. 'neighbour cells': "
-                        "each point looks in the cells of its old cell's patch (a step moves "
-                        "a point less than a cell) and only the points that changed cell are "
-                        "moved in the particle handler; when any point on any rank leaves "
-                        "its rank's cells or the patch, and every 'Load balancing/Interval' "
-                        "steps (to keep the points' memory in cell order), deal.II's full "
-                        "sort runs instead. 'full sort': deal.II's sort every step. Both "
-                        "give the same cells and reference coordinates.");
-      prm.declare_entry("Detailed timing",
-                        "false",
-                        Bool(),
-                        "Time the parts of each step (grid changes, particle to grid, grid "
-                        "update, grid to particle with the stresses, MUSL re-map, sorting "
-                        "the points into cells) as rows 'mpm step: ...' of the timer summary. "
-                        "Each rank times its own parts (no barriers); with several ranks "
-                        "a table of each part's least, mean and largest time over the ranks "
-                        "comes first, and a rank waiting for another shows in the part where "
-                        "it waits (the ghost exchange of the scatter, the relocation's "
-                        "reduction).");
-      prm.declare_entry("Step timeline",
-                        "false",
-                        Bool(),
-                        "Write OUTPUT/step_timeline.csv at the end of the run: per step and "
-                        "per rank the wall time of each part of the step, with the exchanges "
-                        "between ranks (where a rank waits for a slower one) apart from the "
-                        "rank's own work. For profiling runs: it keeps a row per step in "
-                        "memory (doc/mpm.md, Where the time goes).");
-      prm.declare_entry("Local damping",
-                        "0",
-                        Double(0., 1.),
-                        "Cundall's local non-viscous damping coefficient of the nodal "
-                        "forces, for quasi-static loading; 0 for dynamics.");
-      prm.declare_entry("Particles per direction",
-                        "2",
-                        Integer(1, 10),
-                        "Material points per cell per direction at the start (n x n per "
-                        "cell, at the centres of n x n sub-cells).");
-      prm.declare_entry("Prescribed velocity",
-                        "",
-                        Anything(),
-                        "Kinematic verification mode: if not empty, two expressions of x, y "
-                        "and t separated by ';' (e.g. '-(y-0.5); x-0.5', a rigid rotation): "
-                        "the nodal velocities are this field instead of the solution of the "
-                        "momentum balance (Eqs. 18-19); the points move with it and their "
-                        "stresses follow from it as usual (strain rate, Jaumann rate, "
-                        "B-bar).");
-      prm.enter_subsection("Grid");
-      grid::GridExtent::declare_parameters(prm);
-      prm.leave_subsection();
-      prm.enter_subsection("Adaptive grid");
-      {
-        prm.declare_entry("Enable",
-                          "false",
-                          Bool(),
-                          "Refine the background grid where material is (to 'Cell size') and "
-                          "keep it coarse elsewhere; re-evaluated every 'Interval' steps.");
-        prm.declare_entry("Levels",
-                          "2",
-                          Integer(1, 8),
-                          "Refinement levels: the coarsest cells are 2^Levels times 'Cell "
-                          "size', which must divide the domain.");
-        prm.declare_entry("Buffer cells",
-                          "2",
-                          Integer(0, 10),
-                          "Layers of fine cells kept around the material (GIMP domains and "
-                          "the motion until the next adaptation reach there).");
-        prm.declare_entry("Interval",
-                          "50",
-                          Integer(1),
-                          "Steps between adaptations; material must not cross the buffer in "
-                          "that time.");
-      }
-      prm.leave_subsection();
-      prm.enter_subsection("Load balancing");
-      grid::LoadBalancingParameters::declare_parameters(prm);
-      prm.leave_subsection();
-      prm.enter_subsection("Boundary conditions");
-      for (const std::string side : {"Left", "Right", "Bottom", "Top"})
-        prm.declare_entry(side,
-                          side == "Bottom" ? "fixed" :
-                          side == "Top"    ? "free" :
-                                             "roller",
-                          Selection("free|roller|fixed"),
-                          "Grid velocity condition on this side: 'fixed' (no slip), "
-                          "'roller' (free slip), 'free'.");
-      prm.leave_subsection();
+      declare_scheme_parameters(prm);
+      declare_relocation_and_timing_parameters(prm);
+      declare_damping_and_point_parameters(prm);
+      declare_grid_parameters(prm);
       for (unsigned int w = 1; w <= RigidWall::max_walls; ++w)
         {
           prm.enter_subsection("Rigid wall " + std::to_string(w));
           RigidWall::declare_parameters(prm);
           prm.leave_subsection();
         }
-      prm.enter_subsection("Initial stress");
-      {
-        prm.declare_entry("Type",
-                          "none",
-                          Selection("none|geostatic|gravity loading|uniform"),
-                          "'none': stress free. 'geostatic': sigma_yy = -g (weight of the "
-                          "material above the point per unit width), sigma_xx = sigma_zz = "
-                          "K0 sigma_yy (at rest, exact for horizontal layers). 'gravity "
-                          "loading': gravity is applied with heavy local damping and all "
-                          "rigid walls held, for 'Gravity loading time', before the start "
-                          "time; then velocities are zeroed and the scene starts. "
-                          "'uniform': 'Uniform stress' in every point.");
-        prm.declare_entry("Uniform stress",
-                          "0, 0, 0, 0",
-                          Anything(),
-                          "For 'uniform': sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa], "
-                          "tension positive.");
-        prm.declare_entry("K0",
-                          "auto",
-                          Anything(),
-                          "Coefficient of earth pressure at rest for 'geostatic': a number "
-                          "> 0, or 'auto': 1 - sin(phi) (Jaky) for Drucker-Prager, "
-                          "nu / (1 - nu) for linear elastic materials.");
-        prm.declare_entry("Gravity loading time",
-                          "0.5",
-                          Double(0.),
-                          "Duration [s] of the gravity loading phase; give it several "
-                          "periods of the slowest mode (about 4 H / c_p).");
-        prm.declare_entry("Gravity loading damping",
-                          "0.7",
-                          Double(0., 1.),
-                          "Cundall's local damping coefficient during gravity loading.");
-      }
-      prm.leave_subsection();
+      declare_initial_stress_parameters(prm);
       for (unsigned int m = 1; m <= max_materials; ++m)
         {
           prm.enter_subsection("Material " + std::to_string(m));
@@ -249,57 +535,7 @@ namespace slidewave
       damping                 = prm.get_double("Local damping");
       particles_per_direction = prm.get_integer("Particles per direction");
 
-      prm.enter_subsection("Grid");
-      {
-        grid::GridExtent extent;
-        extent.parse_parameters(prm, path + "/Grid");
-        lower_left  = extent.lower_left;
-        upper_right = extent.upper_right;
-        cell_size   = extent.cell_size;
-      }
-      prm.leave_subsection();
-
-      prm.enter_subsection("Adaptive grid");
-      {
-        adaptivity.enabled      = prm.get_bool("Enable");
-        adaptivity.levels       = prm.get_integer("Levels");
-        adaptivity.buffer_cells = prm.get_integer("Buffer cells");
-        adaptivity.interval     = prm.get_integer("Interval");
-        if (adaptivity.enabled)
-          {
-            const double base = cell_size * (1u << adaptivity.levels);
-            for (unsigned int d = 0; d < 2; ++d)
-              {
-                const double n = (upper_right[d] - lower_left[d]) / base;
-                if (std::abs(n - std::round(n)) > 1e-6 * n || std::round(n) < 1)
-                  throw InputError(path + "/Adaptive grid/Levels",
-                                   std::to_string(adaptivity.levels),
-                                   "a number of levels such that the coarsest cells (Cell "
-                                   "size x 2^Levels = "
-                                     + to_string(base) + " m) divide the domain sides ("
-                                     + to_string(upper_right[0] - lower_left[0]) + " x "
-                                     + to_string(upper_right[1] - lower_left[1]) + " m)");
-              }
-          }
-      }
-      prm.leave_subsection();
-
-      prm.enter_subsection("Load balancing");
-      {
-        grid::LoadBalancingParameters balancing;
-        balancing.parse_parameters(prm);
-        adaptivity.particle_weight     = balancing.particle_weight;
-        adaptivity.imbalance_threshold = balancing.imbalance_threshold;
-        balance_interval               = balancing.interval;
-      }
-      prm.leave_subsection();
-
-      prm.enter_subsection("Boundary conditions");
-      boundaries = {{boundary_type(prm.get("Left")),
-                     boundary_type(prm.get("Right")),
-                     boundary_type(prm.get("Bottom")),
-                     boundary_type(prm.get("Top"))}};
-      prm.leave_subsection();
+      parse_grid_parameters(prm, path, *this);
 
       walls.clear();
       for (unsigned int w = 1; w <= RigidWall::max_walls; ++w)
@@ -311,143 +547,14 @@ namespace slidewave
           prm.leave_subsection();
         }
 
-      {
-        const std::string text = dealii::Utilities::trim(prm.get("Prescribed velocity"));
-        prescribed_velocity.reset();
-        if (!text.empty())
-          {
-            // deal.II prints muparser's diagnosis to std::cerr before it throws: keep it
-            // quiet, the InputError says what is wrong.
-            std::ostringstream diagnosis;
-            std::streambuf    *cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
-            try
-              {
-                if (dealii::Utilities::split_string_list(text, ';').size() != 2)
-                  throw std::invalid_argument("two components");
-                prescribed_velocity = std::make_shared<dealii::FunctionParser<2>>(2);
-                prescribed_velocity->initialize("x,y,t",
-                                                text,
-                                                {{"pi", M_PI}},
-                                                /*time_dependent=*/true);
-                prescribed_velocity->value(dealii::Point<2>(), 0);
-                std::cerr.rdbuf(cerr_buffer);
-              }
-            catch (...)
-              {
-                std::cerr.rdbuf(cerr_buffer);
-                throw InputError(path + "/Prescribed velocity",
-                                 text,
-                                 "empty, or two expressions of x, y and t separated by ';'");
-              }
-          }
-      }
+      parse_prescribed_velocity(prm, path, *this);
 
-      prm.enter_subsection("Initial stress");
-      {
-        const std::string type = prm.get("Type");
-        initial_stress         = type == "geostatic"       ? InitialStress::geostatic :
-                                 type == "gravity loading" ? InitialStress::gravity_loading :
-                                 type == "uniform"         ? InitialStress::uniform :
-                                                             InitialStress::none;
-        {
-          const auto stress
-            = parse_number_list(path + "/Initial stress/Uniform stress",
-                                prm.get("Uniform stress"),
-                                "four finite numbers sigma_xx, sigma_yy, sigma_xy, sigma_zz [Pa]",
-                                4);
-          std::copy(stress.begin(), stress.end(), uniform_stress.begin());
-        }
-        const std::string k0 = dealii::Utilities::trim(prm.get("K0"));
-        if (k0 == "auto")
-          lateral_stress_ratio = -1.;
-        else
-          {
-            bool ok = true;
-            try
-              {
-                std::size_t used     = 0;
-                lateral_stress_ratio = std::stod(k0, &used);
-                ok                   = used == k0.size() && std::isfinite(lateral_stress_ratio)
-                     && lateral_stress_ratio > 0.;
-              }
-            catch (const std::exception &)
-              {
-                ok = false;
-              }
-            if (!ok)
-              throw InputError(path + "/Initial stress/K0", k0, "'auto' or a number > 0");
-          }
-        gravity_loading_time    = prm.get_double("Gravity loading time");
-        gravity_loading_damping = prm.get_double("Gravity loading damping");
-        if (initial_stress == InitialStress::gravity_loading)
-          require_positive(path + "/Initial stress/Gravity loading time", gravity_loading_time);
-      }
-      prm.leave_subsection();
+      parse_initial_stress_parameters(prm, path, *this);
 
       // Regions first: they say which materials the scene uses. Only those material
       // subsections are read (and checked); the others are ignored.
-      regions.clear();
-      for (unsigned int r = 1; r <= MaterialRegion::max_regions; ++r)
-        {
-          prm.enter_subsection("Region " + std::to_string(r));
-          MaterialRegion    region;
-          const std::string region_path = path + "/Region " + std::to_string(r);
-          if (region.parse_parameters(prm, region_path))
-            {
-              const std::string entry = prm.get("Shape") == "rectangle" ? "Rectangle" : "Polygon";
-              const auto        box   = region.bounding_box();
-              for (unsigned int d = 0; d < 2; ++d)
-                if (box.first[d] < lower_left[d] - 1e-12 || box.second[d] > upper_right[d] + 1e-12)
-                  throw InputError(region_path + "/" + entry,
-                                   prm.get(entry),
-                                   "a region inside the grid [" + to_string(lower_left[0]) + ", "
-                                     + to_string(upper_right[0]) + "] x ["
-                                     + to_string(lower_left[1]) + ", " + to_string(upper_right[1])
-                                     + "]");
-              regions.push_back(region);
-            }
-          prm.leave_subsection();
-        }
-
-      materials.clear();
-      for (unsigned int r = 0; r < regions.size(); ++r)
-        {
-          MaterialRegion           &region      = regions[r];
-          const std::string         region_path = path + "/Region " + std::to_string(r + 1);
-          std::vector<unsigned int> slots;
-          for (unsigned int m = 1; m <= max_materials; ++m)
-            {
-              prm.enter_subsection("Material " + std::to_string(m));
-              if (dealii::Utilities::trim(prm.get("Name")) == region.material_name)
-                slots.push_back(m);
-              prm.leave_subsection();
-            }
-          if (slots.empty())
-            throw InputError(region_path + "/Material",
-                             region.material_name,
-                             "the name of a declared material ('Material N/Name')");
-          if (slots.size() > 1)
-            throw InputError(region_path + "/Material",
-                             region.material_name,
-                             "a material name declared once (it is the name of 'Material "
-                               + std::to_string(slots[0]) + "' and 'Material "
-                               + std::to_string(slots[1]) + "')");
-          // Read each used material once, however many regions use it.
-          region.material_index = materials.size();
-          for (unsigned int k = 0; k < materials.size(); ++k)
-            if (materials[k].name == region.material_name)
-              region.material_index = k;
-          if (region.material_index == materials.size())
-            {
-              const std::string slot = "Material " + std::to_string(slots[0]);
-              prm.enter_subsection(slot);
-              materials::MaterialParameters material;
-              material.parse_parameters(prm, path + "/" + slot);
-              material.name = region.material_name;
-              prm.leave_subsection();
-              materials.push_back(material);
-            }
-        }
+      parse_regions(prm, path, *this);
+      parse_used_materials(prm, path, *this);
       if (regions.empty())
         throw InputError(path + "/Region 1/Shape",
                          "none",

@@ -284,6 +284,75 @@ namespace slidewave
         else
           numerical_flux::hll(h_l, q_l, h_r, q_r, g, dry_depth, flux_h, flux_q);
       }
+
+
+
+      /**
+       * The flux through one end of the channel, cell @p i of @p n: the Riemann problem
+       * between the inner face state (@p h_inside, @p u_inside on the face bed @p b_inside)
+       * and the ghost state of @p boundary, with the same hydrostatic reconstruction as
+       * inside, added to the end cell's rates. Returns the depth flux through the end.
+       */
+      double
+      add_boundary_flux(const WaterBoundary       &boundary,
+                        const bool                 left_end,
+                        const NumericalFlux        flux_type,
+                        const unsigned int         i,
+                        const unsigned int         n,
+                        const double               h_inside,
+                        const double               u_inside,
+                        const double               b_inside,
+                        const std::vector<double> &bed_elevation,
+                        const std::vector<double> &center,
+                        const std::vector<double> &inverse_width,
+                        const double               t,
+                        const double               g,
+                        const double               dry_depth,
+                        std::vector<double>       &r_h,
+                        std::vector<double>       &r_hu)
+      {
+        const bool is_wall = boundary.type() == WaterBoundary::Type::wall;
+
+        double b_ghost = bed_elevation[i];
+        if (!is_wall && n > 1)
+          {
+            const unsigned int k = left_end ? 1 : n - 2;
+            b_ghost              = bed_elevation[i]
+                      + (bed_elevation[i] - bed_elevation[k]) / std::abs(center[i] - center[k])
+                          / inverse_width[i];
+          }
+        double h_ghost, u_ghost;
+        boundary.ghost_state(h_inside, u_inside, t, g, dry_depth, left_end, h_ghost, u_ghost);
+
+        const double b_star       = std::max(b_inside, b_ghost);
+        const double h_in_star    = std::max(0., h_inside + b_inside - b_star);
+        const double h_ghost_star = std::max(0., h_ghost + b_ghost - b_star);
+        const double correction   = 0.5 * g * (h_inside - h_in_star) * (h_inside + h_in_star);
+
+        double       fh, fq;
+        const double q_in    = h_in_star * u_inside;
+        const double q_ghost = h_ghost_star * u_ghost;
+        if (left_end)
+          interface_flux_dispatch(
+            flux_type, h_ghost_star, q_ghost, h_in_star, q_in, g, dry_depth, fh, fq);
+        else
+          interface_flux_dispatch(
+            flux_type, h_in_star, q_in, h_ghost_star, q_ghost, g, dry_depth, fh, fq);
+        // A wall lets no water through: make that exact, not just round-off close.
+        if (is_wall)
+          fh = 0.;
+        if (left_end)
+          {
+            r_h[i] += fh * inverse_width[i];
+            r_hu[i] += (fq + correction) * inverse_width[i];
+          }
+        else
+          {
+            r_h[i] -= fh * inverse_width[i];
+            r_hu[i] -= (fq + correction) * inverse_width[i];
+          }
+        return fh;
+      }
     } // namespace
 
 
@@ -423,48 +492,26 @@ namespace slidewave
           const double         u_inside = left_end ? u_left_face[i] : u_right_face[i];
           const double         b_inside = left_end ? bed_left_face[i] : bed_right_face[i];
           const WaterBoundary &boundary = left_end ? left_boundary : right_boundary;
-          const bool           is_wall  = boundary.type() == WaterBoundary::Type::wall;
-
-          double b_ghost = bed_elevation[i];
-          if (!is_wall && n > 1)
-            {
-              const unsigned int k = left_end ? 1 : n - 2;
-              b_ghost              = bed_elevation[i]
-                        + (bed_elevation[i] - bed_elevation[k]) / std::abs(center[i] - center[k])
-                            / inverse_width[i];
-            }
-          double h_ghost, u_ghost;
-          boundary.ghost_state(h_inside, u_inside, t, g, dry_depth, left_end, h_ghost, u_ghost);
-
-          const double b_star       = std::max(b_inside, b_ghost);
-          const double h_in_star    = std::max(0., h_inside + b_inside - b_star);
-          const double h_ghost_star = std::max(0., h_ghost + b_ghost - b_star);
-          const double correction   = 0.5 * g * (h_inside - h_in_star) * (h_inside + h_in_star);
-
-          double       fh, fq;
-          const double q_in    = h_in_star * u_inside;
-          const double q_ghost = h_ghost_star * u_ghost;
+          const double         fh       = add_boundary_flux(boundary,
+                                              left_end,
+                                              prm.flux,
+                                              i,
+                                              n,
+                                              h_inside,
+                                              u_inside,
+                                              b_inside,
+                                              bed_elevation,
+                                              center,
+                                              inverse_width,
+                                              t,
+                                              g,
+                                              dry_depth,
+                                              r_h,
+                                              r_hu);
           if (left_end)
-            interface_flux_dispatch(
-              prm.flux, h_ghost_star, q_ghost, h_in_star, q_in, g, dry_depth, fh, fq);
+            inflow += fh;
           else
-            interface_flux_dispatch(
-              prm.flux, h_in_star, q_in, h_ghost_star, q_ghost, g, dry_depth, fh, fq);
-          // A wall lets no water through: make that exact, not just round-off close.
-          if (is_wall)
-            fh = 0.;
-          if (left_end)
-            {
-              r_h[i] += fh * inverse_width[i];
-              r_hu[i] += (fq + correction) * inverse_width[i];
-              inflow += fh;
-            }
-          else
-            {
-              r_h[i] -= fh * inverse_width[i];
-              r_hu[i] -= (fq + correction) * inverse_width[i];
-              inflow -= fh;
-            }
+            inflow -= fh;
         }
       return inflow;
     }

@@ -15,6 +15,114 @@ namespace slidewave
       {
         return parse_number_list(parameter, text, "a comma-separated list of numbers");
       }
+
+
+
+      /** A band of refined cells: from, to and the target cell width [m]. */
+      struct RefinedBand
+      {
+        double from, to, width;
+      };
+
+
+
+      /** The cell interfaces of 'Cell widths' laid from @p left; the widths must add up to
+       *  @p right - @p left. */
+      std::vector<double>
+      cell_width_interfaces(dealii::ParameterHandler &prm,
+                            const std::string        &parameter,
+                            const double              left,
+                            const double              right)
+      {
+        const auto widths = parse_double_list(parameter, prm.get("Cell widths"));
+        if (widths.empty())
+          throw InputError(parameter, "", "at least one cell width");
+        std::vector<double> interfaces{left};
+        for (const double w : widths)
+          {
+            if (!(w > 0.))
+              throw InputError(parameter, prm.get("Cell widths"), "widths > 0");
+            interfaces.push_back(interfaces.back() + w);
+          }
+        if (std::abs(interfaces.back() - right) > 1e-9 * (right - left))
+          throw InputError(parameter,
+                           prm.get("Cell widths"),
+                           "widths adding up to Right end - Left end = " + to_string(right - left)
+                             + " (they add up to " + to_string(interfaces.back() - left) + ")");
+        interfaces.back() = right;
+        return interfaces;
+      }
+
+
+
+      /** The bands of 'Refined bands', inside [@p left, @p right], sorted and checked not to
+       *  overlap. */
+      std::vector<RefinedBand>
+      parse_refined_bands(dealii::ParameterHandler &prm,
+                          const std::string        &parameter,
+                          const double              left,
+                          const double              right)
+      {
+        std::vector<RefinedBand> bands;
+        for (const std::string &item :
+             dealii::Utilities::split_string_list(prm.get("Refined bands"), ';'))
+          {
+            const auto          numbers = dealii::Utilities::split_string_list(item, ':');
+            std::vector<double> values;
+            try
+              {
+                for (const auto &n : numbers)
+                  values.push_back(std::stod(n));
+              }
+            catch (const std::exception &)
+              {
+                values.clear();
+              }
+            if (values.size() != 3 || !(values[1] > values[0]) || !(values[2] > 0.)
+                || values[0] < left || values[1] > right)
+              throw InputError(parameter,
+                               prm.get("Refined bands"),
+                               "bands 'from:to:width' separated by ';', with Left end <= from "
+                               "< to <= Right end and width > 0");
+            bands.push_back({values[0], values[1], values[2]});
+          }
+        std::sort(bands.begin(), bands.end(), [](const RefinedBand &a, const RefinedBand &b) {
+          return a.from < b.from;
+        });
+        for (unsigned int b = 1; b < bands.size(); ++b)
+          if (bands[b].from < bands[b - 1].to)
+            throw InputError(parameter, prm.get("Refined bands"), "bands that do not overlap");
+        return bands;
+      }
+
+
+
+      /** The interfaces of [@p left, @p right] split at the band edges, every segment filled
+       *  with the fewest equal cells not wider than its target width. */
+      std::vector<double>
+      refined_band_interfaces(const std::vector<RefinedBand> &bands,
+                              const double                    left,
+                              const double                    right,
+                              const double                    base_width)
+      {
+        std::vector<double> interfaces{left};
+        const auto          fill = [&interfaces](const double to, const double width) {
+          const double from = interfaces.back();
+          if (!(to > from))
+            return;
+          const auto n = static_cast<unsigned int>(std::ceil((to - from) / width - 1e-9));
+          for (unsigned int k = 1; k <= std::max(n, 1u); ++k)
+            interfaces.push_back(k == std::max(n, 1u) ? to :
+                                                        from + (to - from) * k / std::max(n, 1u));
+        };
+        for (const RefinedBand &band : bands)
+          {
+            fill(band.from, base_width);
+            fill(band.to, band.width);
+          }
+        fill(right, base_width);
+        return interfaces;
+      }
     } // namespace
 
 
@@ -84,23 +192,7 @@ namespace slidewave
       if (type == "cell widths")
         {
           const std::string parameter = path + "/Cell widths";
-          const auto        widths    = parse_double_list(parameter, prm.get("Cell widths"));
-          if (widths.empty())
-            throw InputError(parameter, "", "at least one cell width");
-          std::vector<double> interfaces{left};
-          for (const double w : widths)
-            {
-              if (!(w > 0.))
-                throw InputError(parameter, prm.get("Cell widths"), "widths > 0");
-              interfaces.push_back(interfaces.back() + w);
-            }
-          if (std::abs(interfaces.back() - right) > 1e-9 * (right - left))
-            throw InputError(parameter,
-                             prm.get("Cell widths"),
-                             "widths adding up to Right end - Left end = " + to_string(right - left)
-                               + " (they add up to " + to_string(interfaces.back() - left) + ")");
-          interfaces.back() = right;
-          return WaterMesh(interfaces, parameter);
+          return WaterMesh(cell_width_interfaces(prm, parameter, left, right), parameter);
         }
 
       // Refined bands: split [left, right] at the band edges and fill every segment with
@@ -108,57 +200,8 @@ namespace slidewave
       const std::string parameter  = path + "/Refined bands";
       const double      base_width = prm.get_double("Base cell width");
       require_positive(path + "/Base cell width", base_width);
-      struct Band
-      {
-        double from, to, width;
-      };
-      std::vector<Band> bands;
-      for (const std::string &item :
-           dealii::Utilities::split_string_list(prm.get("Refined bands"), ';'))
-        {
-          const auto          numbers = dealii::Utilities::split_string_list(item, ':');
-          std::vector<double> values;
-          try
-            {
-              for (const auto &n : numbers)
-                values.push_back(std::stod(n));
-            }
-          catch (const std::exception &)
-            {
-              values.clear();
-            }
-          if (values.size() != 3 || !(values[1] > values[0]) || !(values[2] > 0.)
-              || values[0] < left || values[1] > right)
-            throw InputError(parameter,
-                             prm.get("Refined bands"),
-                             "bands 'from:to:width' separated by ';', with Left end <= from "
-                             "< to <= Right end and width > 0");
-          bands.push_back({values[0], values[1], values[2]});
-        }
-      std::sort(bands.begin(), bands.end(), [](const Band &a, const Band &b) {
-        return a.from < b.from;
-      });
-      for (unsigned int b = 1; b < bands.size(); ++b)
-        if (bands[b].from < bands[b - 1].to)
-          throw InputError(parameter, prm.get("Refined bands"), "bands that do not overlap");
-
-      std::vector<double> interfaces{left};
-      const auto          fill = [&interfaces](const double to, const double width) {
-        const double from = interfaces.back();
-        if (!(to > from))
-          return;
-        const auto n = static_cast<unsigned int>(std::ceil((to - from) / width - 1e-9));
-        for (unsigned int k = 1; k <= std::max(n, 1u); ++k)
-          interfaces.push_back(k == std::max(n, 1u) ? to :
-                                                      from + (to - from) * k / std::max(n, 1u));
-      };
-      for (const Band &band : bands)
-        {
-          fill(band.from, base_width);
-          fill(band.to, band.width);
-        }
-      fill(right, base_width);
-      return WaterMesh(interfaces, parameter);
+      const std::vector<RefinedBand> bands = parse_refined_bands(prm, parameter, left, right);
+      return WaterMesh(refined_band_interfaces(bands, left, right, base_width), parameter);
     }
 
 

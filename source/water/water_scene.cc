@@ -171,10 +171,20 @@ namespace slidewave
                              mesh.right_end());
       prm.leave_subsection();
 
+      parse_verification(prm, solver_parameters.gravity);
+
+      prm.leave_subsection();
+      initial_volume = water->water_volume();
+    }
+
+
+
+    void
+    WaterScene::parse_verification(dealii::ParameterHandler &prm, const double gravity)
+    {
       prm.enter_subsection("Verification");
       {
         const std::string type = prm.get("Exact solution");
-        const double      g    = solver_parameters.gravity;
         tolerance_volume       = prm.get_double("Tolerance on volume balance");
         tolerance_l1_depth     = prm.get_double("Tolerance on L1 depth error");
         tolerance_linf         = prm.get_double("Tolerance on maximum errors");
@@ -187,7 +197,7 @@ namespace slidewave
               throw InputError(section + "/Verification/Right depth",
                                to_string(h_r),
                                "a depth smaller than 'Left depth' = " + to_string(h_l));
-            dam_break.emplace(h_l, h_r, prm.get_double("Dam position"), g);
+            dam_break.emplace(h_l, h_r, prm.get_double("Dam position"), gravity);
           }
         else if (type == "initial state")
           exact_solution = ExactSolution::initial_state;
@@ -199,13 +209,10 @@ namespace slidewave
             thacker.emplace(prm.get_double("Bowl depth"),
                             prm.get_double("Bowl half width"),
                             prm.get_double("Amplitude"),
-                            g);
+                            gravity);
           }
       }
       prm.leave_subsection();
-
-      prm.leave_subsection();
-      initial_volume = water->water_volume();
     }
 
 

@@ -116,6 +116,11 @@ namespace slidewave
         still_level
       };
 
+      /** Reads subsection "Verification": the exact solution (its constants, with the
+       *  @p gravity of the solver) and the tolerances; throws InputError on bad input. */
+      void
+      parse_verification(dealii::ParameterHandler &prm, double gravity);
+
       void
       write_profile(unsigned int index, double time) const;
 

@@ -319,7 +319,11 @@ namespace slidewave
       {
         dealii::TimerOutput::Scope scope(timer_output, "coupled: setup");
         create_soil(timer_output);
-        soil->setup(start_time, [this]() { setup_water(); });
+        // The water and its loads on the points come before the soil's initial stress: the
+        // geostatic stress carries them, and gravity loading holds them.
+        soil->create_points(start_time);
+        setup_water();
+        soil->initialize_stress();
         // The soil may have settled under gravity loading: the water starts over the bed
         // it left, at the initial condition.
         set_initial_water();

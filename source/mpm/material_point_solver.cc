@@ -55,7 +55,16 @@ namespace slidewave
 
 
     void
-    MaterialPointSolver::setup(const double start_time, const std::function<void()> &apply_loads)
+    MaterialPointSolver::setup(const double start_time)
+    {
+      create_points(start_time);
+      initialize_stress();
+    }
+
+
+
+    void
+    MaterialPointSolver::create_points(const double start_time)
     {
       time = start_time;
       // Until the points exist, every partition of the grid (the refinements below, the
@@ -93,8 +102,13 @@ namespace slidewave
       // at a million cells): here, not in the first step that needs one. It also puts the
       // memory of points that arrived from other ranks in cell order.
       cloud.sort();
-      if (apply_loads)
-        apply_loads();
+    }
+
+
+
+    void
+    MaterialPointSolver::initialize_stress()
+    {
       if (prm.initial_stress == InitialStress::uniform)
         model.set_uniform_stress(cloud);
       else if (prm.initial_stress == InitialStress::geostatic)

@@ -114,7 +114,9 @@ namespace slidewave
       void
       create_soil(dealii::TimerOutput &timer);
 
-      /** Builds the water on the soil just created (inside the soil's set-up). */
+      /** Builds the water on the soil's points just created and loads them (between the
+       *  soil's create_points() and initialize_stress(), so that the initial stress
+       *  carries the water's loads). */
       void
       setup_water();
 

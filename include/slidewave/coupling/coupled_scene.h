@@ -120,6 +120,15 @@ namespace slidewave
       void
       setup_water();
 
+      /** The soil's local points, for the interface to write their point forces: the
+       *  soil's layout declares these as loads set from outside, and deal.II's particle
+       *  iterators give access to the properties. */
+      SoilWaterInterface::PointRange
+      soil_points() const
+      {
+        return {soil->particles().begin(), soil->particles().end()};
+      }
+
       /** The water on @p mesh and the interface with the soil @p columns (interfaces). */
       void
       build_water(const water::WaterMesh &mesh, const std::vector<double> &columns);

@@ -142,7 +142,7 @@ namespace slidewave
       build_water(mesh, soil_columns);
       set_initial_water();
       if (coupling.loads_on_soil)
-        interface->apply_water_loads(*soil, *water, 0.);
+        interface->apply_water_loads(soil_points(), *water, 0.);
     }
 
 
@@ -169,7 +169,9 @@ namespace slidewave
                                                        mesh,
                                                        terrain_at_columns,
                                                        terrain.sample(mesh, scene.start_time),
-                                                       coupling.water_density,
+                                                       WaterConstants::of(coupling.water_density,
+                                                                          water_parameters),
+                                                       soil->property_layout(),
                                                        coupling.soil_surface,
                                                        soil_parameters.lower_left[1],
                                                        coupling.water_pressure);
@@ -180,7 +182,7 @@ namespace slidewave
     void
     CoupledScene::set_initial_water()
     {
-      interface->update_surface(*soil);
+      interface->update_surface(soil->particles());
       const std::vector<double> &bed = interface->bed();
       water->set_bed(bed);
       std::vector<double> depth, discharge;
@@ -196,7 +198,7 @@ namespace slidewave
     void
     CoupledScene::exchange_bed()
     {
-      interface->update_surface(*soil);
+      interface->update_surface(soil->particles());
       water->set_bed(interface->bed());
     }
 
@@ -320,12 +322,16 @@ namespace slidewave
       {
         dealii::TimerOutput::Scope scope(timer_output, "coupled: setup");
         create_soil(timer_output);
-        soil->setup(start_time, [this]() { setup_water(); });
+        // The water and its loads on the points come before the soil's initial stress: the
+        // geostatic stress carries them, and gravity loading holds them.
+        soil->create_points(start_time);
+        setup_water();
+        soil->initialize_stress();
         // The soil may have settled under gravity loading: the water starts over the bed
         // it left, at the initial condition.
         set_initial_water();
         if (coupling.loads_on_soil)
-          interface->apply_water_loads(*soil, *water, 0.);
+          interface->apply_water_loads(soil_points(), *water, 0.);
       }
       initial_volume = water->water_volume();
       initial_toe    = soil->integrals().runout;
@@ -439,7 +445,7 @@ namespace slidewave
       if (coupling.loads_on_soil)
         {
           dealii::TimerOutput::Scope scope(*timer, "coupled: water loads on soil");
-          interface->apply_water_loads(*soil, *water, last_water_step);
+          interface->apply_water_loads(soil_points(), *water, last_water_step);
         }
       if (coupling.tolerance_volume > 0.)
         max_volume_balance

@@ -8,18 +8,38 @@ namespace slidewave
 {
   namespace coupling
   {
-    SoilWaterInterface::SoilWaterInterface(std::vector<double>     column_interfaces,
-                                           const water::WaterMesh &water_mesh,
-                                           std::vector<double>     terrain_columns,
-                                           std::vector<double>     terrain_cells,
-                                           const double            density,
-                                           const SoilSurface       surface_kind,
-                                           const double            grid_floor,
-                                           const WaterPressure     water_pressure)
+    namespace
+    {
+      /** The index of the property @p name in @p layout, or numbers::invalid_unsigned_int
+       *  when the points do not carry it. */
+      unsigned int
+      index_if_any(const particles::PropertyLayout &layout, const std::string &name)
+      {
+        return layout.has(name) ? layout.index(name) : dealii::numbers::invalid_unsigned_int;
+      }
+    } // namespace
+
+
+
+    SoilWaterInterface::SoilWaterInterface(std::vector<double>              column_interfaces,
+                                           const water::WaterMesh          &water_mesh,
+                                           std::vector<double>              terrain_columns,
+                                           std::vector<double>              terrain_cells,
+                                           const WaterConstants            &constants,
+                                           const particles::PropertyLayout &soil_layout,
+                                           const SoilSurface                surface_kind,
+                                           const double                     grid_floor,
+                                           const WaterPressure              water_pressure)
       : columns(std::move(column_interfaces))
       , terrain_at_columns(std::move(terrain_columns))
       , terrain_at_cells(std::move(terrain_cells))
-      , water_density(density)
+      , water_constants(constants)
+      // The properties by their names once here, by index in every step.
+      , soil_property{soil_layout.index("volume"),
+                      soil_layout.index("domain_half_x"),
+                      soil_layout.index("domain_half_y"),
+                      index_if_any(soil_layout, "point_force_x"),
+                      index_if_any(soil_layout, "point_force_y")}
       , surface_definition(surface_kind)
       , floor(grid_floor)
       , pressure(water_pressure)
@@ -89,7 +109,7 @@ namespace slidewave
       // water that comes later loads the bed with its full pressure.
       constexpr double no_level = -std::numeric_limits<double>::infinity();
       const auto       wet
-        = [&](const unsigned int i) { return water.depth()[i] > water.parameters().dry_depth; };
+        = [&](const unsigned int i) { return water.depth()[i] > water_constants.dry_depth; };
       // Hydrostatic: one still level eta_s for all wet cells (a flat reference, so that the
       // buoyancy of the points below it is exactly the integral of its pressure over the
       // soil's boundary), the lowest free surface of the wet cells.
@@ -190,21 +210,18 @@ namespace slidewave
 
 
     void
-    SoilWaterInterface::update_surface(const mpm::MaterialPointSolver &soil)
+    SoilWaterInterface::update_surface(const dealii::Particles::ParticleHandler<2> &soil_points)
     {
-      // The half-sizes of the points' domains, by the names of the soil's property layout.
-      const unsigned int domain_half_x = soil.property_layout().index("domain_half_x");
-      const unsigned int domain_half_y = soil.property_layout().index("domain_half_y");
       std::fill(surface_height.begin(),
                 surface_height.end(),
                 -std::numeric_limits<double>::infinity());
       std::fill(envelope.begin(), envelope.end(), -std::numeric_limits<double>::infinity());
-      for (const auto &particle : soil.particles())
+      for (const auto &particle : soil_points)
         {
           const auto   x   = particle.get_location();
           const auto   p   = particle.get_properties();
-          const double top = x[1] + p[domain_half_y];
-          const double l   = p[domain_half_x];
+          const double top = x[1] + p[soil_property.domain_half_y];
+          const double l   = p[soil_property.domain_half_x];
           for_each_column_of(x[0], l, [&](const unsigned int c, const double) {
             surface_height[c] = std::max(surface_height[c], top);
             // The samples of the column under the point's domain.
@@ -263,42 +280,99 @@ namespace slidewave
 
 
 
+    double
+    SoilWaterInterface::buoyancy(const Point &point) const
+    {
+      if (pressure != WaterPressure::hydrostatic)
+        return 0.;
+      const auto   p      = point.get_properties();
+      const double l_y    = p[soil_property.domain_half_y];
+      const double bottom = point.get_location()[1] - l_y;
+      return water_constants.density * water_constants.gravity * p[soil_property.volume]
+             * std::clamp((buoyant_level - bottom) / (2. * l_y), 0., 1.);
+    }
+
+
+
+    double
+    SoilWaterInterface::thrust_of(const double level, const double bottom, const double top) const
+    {
+      const double below = std::max(level - bottom, 0.), above = std::max(level - top, 0.);
+      return 0.5 * water_constants.density * water_constants.gravity
+             * (below * below - above * above);
+    }
+
+
+
+    double
+    SoilWaterInterface::face_weight(const Point &point, const unsigned int column) const
+    {
+      // The excess of the water's pressure head over the reference's at the point's height,
+      // in the wet band of the face.
+      const double y = point.get_location()[1];
+      return column_thrust[column] != 0. && y >= band_bottom[column] ? std::abs(
+               std::max(band_level[column] - y, 0.) - std::max(band_reference[column] - y, 0.)) :
+                                                                       0.;
+    }
+
+
+
+    template <typename Function>
+    inline void
+    SoilWaterInterface::for_each_envelope_sample_of(const Point       &point,
+                                                    const unsigned int c,
+                                                    const Function    &f) const
+    {
+      // The surface where it is, not the column's highest point: a point of the
+      // neighbouring column whose domain reaches into a lower column would otherwise take
+      // that column's whole load.
+      const double l_y = point.get_properties()[soil_property.domain_half_y];
+      const double top = point.get_location()[1] + l_y;
+      for_each_sample_of(point.get_location()[0],
+                         point.get_properties()[soil_property.domain_half_x],
+                         c,
+                         [&](const unsigned int s) {
+                           if (envelope[s] > -std::numeric_limits<double>::infinity()
+                               && top >= envelope[s] - l_y)
+                             f(s);
+                         });
+    }
+
+
+
     void
-    SoilWaterInterface::apply_water_loads(mpm::MaterialPointSolver    &soil,
+    SoilWaterInterface::apply_water_loads(const PointRange            &soil_points,
                                           const water::ShallowWater1D &water,
                                           const double                 dt)
     {
-      // The half-sizes of the points' domains, by the names of the soil's property layout.
-      const unsigned int domain_half_x = soil.property_layout().index("domain_half_x");
-      const unsigned int domain_half_y = soil.property_layout().index("domain_half_y");
-      const auto        &mesh          = water.mesh();
-      const auto        &h             = water.depth();
-      const auto        &B             = water.bed();
-      const double       g             = water.parameters().gravity;
-      const double       n_m           = water.parameters().manning_coefficient;
-      const double       dry           = water.parameters().dry_depth;
-      const double       rho           = water_density;
-      const unsigned int n             = mesh.n_cells();
-
+      AssertThrow(soil_property.point_force_x != dealii::numbers::invalid_unsigned_int
+                    && soil_property.point_force_y != dealii::numbers::invalid_unsigned_int,
+                  dealii::ExcMessage("The soil's points carry no point forces to load."));
+      Assert(reference_level.size() == water.n_cells(), dealii::ExcInternalError());
       // Under the excess form (paper 000, Eq. 10) the pressure on the bed is that above the
       // initial level eta_0 of the cell, rho_w g (eta - eta_0); the still water's weight
       // and thrust are not loads. Under hydrostatic pressure the same relative to the still
       // level eta_s, whose pressure is the buoyancy of the points below it.
-      Assert(reference_level.size() == n, dealii::ExcInternalError());
-      constexpr double   no_level = -std::numeric_limits<double>::infinity();
-      const unsigned int volume   = soil.property_layout().index("volume");
-      // The buoyancy of a point: rho_w g times the part of its volume below the still level.
-      const auto buoyancy = [&](const auto &particle) {
-        if (pressure != WaterPressure::hydrostatic)
-          return 0.;
-        const auto   p      = particle.get_properties();
-        const double bottom = particle.get_location()[1] - p[domain_half_y];
-        return rho * g * p[volume]
-               * std::clamp((buoyant_level - bottom) / (2. * p[domain_half_y]), 0., 1.);
-      };
+      compute_cell_loads(water, dt);
+      compute_face_thrusts(water);
+      move_loads_to_columns();
+      count_bearing_points(soil_points);
+      write_point_forces(soil_points);
+    }
 
-      // Per water cell: the weight of the water (or of its excess over the initial level)
-      // on the bed, and the bed shear.
+
+
+    void
+    SoilWaterInterface::compute_cell_loads(const water::ShallowWater1D &water, const double dt)
+    {
+      const auto        &mesh = water.mesh();
+      const auto        &h    = water.depth();
+      const auto        &B    = water.bed();
+      const double       g    = water_constants.gravity;
+      const double       n_m  = water_constants.manning_coefficient;
+      const double       dry  = water_constants.dry_depth;
+      const double       rho  = water_constants.density;
+      const unsigned int n    = mesh.n_cells();
       for (unsigned int i = 0; i < n; ++i)
         {
           cell_load_x[i] = 0.;
@@ -321,15 +395,22 @@ namespace slidewave
           cell_load_x[i]    = tau * dx;
           cell_load_y[i]    = -rho * g * head * dx + tau * slope * dx;
         }
+    }
+
+
+
+    void
+    SoilWaterInterface::compute_face_thrusts(const water::ShallowWater1D &water)
+    {
       // The thrust of the water against each step of the bed, on the higher side: the
       // hydrostatic pressure of the lower cell's water integrated over the step's height,
       // borne by the soil in the wet band of the face, [B_low, eta_low]. Under the excess
       // form, the thrust of the present level less that of the initial level on the same
       // face (rho_w g (eta - eta_0) times the face's height where both levels are above it).
-      const auto thrust_of = [&](const double level, const double bottom, const double top) {
-        const double below = std::max(level - bottom, 0.), above = std::max(level - top, 0.);
-        return 0.5 * rho * g * (below * below - above * above);
-      };
+      constexpr double   no_level = -std::numeric_limits<double>::infinity();
+      const auto        &h        = water.depth();
+      const auto        &B        = water.bed();
+      const unsigned int n        = water.mesh().n_cells();
       std::fill(cell_thrust.begin(), cell_thrust.end(), 0.);
       std::fill(cell_band_bottom.begin(),
                 cell_band_bottom.end(),
@@ -340,7 +421,7 @@ namespace slidewave
         {
           const bool         rises = B[i + 1] > B[i];
           const unsigned int low = rises ? i : i + 1, high = rises ? i + 1 : i;
-          if (h[low] <= dry)
+          if (h[low] <= water_constants.dry_depth)
             continue;
           const double eta = h[low] + B[low];
           // (Both thrusts from the levels, so that still water, whose eta is computed as
@@ -352,15 +433,21 @@ namespace slidewave
           cell_band_level[high]     = std::max(cell_band_level[high], eta);
           cell_band_reference[high] = std::max(cell_band_reference[high], reference_level[low]);
         }
+    }
 
-      // To the columns (in proportion to the overlap).
+
+
+    void
+    SoilWaterInterface::move_loads_to_columns()
+    {
+      constexpr double no_level = -std::numeric_limits<double>::infinity();
       std::fill(column_load_x.begin(), column_load_x.end(), 0.);
       std::fill(column_load_y.begin(), column_load_y.end(), 0.);
       std::fill(column_thrust.begin(), column_thrust.end(), 0.);
       std::fill(band_bottom.begin(), band_bottom.end(), std::numeric_limits<double>::infinity());
       std::fill(band_level.begin(), band_level.end(), no_level);
       std::fill(band_reference.begin(), band_reference.end(), no_level);
-      for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int i = 0; i + 1 < overlap_start.size(); ++i)
         for (unsigned int e = overlap_start[i]; e < overlap_start[i + 1]; ++e)
           {
             // Weight and shear on the part of the column that is soil.
@@ -375,39 +462,26 @@ namespace slidewave
                 band_reference[c] = std::max(band_reference[c], cell_band_reference[i]);
               }
           }
+    }
 
+
+
+    void
+    SoilWaterInterface::count_bearing_points(const PointRange &soil_points)
+    {
       // The weight and shear of a column are shared equally by its samples that soil
       // covers, and the load of a sample by the points that form the envelope there (their
-      // top within half a point spacing of it): the surface where it is, not the column's
-      // highest point (a point of the neighbouring column whose domain reaches into a lower
-      // column would otherwise take that column's whole load). The points in the wet band
-      // of a face share its thrust in proportion to the (excess) water pressure at their
-      // height, in proportion to the part of the point's domain over the column.
-      const auto on_envelope = [&](const auto &particle, const unsigned int c, const auto &f) {
-        const double l_y = particle.get_properties()[domain_half_y];
-        const double top = particle.get_location()[1] + l_y;
-        for_each_sample_of(particle.get_location()[0],
-                           particle.get_properties()[domain_half_x],
-                           c,
-                           [&](const unsigned int s) {
-                             if (envelope[s] > no_level && top >= envelope[s] - l_y)
-                               f(s);
-                           });
-      };
-      const auto face_weight = [&](const auto &particle, const unsigned int column) {
-        const double y = particle.get_location()[1];
-        return column_thrust[column] != 0. && y >= band_bottom[column] ? std::abs(
-                 std::max(band_level[column] - y, 0.) - std::max(band_reference[column] - y, 0.)) :
-                                                                         0.;
-      };
+      // top within half a point spacing of it). The points in the wet band of a face share
+      // its thrust in proportion to the (excess) water pressure at their height, in
+      // proportion to the part of the point's domain over the column.
       std::fill(sample_count.begin(), sample_count.end(), 0.);
       std::fill(face_weights.begin(), face_weights.end(), 0.);
-      for (const auto &particle : soil.particles())
+      for (const auto &particle : soil_points)
         {
           for_each_column_of(particle.get_location()[0],
-                             particle.get_properties()[domain_half_x],
+                             particle.get_properties()[soil_property.domain_half_x],
                              [&](const unsigned int c, const double fraction) {
-                               on_envelope(particle, c, [&](const unsigned int s) {
+                               for_each_envelope_sample_of(particle, c, [&](const unsigned int s) {
                                  sample_count[s] += 1.;
                                });
                                face_weights[c] += fraction * face_weight(particle, c);
@@ -426,25 +500,34 @@ namespace slidewave
             column_load_x[c] += column_thrust[c];
             column_thrust[c] = 0.;
           }
+    }
 
+
+
+    void
+    SoilWaterInterface::write_point_forces(const PointRange &soil_points)
+    {
       double total_buoyancy = 0.;
-      soil.set_point_forces([&](const dealii::Particles::ParticleAccessor<2> &particle) {
-        dealii::Tensor<1, 2> force({0., buoyancy(particle)});
-        total_buoyancy += force[1];
-        for_each_column_of(particle.get_location()[0],
-                           particle.get_properties()[domain_half_x],
-                           [&](const unsigned int c, const double fraction) {
-                             on_envelope(particle, c, [&](const unsigned int s) {
-                               const double share = 1. / (covered_samples[c] * sample_count[s]);
-                               force[0] += column_load_x[c] * share;
-                               force[1] += column_load_y[c] * share;
+      for (auto &particle : soil_points)
+        {
+          dealii::Tensor<1, 2> force({0., buoyancy(particle)});
+          total_buoyancy += force[1];
+          for_each_column_of(particle.get_location()[0],
+                             particle.get_properties()[soil_property.domain_half_x],
+                             [&](const unsigned int c, const double fraction) {
+                               for_each_envelope_sample_of(particle, c, [&](const unsigned int s) {
+                                 const double share = 1. / (covered_samples[c] * sample_count[s]);
+                                 force[0] += column_load_x[c] * share;
+                                 force[1] += column_load_y[c] * share;
+                               });
+                               const double face = fraction * face_weight(particle, c);
+                               if (face > 0.)
+                                 force[0] += column_thrust[c] * face / face_weights[c];
                              });
-                             const double face = fraction * face_weight(particle, c);
-                             if (face > 0.)
-                               force[0] += column_thrust[c] * face / face_weights[c];
-                           });
-        return force;
-      });
+          auto p                         = particle.get_properties();
+          p[soil_property.point_force_x] = force[0];
+          p[soil_property.point_force_y] = force[1];
+        }
 
       // What the soil carries: the loads of the columns with soil, and the buoyancy.
       total_load

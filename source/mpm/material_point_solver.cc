@@ -63,7 +63,16 @@ namespace slidewave
 
 
     void
-    MaterialPointSolver::setup(const double start_time, const std::function<void()> &apply_loads)
+    MaterialPointSolver::setup(const double start_time)
+    {
+      create_points(start_time);
+      initialize_stress();
+    }
+
+
+
+    void
+    MaterialPointSolver::create_points(const double start_time)
     {
       engine.create_points(start_time,
                            prm.regions,
@@ -76,8 +85,13 @@ namespace slidewave
                              model.fill_new_point(properties, position, region_index, hx, hy);
                              return true;
                            });
-      if (apply_loads)
-        apply_loads();
+    }
+
+
+
+    void
+    MaterialPointSolver::initialize_stress()
+    {
       if (prm.initial_stress == InitialStress::uniform)
         model.set_uniform_stress(engine.point_cloud());
       else if (prm.initial_stress == InitialStress::geostatic)

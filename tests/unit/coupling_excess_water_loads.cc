@@ -69,17 +69,18 @@ namespace
                                            mesh,
                                            terrain,
                                            terrain,
-                                           1000.,
+                                           coupling::WaterConstants::of(1000., water.parameters()),
+                                           soil.property_layout(),
                                            coupling::SoilSurface::envelope,
                                            0.,
                                            pressure);
-    interface.update_surface(soil);
+    interface.update_surface(soil.particles());
     const std::vector<double> bed = interface.bed();
     water.set_bed(bed);
     set_level(water, bed, initial);
     interface.set_initial_level(water);
     set_level(water, bed, level);
-    interface.apply_water_loads(soil, water, 0.);
+    interface.apply_water_loads({soil.particles().begin(), soil.particles().end()}, water, 0.);
     return interface.load_on_soil();
   }
 

@@ -62,11 +62,12 @@ namespace
                                            mesh,
                                            terrain,
                                            terrain,
-                                           1000.,
+                                           coupling::WaterConstants::of(1000., water.parameters()),
+                                           soil.property_layout(),
                                            coupling::SoilSurface::envelope,
                                            0.,
                                            coupling::WaterPressure::hydrostatic);
-    interface.update_surface(soil);
+    interface.update_surface(soil.particles());
     const std::vector<double> bed       = interface.bed();
     double                    bed_error = 0.;
     for (unsigned int i = 0; i < 20; ++i)
@@ -84,7 +85,7 @@ namespace
     set_level(still);
     interface.set_initial_level(water);
     set_level(level);
-    interface.apply_water_loads(soil, water, 0.);
+    interface.apply_water_loads({soil.particles().begin(), soil.particles().end()}, water, 0.);
 
     const dealii::Tensor<1, 2> total = soil.total_point_force();
     const dealii::Tensor<1, 2> own   = interface.load_on_soil();

@@ -114,9 +114,19 @@ namespace slidewave
       void
       create_soil(dealii::TimerOutput &timer);
 
-      /** Builds the water on the soil just created (inside the soil's set-up). */
+      /** Builds the water on the soil's points just created and loads them (between the
+       *  soil's create_points() and initialize_stress(), so that the initial stress
+       *  carries the water's loads). */
       void
       setup_water();
+
+      /** The soil's local points, for the interface to write their point forces (the
+       *  soil's layout declares these as loads set from outside). */
+      SoilWaterInterface::PointRange
+      soil_points()
+      {
+        return {soil->points().begin(), soil->points().end()};
+      }
 
       /** The water on @p mesh and the interface with the soil @p columns (interfaces). */
       void

@@ -2,10 +2,12 @@
 #define slidewave_coupling_soil_water_interface_h
 
 #include <deal.II/base/tensor.h>
+#include <deal.II/particles/particle_handler.h>
 #include <limits>
 #include <slidewave/coupling/monotone_cubic.h>
-#include <slidewave/mpm/material_point_solver.h>
+#include <slidewave/particles/property_layout.h>
 #include <slidewave/water/shallow_water_1d.h>
+#include <slidewave/water/shallow_water_parameters.h>
 #include <vector>
 
 namespace slidewave
@@ -48,6 +50,33 @@ namespace slidewave
 
 
     /**
+     * The constants of the water that its loads on the soil depend on (paper 000, Eq. 10),
+     * given to SoilWaterInterface once at construction: the interface reads the water's
+     * state, never its solver's parameters.
+     */
+    struct WaterConstants
+    {
+      /** rho_w [kg/m^3] (subsection "Coupling", 'Water density'). */
+      double density;
+      /** g [m/s^2] (the water's 'Gravity'). */
+      double gravity;
+      /** Manning's n of the bed shear [s/m^(1/3)]. */
+      double manning_coefficient;
+      /** The depth at and below which a water cell is dry and loads nothing [m]. */
+      double dry_depth;
+
+      /** The constants of water of density @p density [kg/m^3] that @p parameters
+       *  describe (gravity, Manning's n, dry depth). */
+      static WaterConstants
+      of(const double density, const water::ShallowWaterParameters &parameters)
+      {
+        return {density, parameters.gravity, parameters.manning_coefficient, parameters.dry_depth};
+      }
+    };
+
+
+
+    /**
      * What passes between the soil (material points) and the water (1D finite volumes)
      * across the seabed (paper 000, Eq. 10 and Algorithm 1):
      *
@@ -72,24 +101,33 @@ namespace slidewave
      * column without soil rests on the rigid floor.
      *
      * The water mesh and the columns are fixed at construction; per step the class
-     * allocates nothing.
+     * allocates nothing. Of the soil it knows only its points: their properties by the
+     * indices of the soil's PropertyLayout, found once at construction (the half-sizes of
+     * the points' domains and their volume, read; the point forces, written).
      */
     class SoilWaterInterface
     {
     public:
+      /** The soil's material points, with write access to their point forces. */
+      using PointRange = dealii::Particles::ParticleHandler<2>::particle_iterator_range;
+
       /**
        * @p columns: the interfaces of the soil columns (increasing; the water mesh's own
        * interfaces when the water cells are the grid columns). @p terrain_at_columns and
        * @p terrain_at_cells: the fixed bed at the column and at the water cell centres.
+       * @p soil_layout: the properties of the soil's points; it must name
+       * "domain_half_x", "domain_half_y" and "volume", and "point_force_x",
+       * "point_force_y" if apply_water_loads() is called.
        */
-      SoilWaterInterface(std::vector<double>     columns,
-                         const water::WaterMesh &water_mesh,
-                         std::vector<double>     terrain_at_columns,
-                         std::vector<double>     terrain_at_cells,
-                         double                  water_density,
-                         SoilSurface             surface,
-                         double                  grid_floor,
-                         WaterPressure           pressure = WaterPressure::hydrostatic);
+      SoilWaterInterface(std::vector<double>              columns,
+                         const water::WaterMesh          &water_mesh,
+                         std::vector<double>              terrain_at_columns,
+                         std::vector<double>              terrain_at_cells,
+                         const WaterConstants            &water_constants,
+                         const particles::PropertyLayout &soil_layout,
+                         SoilSurface                      surface,
+                         double                           grid_floor,
+                         WaterPressure                    pressure = WaterPressure::hydrostatic);
 
       /** Takes the water's present state as the reference of the loads: the free surface
        *  h + B per water cell as the initial level eta_0 of the excess pressure
@@ -110,21 +148,23 @@ namespace slidewave
       void
       restore_initial_level(const std::vector<double> &level);
 
-      /** The soil surface per column from the material points (collective). */
+      /** The soil surface per column from the material points @p soil_points
+       *  (collective). */
       void
-      update_surface(const mpm::MaterialPointSolver &soil);
+      update_surface(const dealii::Particles::ParticleHandler<2> &soil_points);
 
       /** The bed per water cell from the last surface. */
       const std::vector<double> &
       bed();
 
       /**
-       * Sets the point forces of the surface points from the water's state; @p dt is the
-       * step the water just took (the bed shear never takes more momentum than the water
-       * column has in one step). Collective.
+       * Sets the point forces of all the soil's local points @p soil_points from the
+       * water's state (zero away from the surface, the faces and the still water); @p dt
+       * is the step the water just took (the bed shear never takes more momentum than the
+       * water column has in one step). Collective.
        */
       void
-      apply_water_loads(mpm::MaterialPointSolver    &soil,
+      apply_water_loads(const PointRange            &soil_points,
                         const water::ShallowWater1D &water,
                         double                       dt);
 
@@ -144,6 +184,57 @@ namespace slidewave
       }
 
     private:
+      using Point = dealii::Particles::ParticleAccessor<2>;
+
+      /** Step 1 of apply_water_loads(): per water cell, the weight on the bed of the water
+       *  (or of its excess over the reference level) and the Manning bed shear (paper 000,
+       *  Eq. 10), in cell_load_x, cell_load_y. */
+      void
+      compute_cell_loads(const water::ShallowWater1D &water, double dt);
+
+      /** Step 2: per water cell, the thrust of the water against the step of the bed on
+       *  its rising side and the wet band of that face (cell_thrust, cell_band_*). */
+      void
+      compute_face_thrusts(const water::ShallowWater1D &water);
+
+      /** Step 3: the loads of the water cells moved to the columns in proportion to the
+       *  overlap (conservative), the weight and shear to the part that is soil. */
+      void
+      move_loads_to_columns();
+
+      /** Step 4: how many points bear each envelope sample's load and the face weights of
+       *  the points in each column's wet band (collective); the thrust of a face too low
+       *  to hold a point goes to the column's surface points. */
+      void
+      count_bearing_points(const PointRange &soil_points);
+
+      /** Step 5: writes the point force of every local point and sums total_load, the
+       *  loads of the columns with soil and the buoyancy (collective). */
+      void
+      write_point_forces(const PointRange &soil_points);
+
+      /** The buoyancy of @p point [N/m]: rho_w g times the part of its volume below the
+       *  still level (WaterPressure::hydrostatic; otherwise 0). */
+      double
+      buoyancy(const Point &point) const;
+
+      /** The hydrostatic thrust [N/m] of water at @p level on a face from @p bottom to
+       *  @p top. */
+      double
+      thrust_of(double level, double bottom, double top) const;
+
+      /** The share of a face's thrust that @p point in @p column takes, before
+       *  normalization: the (excess) water pressure head at its height within the wet
+       *  band, 0 outside it. */
+      double
+      face_weight(const Point &point, unsigned int column) const;
+
+      /** Calls f(sample) for every envelope sample of column @p c that @p point forms
+       *  (its top within half its height of the envelope there). */
+      template <typename Function>
+      void
+      for_each_envelope_sample_of(const Point &point, unsigned int c, const Function &f) const;
+
       unsigned int
       column_of(double x) const;
 
@@ -168,10 +259,17 @@ namespace slidewave
       /** The width of the columns if they are all equal, else 0. */
       double              uniform_width = 0.;
       std::vector<double> terrain_at_columns, terrain_at_cells;
-      double              water_density;
-      SoilSurface         surface_definition;
-      double              floor;
-      WaterPressure       pressure;
+      WaterConstants      water_constants;
+      /** Where the interface reads and writes a soil point's properties: their indices
+       *  in its property array, from the soil's layout (the point forces'
+       *  numbers::invalid_unsigned_int when the soil carries none). */
+      struct PropertyIndices
+      {
+        unsigned int volume, domain_half_x, domain_half_y, point_force_x, point_force_y;
+      } soil_property;
+      SoilSurface   surface_definition;
+      double        floor;
+      WaterPressure pressure;
       /** eta_0 per water cell (WaterPressure::excess_over_initial_level), or eta_s where
        *  the cell was wet at the start (WaterPressure::hydrostatic); -infinity elsewhere. */
       std::vector<double> reference_level;

@@ -65,13 +65,29 @@ namespace slidewave
 
       /**
        * Creates the grid, fills the regions with material points and sets up their
-       * initial stress (at time @p start_time; gravity loading runs before it).
-       * @p apply_loads, if given, is called once the points exist and before the initial
-       * stress is set up: it sets the point forces (surface loads), which the geostatic
-       * stress then carries and gravity loading holds.
+       * initial stress (at time @p start_time; gravity loading runs before it):
+       * create_points() then initialize_stress().
        */
       void
-      setup(double start_time = 0., const std::function<void()> &apply_loads = {});
+      setup(double start_time = 0.);
+
+      /**
+       * The first half of setup(): the grid (refined where the material will be and
+       * partitioned by the points to come), the material points of the regions, the load
+       * balance and the first full sort, at time @p start_time. A scene that loads the
+       * points (the water of a coupled scene) sets their point forces after this and
+       * before initialize_stress().
+       */
+      void
+      create_points(double start_time = 0.);
+
+      /**
+       * The second half of setup(): the initial stress of the points ('Initial stress':
+       * uniform, geostatic, or gravity loading). The geostatic stress carries the point
+       * forces set since create_points(), and gravity loading holds them.
+       */
+      void
+      initialize_stress();
 
       bool
       has_point_forces() const
@@ -171,6 +187,14 @@ namespace slidewave
 
       const dealii::Particles::ParticleHandler<2> &
       particles() const
+      {
+        return engine.point_cloud().particles();
+      }
+
+      /** The points, writable: for a physics that loads them from outside (the water of a
+       *  coupled scene writes the point forces the layout declares as external loads). */
+      dealii::Particles::ParticleHandler<2> &
+      points()
       {
         return engine.point_cloud().particles();
       }

@@ -10,7 +10,7 @@
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/coupling/coupled_scene.h>
 #include <slidewave/depth_averaged/depth_averaged_scene.h>
-#include <slidewave/mpm/material_point_scene.h>
+#include <slidewave/soil/material_point_scene.h>
 #include <slidewave/water/water_scene.h>
 #include <sstream>
 
@@ -195,7 +195,7 @@ namespace slidewave
   {
     SceneParameters::declare_parameters(prm);
     water::WaterScene::declare_parameters(prm);
-    mpm::MaterialPointScene::declare_parameters(prm);
+    soil::MaterialPointScene::declare_parameters(prm);
     coupling::CoupledScene::declare_parameters(prm);
     depth_averaged::DepthAveragedScene::declare_parameters(prm);
   }
@@ -320,7 +320,7 @@ namespace slidewave
             case Physics::shallow_water:
               return run_scene<water::WaterScene>(scene, prm, validate_only, input_file, out);
             case Physics::material_points:
-              return run_scene<mpm::MaterialPointScene>(scene, prm, validate_only, input_file, out);
+              return run_scene<soil::MaterialPointScene>(scene, prm, validate_only, input_file, out);
             case Physics::coupled:
               return run_scene<coupling::CoupledScene>(scene, prm, validate_only, input_file, out);
             case Physics::depth_averaged:

@@ -12,6 +12,7 @@
 #include <slidewave/core/timed_run.h>
 #include <slidewave/coupling/coupled_scene.h>
 #include <slidewave/io/solver_checkpoints.h>
+#include <slidewave/water/water_checkpoint.h>
 #include <sstream>
 
 namespace slidewave
@@ -309,8 +310,8 @@ namespace slidewave
     CoupledScene::create_soil(dealii::TimerOutput &timer_output)
     {
       timer = &timer_output;
-      grid  = mpm::MaterialPointSolver::make_grid(soil_parameters);
-      soil  = std::make_unique<mpm::MaterialPointSolver>(soil_parameters, *grid);
+      grid  = soil::MaterialPointSolver::make_grid(soil_parameters);
+      soil  = std::make_unique<soil::MaterialPointSolver>(soil_parameters, *grid);
       soil->set_timer(timer_output);
     }
 
@@ -346,7 +347,7 @@ namespace slidewave
     {
       if (soil_parameters.fixed_time_step > 0.)
         {
-          const double limit = mpm::max_time_step_multiplier * soil->stability_limit();
+          const double limit = soil::max_time_step_multiplier * soil->stability_limit();
           if (soil_parameters.fixed_time_step > limit)
             throw InputError("Material points/Fixed time step",
                              to_string(soil_parameters.fixed_time_step),
@@ -536,7 +537,7 @@ namespace slidewave
       record.put("coupling/max_volume_balance", max_volume_balance);
       record.put("coupling/max_deviation", max_deviation);
       record.put("coupling/max_soil_speed", max_soil_speed);
-      io::save_state(record, "water", *water);
+      water::save_state(record, "water", *water);
       record.put_files("soil/particle_files", particle_output.files);
     }
 
@@ -565,7 +566,7 @@ namespace slidewave
       // forces themselves travel with the material points).
       build_water(water::WaterMesh(record.get_vector("coupling/water_interfaces")),
                   record.get_vector("coupling/columns"));
-      io::restore_state(record, "water", *water);
+      water::restore_state(record, "water", *water);
       const auto &load = record.get_vector("coupling/load_on_soil");
       interface->restore_load_on_soil(dealii::Tensor<1, 2>({load.at(0), load.at(1)}));
       interface->restore_initial_level(record.get_vector("coupling/initial_level"));

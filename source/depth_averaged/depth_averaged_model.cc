@@ -6,7 +6,7 @@
 #include <slidewave/core/rank_reports.h>
 #include <slidewave/depth_averaged/bingham.h>
 #include <slidewave/depth_averaged/depth_averaged_model.h>
-#include <slidewave/mpm/particle_engine.templates.h>
+#include <slidewave/engine/particle_engine.templates.h>
 #include <sstream>
 
 namespace slidewave
@@ -53,7 +53,7 @@ namespace slidewave
                                     const dealii::Tensor<2, 2> *cell_gradients,
                                     const double                dt) const
     {
-      const bool   follow_stretch = prm.shape_function == mpm::ShapeFunction::cpgimp;
+      const bool   follow_stretch = prm.shape_function == grid::ShapeFunction::cpgimp;
       const double max_half       = 0.5 * prm.cell_size;
       const double mu = prm.viscosity, tau_y = prm.yield_stress;
       unsigned int k = 0;
@@ -79,7 +79,7 @@ namespace slidewave
           p[property::stress_yy] = sigma.yy;
           p[property::stress_xy] = sigma.xy;
           if (follow_stretch)
-            mpm::stretch_domain(
+            grid::stretch_domain(
               p[property::domain_half_x], p[property::domain_half_y], L, dt, max_half);
         }
     }
@@ -305,6 +305,6 @@ namespace slidewave
     }
   } // namespace depth_averaged
 
-  template class mpm::TransferKernels<depth_averaged::DepthAveragedModel>;
-  template class mpm::ParticleEngine<depth_averaged::DepthAveragedModel>;
+  template class engine::TransferKernels<depth_averaged::DepthAveragedModel>;
+  template class engine::ParticleEngine<depth_averaged::DepthAveragedModel>;
 } // namespace slidewave

@@ -227,7 +227,7 @@ namespace slidewave
         using namespace dealii::Patterns;
         prm.enter_subsection("Release");
         {
-          mpm::MaterialRegion::declare_parameters(prm,
+          particles::MaterialRegion::declare_parameters(prm,
                                                   /*with_material=*/false,
                                                   /*with_vector_file=*/true);
           prm.declare_entry("Depth",
@@ -440,7 +440,7 @@ namespace slidewave
         prm.enter_subsection("Release");
         {
           const std::string release_path = path + "/Release";
-          parameters.release             = mpm::MaterialRegion();
+          parameters.release             = particles::MaterialRegion();
           if (!parameters.release.parse_parameters(prm, release_path, /*with_material=*/false))
             throw InputError(release_path + "/Shape",
                              "none",
@@ -508,9 +508,9 @@ namespace slidewave
                                   HydrostaticTerm::standard;
       still_level             = prm.get_double("Still level");
       const std::string shape = prm.get("Shape functions");
-      shape_function          = shape == "gimp"   ? mpm::ShapeFunction::gimp :
-                                shape == "cpgimp" ? mpm::ShapeFunction::cpgimp :
-                                                    mpm::ShapeFunction::q1;
+      shape_function          = shape == "gimp"   ? grid::ShapeFunction::gimp :
+                                shape == "cpgimp" ? grid::ShapeFunction::cpgimp :
+                                                    grid::ShapeFunction::q1;
       flip_fraction           = prm.get_double("FLIP fraction");
       courant_number          = prm.get_double("Courant number");
       if (!(courant_number > 0. && courant_number <= 0.70710678118654752))

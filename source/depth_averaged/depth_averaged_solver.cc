@@ -67,10 +67,10 @@ namespace slidewave
           n(1));
       }
 
-      mpm::ParticleEngine<DepthAveragedModel>::Settings
+      engine::ParticleEngine<DepthAveragedModel>::Settings
       engine_settings(const DepthAveragedParameters &prm)
       {
-        mpm::ParticleEngine<DepthAveragedModel>::Settings settings;
+        engine::ParticleEngine<DepthAveragedModel>::Settings settings;
         settings.shape_function  = prm.shape_function;
         settings.flip_fraction   = prm.flip_fraction;
         settings.particle_weight = prm.balancing.particle_weight;
@@ -79,7 +79,7 @@ namespace slidewave
       }
 
       /** No rigid walls in a depth-averaged scene. */
-      const std::vector<mpm::RigidWall> no_walls;
+      const std::vector<grid::RigidWall> no_walls;
     } // namespace
 
 

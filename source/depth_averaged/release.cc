@@ -17,7 +17,7 @@ namespace slidewave
       /** Refuses @p area unless it lies inside the grid: an InputError naming @p parameter
        *  = @p value, what is allowed and @p which ("it", "polygon 2"). */
       void
-      check_inside_grid(const mpm::MaterialRegion     &area,
+      check_inside_grid(const particles::MaterialRegion     &area,
                         const DepthAveragedParameters &prm,
                         const std::string             &parameter,
                         const std::string             &value,
@@ -37,7 +37,7 @@ namespace slidewave
 
 
       void
-      check_inside_grid(const mpm::MaterialRegion     &area,
+      check_inside_grid(const particles::MaterialRegion     &area,
                         const DepthAveragedParameters &prm,
                         const std::string             &parameter,
                         const std::string             &value,
@@ -75,7 +75,7 @@ namespace slidewave
                                                     model_crs_wkt,
                                                     prm.depth_attribute))
           {
-            mpm::MaterialRegion area = prm.release;
+            particles::MaterialRegion area = prm.release;
             area.vector_file.clear();
             area.polygon = std::move(polygon.outer);
             area.holes   = std::move(polygon.holes);

@@ -20,7 +20,7 @@ namespace slidewave
       const auto &dofs            = grid.dof_handler();
       const auto &vertex_to_cells = grid.vertex_cells();
       patch_start.assign(tria.n_active_cells() + 1, 0);
-      own_cell.assign(tria.n_active_cells(), mpm::PatchCell{});
+      own_cell.assign(tria.n_active_cells(), grid::PatchCell{});
       patch_cells.clear();
       patch_cell_iterators.clear();
       // A cell and at most its 8 neighbours on a uniform grid (more next to finer cells):
@@ -32,7 +32,7 @@ namespace slidewave
       std::vector<dealii::types::global_dof_index>    dof_indices(4);
       std::vector<BackgroundGrid::ActiveCellIterator> neighbours;
       const auto make_entry = [&](const dealii::DoFHandler<2>::active_cell_iterator &cell) {
-        mpm::PatchCell entry;
+        grid::PatchCell entry;
         entry.x0 = cell->vertex(0)[0];
         entry.y0 = cell->vertex(0)[1];
         entry.hx = cell->vertex(1)[0] - entry.x0;

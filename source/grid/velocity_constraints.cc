@@ -9,7 +9,7 @@ namespace slidewave
     VelocityConstraints::VelocityConstraints(const BackgroundGrid              &grid,
                                              const NodalWorkspace              &nodes,
                                              const std::array<GridBoundary, 4> &sides,
-                                             const std::vector<mpm::RigidWall> &walls)
+                                             const std::vector<grid::RigidWall> &walls)
       : grid(grid)
       , nodes(nodes)
       , sides(sides)
@@ -67,7 +67,7 @@ namespace slidewave
           std::sort(on_wall.begin(), on_wall.end());
           on_wall.erase(std::unique(on_wall.begin(), on_wall.end()), on_wall.end());
           for (unsigned int d = 0; d < 2; ++d)
-            if (d == wall.normal_component() || wall.condition == mpm::RigidWall::Condition::fixed)
+            if (d == wall.normal_component() || wall.condition == grid::RigidWall::Condition::fixed)
               held.nodes[d] = on_wall;
           supports.push_back(held);
         }

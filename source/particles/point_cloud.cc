@@ -25,7 +25,7 @@ namespace slidewave
 
 
     void
-    PointCloud::expect_points(const std::vector<mpm::MaterialRegion> &regions, const unsigned int n)
+    PointCloud::expect_points(const std::vector<particles::MaterialRegion> &regions, const unsigned int n)
     {
       expected_regions       = &regions;
       expected_per_direction = n;
@@ -146,7 +146,7 @@ namespace slidewave
 
     void
     PointCloud::create(const unsigned int                      n,
-                       const std::vector<mpm::MaterialRegion> &regions,
+                       const std::vector<particles::MaterialRegion> &regions,
                        const PropertyFill                     &fill)
     {
       std::vector<double> values(handler.n_properties_per_particle(), 0.);
@@ -186,13 +186,13 @@ namespace slidewave
     bool
     PointCloud::relocate_within_patches(const std::vector<dealii::Point<2>> &new_positions,
                                         const grid::CellPatches             &patches,
-                                        mpm::StepTimeline                   *timeline)
+                                        core::StepTimeline                   *timeline)
     {
       // The reference coordinates exactly as deal.II's MappingCartesian computes them,
       // and its test for a point inside the unit cell, so that this path and the full
       // sort put every point in the same cell at the same reference coordinates.
       const auto locate
-        = [](const mpm::PatchCell &c, const dealii::Point<2> &x, dealii::Point<2> &reference) {
+        = [](const grid::PatchCell &c, const dealii::Point<2> &x, dealii::Point<2> &reference) {
             reference[0] = (x[0] - c.x0) / c.hx;
             reference[1] = (x[1] - c.y0) / c.hy;
             return reference[0] >= 0. && reference[0] <= 1. && reference[1] >= 0.
@@ -241,12 +241,12 @@ namespace slidewave
       const unsigned int local[2]  = {leaves_patch ? 1u : 0u, moving_particles.empty() ? 0u : 1u};
       unsigned int       global[2] = {0, 0};
       if (timeline)
-        timeline->lap(mpm::StepTimeline::relocation);
+        timeline->lap(core::StepTimeline::relocation);
       dealii::Utilities::MPI::max(dealii::ArrayView<const unsigned int>(local, 2),
                                   MPI_COMM_WORLD,
                                   dealii::ArrayView<unsigned int>(global, 2));
       if (timeline)
-        timeline->lap(mpm::StepTimeline::relocation_reduction);
+        timeline->lap(core::StepTimeline::relocation_reduction);
       if (global[0] != 0)
         return false; // the full sort takes over (the locations are set)
       if (global[1] == 0)

@@ -14,7 +14,7 @@
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/core/timed_run.h>
-#include <slidewave/io/solver_checkpoints.h>
+#include <slidewave/water/water_checkpoint.h>
 #include <slidewave/water/water_output.h>
 #include <slidewave/water/water_scene.h>
 #include <sstream>
@@ -485,7 +485,7 @@ namespace slidewave
     WaterScene::save(io::CheckpointRecord &record)
     {
       gauges.flush();
-      io::save_state(record, "water", *water);
+      water::save_state(record, "water", *water);
       record.put("water/initial_volume", initial_volume);
       record.put("water/initial_depth", initial_depth);
       record.put("water/initial_discharge", initial_discharge);
@@ -500,7 +500,7 @@ namespace slidewave
                        dealii::TimerOutput &timer_output)
     {
       timer = &timer_output;
-      io::restore_state(record, "water", *water);
+      water::restore_state(record, "water", *water);
       initial_volume     = record.get("water/initial_volume");
       initial_depth      = record.get_vector("water/initial_depth");
       initial_discharge  = record.get_vector("water/initial_discharge");

@@ -34,8 +34,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <limits>
 #include <slidewave/coupling/soil_water_interface.h>
-#include <slidewave/mpm/material_point_solver.h>
-#include <slidewave/mpm/particle_properties.h>
+#include <slidewave/soil/material_point_solver.h>
+#include <slidewave/soil/particle_properties.h>
 #include <slidewave/water/shallow_water_1d.h>
 #include <vector>
 
@@ -57,7 +57,7 @@ namespace
 
   /** The loads on the soil with the water at @p level, the initial level being @p initial. */
   dealii::Tensor<1, 2>
-  loads_at(mpm::MaterialPointSolver     &soil,
+  loads_at(soil::MaterialPointSolver     &soil,
            const double                  initial,
            const double                  level,
            const coupling::WaterPressure pressure)
@@ -85,7 +85,7 @@ namespace
   }
 
   void
-  check_level(mpm::MaterialPointSolver &soil,
+  check_level(soil::MaterialPointSolver &soil,
               const double              initial_level,
               const double              level,
               const double              exact_x,
@@ -108,7 +108,7 @@ namespace
     for (const auto &particle : soil.particles())
       {
         const auto   p  = particle.get_properties();
-        const double fx = p[mpm::property::point_force_x], fy = p[mpm::property::point_force_y];
+        const double fx = p[soil::property::point_force_x], fy = p[soil::property::point_force_y];
         largest = std::max({largest, std::abs(fx), std::abs(fy)});
         if (particle.get_location()[0] < 0.9)
           stray_x = std::max(stray_x, std::abs(fx));
@@ -178,8 +178,8 @@ main(int argc, char **argv)
   unit_check::print = root;
   {
     const auto               soil_parameters = block_in_a_tank();
-    auto                     grid            = mpm::MaterialPointSolver::make_grid(soil_parameters);
-    mpm::MaterialPointSolver soil(soil_parameters, *grid);
+    auto                     grid            = soil::MaterialPointSolver::make_grid(soil_parameters);
+    soil::MaterialPointSolver soil(soil_parameters, *grid);
     soil.setup();
     check_level(soil, 1.5, 1.5, 0., 0.);
     check_level(soil, 1.5, 1.6, -rho_g * 0.1, -rho_g * 0.1);

@@ -36,8 +36,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <limits>
 #include <slidewave/coupling/soil_water_interface.h>
-#include <slidewave/mpm/material_point_solver.h>
-#include <slidewave/mpm/particle_properties.h>
+#include <slidewave/soil/material_point_solver.h>
+#include <slidewave/soil/particle_properties.h>
 #include <slidewave/water/shallow_water_1d.h>
 #include <vector>
 
@@ -48,7 +48,7 @@ namespace
   /** The loads with the water at @p level, the still level (the initial state) being
    *  @p still. */
   void
-  check_water(mpm::MaterialPointSolver &soil,
+  check_water(soil::MaterialPointSolver &soil,
               const double              still,
               const double              level,
               const double              exact_x,
@@ -96,11 +96,11 @@ namespace
       {
         const auto   p        = particle.get_properties();
         const double buoyancy = particle.get_location()[1] < buoyant_below ?
-                                  1000. * 9.81 * p[mpm::property::volume] :
+                                  1000. * 9.81 * p[soil::property::volume] :
                                   0.;
         off_buoyancy          = std::max({off_buoyancy,
-                                          std::abs(p[mpm::property::point_force_x]),
-                                          std::abs(p[mpm::property::point_force_y] - buoyancy)});
+                                          std::abs(p[soil::property::point_force_x]),
+                                          std::abs(p[soil::property::point_force_y] - buoyancy)});
       }
     off_buoyancy = dealii::Utilities::MPI::max(off_buoyancy, MPI_COMM_WORLD);
     if (root)
@@ -127,8 +127,8 @@ main(int argc, char **argv)
   unit_check::print = root;
   {
     const auto               soil_parameters = block_in_a_tank();
-    auto                     grid            = mpm::MaterialPointSolver::make_grid(soil_parameters);
-    mpm::MaterialPointSolver soil(soil_parameters, *grid);
+    auto                     grid            = soil::MaterialPointSolver::make_grid(soil_parameters);
+    soil::MaterialPointSolver soil(soil_parameters, *grid);
     soil.setup();
     const double rho_g = 1000. * 9.81;
     check_water(soil, 1.5, 1.5, 0., rho_g * 1.0, 2.);

@@ -9,8 +9,8 @@
 #include <deal.II/base/mpi.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/grid_follower.h>
-#include <slidewave/mpm/material_point_parameters.h>
-#include <slidewave/mpm/soil_model.h>
+#include <slidewave/soil/material_point_parameters.h>
+#include <slidewave/soil/soil_model.h>
 #include <string>
 #include <vector>
 
@@ -121,9 +121,9 @@ main(int argc, char **argv)
   // The soil's layout, with and without point forces.
   for (const bool point_forces : {false, true})
     {
-      mpm::MaterialPointParameters prm;
+      soil::MaterialPointParameters prm;
       prm.point_forces = point_forces;
-      const mpm::SoilModel soil(prm);
+      const soil::SoilModel soil(prm);
       const auto          &layout = soil.layout();
       if (root)
         {
@@ -143,9 +143,9 @@ main(int argc, char **argv)
                           "",
                         layout.is_state(i) ? "" : " (load, not checked by the guards)");
         }
-      check(layout.index("mass") == mpm::SoilModel::mass
-              && layout.index("velocity_y") == mpm::SoilModel::velocity_y
-              && layout.index("domain_half_x") == mpm::SoilModel::domain_half_x,
+      check(layout.index("mass") == soil::SoilModel::mass
+              && layout.index("velocity_y") == soil::SoilModel::velocity_y
+              && layout.index("domain_half_x") == soil::SoilModel::domain_half_x,
             "the layout's names at the model's indices");
     }
 

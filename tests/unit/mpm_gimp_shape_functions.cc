@@ -1,4 +1,4 @@
-// The material point shape functions of include/slidewave/mpm/shape_functions.h on a
+// The material point shape functions of include/slidewave/grid/shape_functions.h on a
 // hand-built uniform grid of PatchCell (cell size h = 0.5, origin (-0.75, 1.25), node ids
 // i + (nx + 1) j on the lattice of vertices; each cell's patch is the cell itself first,
 // then the cells sharing a vertex with it, as MaterialPointSolver builds it):
@@ -28,10 +28,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <slidewave/mpm/shape_functions.h>
+#include <slidewave/grid/shape_functions.h>
 #include <vector>
 
-using namespace slidewave::mpm;
+using namespace slidewave::grid;
 
 using unit_check::check;
 

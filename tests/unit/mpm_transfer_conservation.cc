@@ -28,11 +28,11 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
-#include <slidewave/mpm/material_point_solver.h>
-#include <slidewave/mpm/particle_properties.h>
+#include <slidewave/soil/material_point_solver.h>
+#include <slidewave/soil/particle_properties.h>
 #include <string>
 
-using namespace slidewave::mpm;
+using namespace slidewave::soil;
 
 namespace
 {

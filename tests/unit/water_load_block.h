@@ -9,7 +9,7 @@
 
 #include <cstdio>
 #include <deal.II/base/parameter_handler.h>
-#include <slidewave/mpm/material_point_parameters.h>
+#include <slidewave/soil/material_point_parameters.h>
 
 namespace
 {
@@ -17,12 +17,12 @@ namespace
   /** Rank 0 prints (unit_check::print follows it). */
   inline bool root = true;
 
-  slidewave::mpm::MaterialPointParameters
+  slidewave::soil::MaterialPointParameters
   block_in_a_tank()
   {
     dealii::ParameterHandler prm;
     prm.enter_subsection("Material points");
-    slidewave::mpm::MaterialPointParameters::declare_parameters(prm);
+    slidewave::soil::MaterialPointParameters::declare_parameters(prm);
     prm.leave_subsection();
     prm.parse_input_from_string(R"(subsection Material points
 set Shape functions = gimp
@@ -46,7 +46,7 @@ subsection Region 1
 end
 end
 )");
-    slidewave::mpm::MaterialPointParameters result;
+    slidewave::soil::MaterialPointParameters result;
     prm.enter_subsection("Material points");
     result.parse_parameters(prm, "Material points");
     prm.leave_subsection();

@@ -11,7 +11,7 @@
 #include <slidewave/coupling/coupling_parameters.h>
 #include <slidewave/coupling/soil_water_interface.h>
 #include <slidewave/io/particle_output.h>
-#include <slidewave/mpm/material_point_solver.h>
+#include <slidewave/soil/material_point_solver.h>
 #include <slidewave/water/shallow_water_1d.h>
 #include <slidewave/water/water_output.h>
 #include <slidewave/water/water_state_parameters.h>
@@ -150,7 +150,7 @@ namespace slidewave
 
       const SceneParameters          &scene;
       CouplingParameters              coupling;
-      mpm::MaterialPointParameters    soil_parameters;
+      soil::MaterialPointParameters    soil_parameters;
       water::ShallowWaterParameters   water_parameters;
       std::optional<water::WaterMesh> configured_mesh;
       water::WaterBoundary            boundaries[2];
@@ -161,7 +161,7 @@ namespace slidewave
 
       /** The soil's background grid (declared before the soil: it outlives it). */
       std::unique_ptr<grid::BackgroundGrid>     grid;
-      std::unique_ptr<mpm::MaterialPointSolver> soil;
+      std::unique_ptr<soil::MaterialPointSolver> soil;
       std::unique_ptr<water::ShallowWater1D>    water;
       std::unique_ptr<SoilWaterInterface>       interface;
       water::GaugeRecorder                      gauges;

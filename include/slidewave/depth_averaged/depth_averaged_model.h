@@ -7,8 +7,8 @@
 #include <deal.II/particles/particle_handler.h>
 #include <memory>
 #include <slidewave/depth_averaged/depth_averaged_parameters.h>
-#include <slidewave/mpm/particle_model_defaults.h>
-#include <slidewave/mpm/shape_functions.h>
+#include <slidewave/engine/particle_model_defaults.h>
+#include <slidewave/grid/shape_functions.h>
 #include <slidewave/particles/point_cloud.h>
 #include <slidewave/particles/property_layout.h>
 #include <slidewave/terrain/elevation_grid.h>
@@ -61,7 +61,7 @@ namespace slidewave
      * The terrain is a terrain::ElevationGrid: Z and grad Z at a point are one bilinear
      * lookup.
      */
-    class DepthAveragedModel : public mpm::ParticleModelDefaults
+    class DepthAveragedModel : public engine::ParticleModelDefaults
     {
     public:
       static constexpr unsigned int mass          = property::mass;
@@ -176,7 +176,7 @@ namespace slidewave
        *  force -V_p sigma^nabla grad N and the weight's slope term m N b. */
       void
       nodal_force(const ScatterTerms     &t,
-                  const mpm::NodeWeights &w,
+                  const grid::NodeWeights &w,
                   const unsigned int      k,
                   const double            mk,
                   double                 &fx,
@@ -228,7 +228,7 @@ namespace slidewave
        *  the point at the start of the step; the update then adds the step's own change. */
       template <typename Properties>
       void
-      gather_fields(const mpm::NodeWeights     &w,
+      gather_fields(const grid::NodeWeights     &w,
                     const grid::NodalWorkspace &nodes,
                     Properties                 &p,
                     const bool                  before_update) const

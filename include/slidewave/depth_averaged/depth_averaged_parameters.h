@@ -8,8 +8,8 @@
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/grid/grid_boundary.h>
 #include <slidewave/grid/load_balancing_parameters.h>
-#include <slidewave/mpm/material_region.h>
-#include <slidewave/mpm/shape_functions.h>
+#include <slidewave/particles/material_region.h>
+#include <slidewave/grid/shape_functions.h>
 #include <slidewave/terrain/raster_terrain.h>
 #include <string>
 
@@ -96,7 +96,7 @@ namespace slidewave
 
       /** @name Released material */
       /** The area: a rectangle, a polygon or a vector file (read by Release). */
-      mpm::MaterialRegion release;
+      particles::MaterialRegion release;
       /** Exactly one of them is set: the depth h(x, y), the surface h + Z, a raster of the
        *  depth (resolved by the scene) or the vector file's field holding each polygon's
        *  depth. */
@@ -107,7 +107,7 @@ namespace slidewave
 
       /** @name Numerics */
       DepthUpdate        depth_update   = DepthUpdate::strain;
-      mpm::ShapeFunction shape_function = mpm::ShapeFunction::q1;
+      grid::ShapeFunction shape_function = grid::ShapeFunction::q1;
       /** 0: PIC (Eq. 33), 1: FLIP (Eq. 34), between: a blend. */
       double flip_fraction = 0.;
       /** C of Eq. 22, with the wave speed |v| + sqrt(g h). */

@@ -15,9 +15,9 @@
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/nodal_workspace.h>
 #include <slidewave/grid/velocity_constraints.h>
-#include <slidewave/mpm/particle_engine.h>
-#include <slidewave/mpm/rigid_wall.h>
-#include <slidewave/mpm/transfer_kernels.h>
+#include <slidewave/engine/particle_engine.h>
+#include <slidewave/grid/rigid_wall.h>
+#include <slidewave/engine/transfer_kernels.h>
 #include <slidewave/particles/point_cloud.h>
 #include <slidewave/terrain/elevation_grid.h>
 #include <string>
@@ -39,7 +39,7 @@ namespace slidewave
      *   4. USL: depth (Eq. 38) and Bingham stress (Eqs. 36–37) from the new nodal
      *      velocities.
      *
-     * The same engine as the soil (mpm::ParticleEngine: point cloud, nodal workspace,
+     * The same engine as the soil (engine::ParticleEngine: point cloud, nodal workspace,
      * constraints, patches and the particle–grid cycle, on the scene's background grid)
      * with the model DepthAveragedModel. The terrain is sampled once onto a
      * terrain::ElevationGrid.
@@ -67,7 +67,7 @@ namespace slidewave
       load(const std::string &prefix);
 
       /** Time, lost mass (summed over ranks) and step counter. */
-      using State = mpm::ParticleEngine<DepthAveragedModel>::State;
+      using State = engine::ParticleEngine<DepthAveragedModel>::State;
 
       State
       state() const;
@@ -188,12 +188,12 @@ namespace slidewave
       Release                                 release;
       DepthAveragedModel                      flow;
       grid::BackgroundGrid                   &grid;
-      mpm::ParticleEngine<DepthAveragedModel> engine;
+      engine::ParticleEngine<DepthAveragedModel> engine;
     };
   } // namespace depth_averaged
 
-  extern template class mpm::TransferKernels<depth_averaged::DepthAveragedModel>;
-  extern template class mpm::ParticleEngine<depth_averaged::DepthAveragedModel>;
+  extern template class engine::TransferKernels<depth_averaged::DepthAveragedModel>;
+  extern template class engine::ParticleEngine<depth_averaged::DepthAveragedModel>;
 } // namespace slidewave
 
 #endif

@@ -6,7 +6,7 @@
 #include <deal.II/base/tensor.h>
 #include <memory>
 #include <slidewave/depth_averaged/depth_averaged_parameters.h>
-#include <slidewave/mpm/material_region.h>
+#include <slidewave/particles/material_region.h>
 #include <slidewave/terrain/elevation_grid.h>
 #include <string>
 #include <vector>
@@ -34,7 +34,7 @@ namespace slidewave
               const std::string             &model_crs_wkt);
 
       /** The areas; a point belongs to the first that contains it. */
-      const std::vector<mpm::MaterialRegion> &
+      const std::vector<particles::MaterialRegion> &
       regions() const
       {
         return areas;
@@ -60,7 +60,7 @@ namespace slidewave
     private:
       const DepthAveragedParameters   &prm;
       const terrain::ElevationGrid    &elevation;
-      std::vector<mpm::MaterialRegion> areas;
+      std::vector<particles::MaterialRegion> areas;
       /** 'Depth attribute': the value of each area. */
       std::vector<double> area_depth;
       /** 'Depth raster', over the areas' bounding box. */

@@ -4,7 +4,7 @@
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/grid_follower.h>
 #include <slidewave/grid/nodal_workspace.h>
-#include <slidewave/mpm/shape_functions.h>
+#include <slidewave/grid/shape_functions.h>
 #include <vector>
 
 namespace slidewave
@@ -14,7 +14,7 @@ namespace slidewave
     /**
      * For each locally owned cell, its patch: the cell itself and the active cells sharing
      * a vertex with it, as densely stored boxes with the local indices of their Q1 nodes
-     * (mpm::PatchCell). It is the reach of a GIMP point (paper 000, Eq. 11: the point's
+     * (grid::PatchCell). It is the reach of a GIMP point (paper 000, Eq. 11: the point's
      * domain stays within the patch of its cell) and where a point that moved less than
      * a cell is looked for (PointCloud::relocate_within_patches). Each owned cell's own
      * entry is also kept by active cell index (what Q1 reads for every point). A
@@ -42,7 +42,7 @@ namespace slidewave
       }
 
       /** The owned cell of active index @p cell_index itself. */
-      const mpm::PatchCell &
+      const grid::PatchCell &
       own(const unsigned int cell_index) const
       {
         return own_cell[cell_index];
@@ -55,19 +55,19 @@ namespace slidewave
         return patch_start[cell_index];
       }
 
-      const mpm::PatchCell &
+      const grid::PatchCell &
       entry(const unsigned int e) const
       {
         return patch_cells[e];
       }
 
-      const mpm::PatchCell *
+      const grid::PatchCell *
       begin(const unsigned int cell_index) const
       {
         return patch_cells.data() + patch_start[cell_index];
       }
 
-      const mpm::PatchCell *
+      const grid::PatchCell *
       end(const unsigned int cell_index) const
       {
         return patch_cells.data() + patch_start[cell_index + 1];
@@ -86,11 +86,11 @@ namespace slidewave
 
       /** Each owned cell's own entry, by active cell index (a copy of the first of its
        * patch): what Q1 and the relocation read for every point, densely stored. */
-      std::vector<mpm::PatchCell> own_cell;
+      std::vector<grid::PatchCell> own_cell;
       /** Cells of each owned cell's patch: patch_cells[patch_start[c] .. patch_start[c+1]),
        * the cell itself first. */
       std::vector<unsigned int>   patch_start;
-      std::vector<mpm::PatchCell> patch_cells;
+      std::vector<grid::PatchCell> patch_cells;
       /** The cell of each entry of patch_cells. */
       std::vector<BackgroundGrid::ActiveCellIterator> patch_cell_iterators;
     };

@@ -6,7 +6,7 @@
 #include <slidewave/grid/grid_boundary.h>
 #include <slidewave/grid/grid_follower.h>
 #include <slidewave/grid/nodal_workspace.h>
-#include <slidewave/mpm/rigid_wall.h>
+#include <slidewave/grid/rigid_wall.h>
 #include <vector>
 
 namespace slidewave
@@ -26,7 +26,7 @@ namespace slidewave
       VelocityConstraints(const BackgroundGrid              &grid,
                           const NodalWorkspace              &nodes,
                           const std::array<GridBoundary, 4> &sides,
-                          const std::vector<mpm::RigidWall> &walls);
+                          const std::vector<grid::RigidWall> &walls);
 
       /** The held nodes of the sides and walls on the current grid. */
       void
@@ -82,7 +82,7 @@ namespace slidewave
       const BackgroundGrid             &grid;
       const NodalWorkspace             &nodes;
       const std::array<GridBoundary, 4> sides;
-      const std::vector<mpm::RigidWall> walls;
+      const std::vector<grid::RigidWall> walls;
 
       /** Local indices of owned nodes where v_x (0) or v_y (1) is held at zero. */
       std::array<std::vector<unsigned int>, 2> constrained_dofs;

@@ -2,7 +2,6 @@
 #define slidewave_io_solver_checkpoints_h
 
 #include <slidewave/io/checkpoint.h>
-#include <slidewave/water/shallow_water_1d.h>
 #include <string>
 
 namespace slidewave
@@ -13,7 +12,7 @@ namespace slidewave
      * A material-point solver's state besides the points and the grid (which go to the
      * checkpoint's data files): its time, step counter and lost mass, under "<name>/"
      * (collective: the lost mass is summed over the ranks). For every solver whose
-     * state() has the members time, lost_mass and n_steps (mpm::MaterialPointSolver,
+     * state() has the members time, lost_mass and n_steps (soil::MaterialPointSolver,
      * depth_averaged::DepthAveragedSolver).
      */
     template <class Solver>
@@ -37,19 +36,6 @@ namespace slidewave
       state.n_steps   = record.get_unsigned(name + "/steps");
       solver.set_state(state);
     }
-
-    /** The water's whole state under "<name>/": depth, discharge and bed per cell and the
-     *  volume that entered through the ends. */
-    void
-    save_state(CheckpointRecord            &record,
-               const std::string           &name,
-               const water::ShallowWater1D &water);
-
-    /** What save_state() put under "<name>/", bit for bit. */
-    void
-    restore_state(const CheckpointRecord &record,
-                  const std::string      &name,
-                  water::ShallowWater1D  &water);
   } // namespace io
 } // namespace slidewave
 

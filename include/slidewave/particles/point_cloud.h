@@ -9,8 +9,8 @@
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/grid_follower.h>
 #include <slidewave/grid/velocity_constraints.h>
-#include <slidewave/mpm/material_region.h>
-#include <slidewave/mpm/step_timeline.h>
+#include <slidewave/particles/material_region.h>
+#include <slidewave/core/step_timeline.h>
 #include <slidewave/particles/property_layout.h>
 #include <string>
 #include <vector>
@@ -51,7 +51,7 @@ namespace slidewave
        * rank creates the points it keeps. @p regions must outlive create().
        */
       void
-      expect_points(const std::vector<mpm::MaterialRegion> &regions, unsigned int n);
+      expect_points(const std::vector<particles::MaterialRegion> &regions, unsigned int n);
 
       /** The particle handler on the grid (its cells must exist) and the lost-point
        *  signal. */
@@ -65,7 +65,7 @@ namespace slidewave
       void
       for_each_point_to_create(const grid::BackgroundGrid::CellIterator &cell,
                                unsigned int                              n,
-                               const std::vector<mpm::MaterialRegion>   &regions,
+                               const std::vector<particles::MaterialRegion>   &regions,
                                const Function                           &f) const;
 
       /** What create() asks of the model for each point: its properties (zeroed before)
@@ -82,7 +82,7 @@ namespace slidewave
        *  expectation of expect_points(). */
       void
       create(unsigned int                            n,
-             const std::vector<mpm::MaterialRegion> &regions,
+             const std::vector<particles::MaterialRegion> &regions,
              const PropertyFill                     &fill);
 
       /**
@@ -114,7 +114,7 @@ namespace slidewave
       bool
       relocate_within_patches(const std::vector<dealii::Point<2>> &new_positions,
                               const grid::CellPatches             &patches,
-                              mpm::StepTimeline                   *timeline);
+                              core::StepTimeline                   *timeline);
 
       /** deal.II's full sort of the points into the cells and ranks. */
       void
@@ -178,7 +178,7 @@ namespace slidewave
       const unsigned int                      particle_weight;
       ParticleHandler                         handler;
       /** Set-up, until create(): the regions and the points per direction to come. */
-      const std::vector<mpm::MaterialRegion> *expected_regions       = nullptr;
+      const std::vector<particles::MaterialRegion> *expected_regions       = nullptr;
       unsigned int                            expected_per_direction = 0;
 
       /** The points create() puts in @p cell with @p n per direction (expect_points()),
@@ -206,7 +206,7 @@ namespace slidewave
     void
     PointCloud::for_each_point_to_create(const grid::BackgroundGrid::CellIterator &cell,
                                          const unsigned int                        n,
-                                         const std::vector<mpm::MaterialRegion>   &regions,
+                                         const std::vector<particles::MaterialRegion>   &regions,
                                          const Function                           &f) const
     {
       const dealii::Point<2> origin = cell->vertex(0);

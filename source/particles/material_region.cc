@@ -2,12 +2,12 @@
 #include <deal.II/base/utilities.h>
 #include <iostream>
 #include <slidewave/core/input_error.h>
-#include <slidewave/mpm/material_region.h>
+#include <slidewave/particles/material_region.h>
 #include <sstream>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace particles
   {
     void
     MaterialRegion::declare_parameters(dealii::ParameterHandler &prm,
@@ -216,5 +216,5 @@ namespace slidewave
           }
       return {lower, upper};
     }
-  } // namespace mpm
+  } // namespace particles
 } // namespace slidewave

@@ -1,5 +1,5 @@
-#ifndef slidewave_mpm_material_region_h
-#define slidewave_mpm_material_region_h
+#ifndef slidewave_particles_material_region_h
+#define slidewave_particles_material_region_h
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
@@ -10,7 +10,7 @@
 
 namespace slidewave
 {
-  namespace mpm
+  namespace particles
   {
     /**
      * A part of the domain filled with material points of one material at the start:
@@ -69,7 +69,7 @@ namespace slidewave
        *  (empty: the first layer); empty otherwise. */
       std::string vector_file, vector_layer;
     };
-  } // namespace mpm
+  } // namespace particles
 } // namespace slidewave
 
 #endif

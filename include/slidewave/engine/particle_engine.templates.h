@@ -1,23 +1,23 @@
-#ifndef slidewave_mpm_particle_engine_templates_h
-#define slidewave_mpm_particle_engine_templates_h
+#ifndef slidewave_engine_particle_engine_templates_h
+#define slidewave_engine_particle_engine_templates_h
 
 #include <deal.II/base/mpi.h>
 #include <optional>
-#include <slidewave/mpm/particle_engine.h>
-#include <slidewave/mpm/transfer_kernels.templates.h>
+#include <slidewave/engine/particle_engine.h>
+#include <slidewave/engine/transfer_kernels.templates.h>
 
 // The definitions of ParticleEngine, included only by the sources of the particle models
 // that instantiate it (explicitly, for their model class, next to their kernels).
 
 namespace slidewave
 {
-  namespace mpm
+  namespace engine
   {
     template <class Model>
     ParticleEngine<Model>::ParticleEngine(grid::BackgroundGrid                    &grid,
                                           const Model                             &model,
                                           const std::array<grid::GridBoundary, 4> &sides,
-                                          const std::vector<RigidWall>            &walls,
+                                          const std::vector<grid::RigidWall>            &walls,
                                           const Settings                          &settings)
       : grid(grid)
       , settings(settings)
@@ -52,7 +52,7 @@ namespace slidewave
     template <class Model>
     void
     ParticleEngine<Model>::create_points(const double                               start_time,
-                                         const std::vector<MaterialRegion>         &regions,
+                                         const std::vector<particles::MaterialRegion>         &regions,
                                          const unsigned int                         n,
                                          const particles::PointCloud::PropertyFill &fill)
     {
@@ -131,7 +131,7 @@ namespace slidewave
         timeline->begin_step(n_steps + 1);
       start("grid changes");
       grid.change_if_due(n_steps);
-      lap(StepTimeline::grid_changes);
+      lap(core::StepTimeline::grid_changes);
       ++n_steps;
       constraints.update_walls(current_time, hold_walls);
       start("particles to grid");
@@ -143,13 +143,13 @@ namespace slidewave
       kernels.new_positions().resize(cloud.particles().get_property_pool().n_slots());
       start("grid to particles");
       kernels.grid_to_particles(dt, /*with_stresses=*/!settings.musl);
-      lap(StepTimeline::gather);
+      lap(core::StepTimeline::gather);
       if (settings.musl)
         {
           start("MUSL re-map and stresses");
           kernels.remap_velocities_to_grid();
           kernels.update_stresses(dt);
-          lap(StepTimeline::musl_remap);
+          lap(core::StepTimeline::musl_remap);
         }
       start("sort particles");
       relocate();
@@ -171,12 +171,12 @@ namespace slidewave
       // relocate_within_patches() sets the locations itself, also when it gives up.
       if (full_sort || !cloud.relocate_within_patches(new_positions, patches, timeline))
         {
-          lap(StepTimeline::relocation);
+          lap(core::StepTimeline::relocation);
           ++n_full_sorts;
           cloud.sort();
-          lap(StepTimeline::full_sort);
+          lap(core::StepTimeline::full_sort);
         }
-      lap(StepTimeline::relocation);
+      lap(core::StepTimeline::relocation);
     }
 
 
@@ -200,7 +200,7 @@ namespace slidewave
         totals[d + 1] = nodes.momentum[d].mean_value() * nodes.momentum[d].size();
       return totals;
     }
-  } // namespace mpm
+  } // namespace engine
 } // namespace slidewave
 
 #endif

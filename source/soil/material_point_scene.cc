@@ -16,13 +16,13 @@
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/io/solver_checkpoints.h>
-#include <slidewave/mpm/material_point_scene.h>
-#include <slidewave/mpm/particle_properties.h>
+#include <slidewave/soil/material_point_scene.h>
+#include <slidewave/soil/particle_properties.h>
 #include <sstream>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace soil
   {
     namespace
     {
@@ -450,7 +450,7 @@ namespace slidewave
       dealii::ConditionalOStream pcout(std::cout, is_writer && !scene.test_mode);
       pcout << "Particle relocation: deal.II's full sort in " << solver->n_full_particle_sorts()
             << " of " << info.step - first_step << " steps" << std::endl;
-      if (const StepTimeline *timeline = solver->step_timeline())
+      if (const core::StepTimeline *timeline = solver->step_timeline())
         {
           const auto written = timeline->write(scene.output_directory + "/step_timeline.csv");
           const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
@@ -499,5 +499,5 @@ namespace slidewave
         }
       return !(tolerance > 0.) || max_error <= tolerance;
     }
-  } // namespace mpm
+  } // namespace soil
 } // namespace slidewave

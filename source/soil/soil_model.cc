@@ -3,13 +3,13 @@
 #include <deal.II/base/mpi.h>
 #include <limits>
 #include <slidewave/core/rank_reports.h>
-#include <slidewave/mpm/particle_engine.templates.h>
-#include <slidewave/mpm/soil_model.h>
+#include <slidewave/engine/particle_engine.templates.h>
+#include <slidewave/soil/soil_model.h>
 #include <sstream>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace soil
   {
     SoilModel::SoilModel(const MaterialPointParameters &parameters)
       : prm(parameters)
@@ -53,7 +53,7 @@ namespace slidewave
           mean_volumetric = volumetric_sum / volume_sum;
         }
 
-      const bool   follow_stretch = prm.shape_function == ShapeFunction::cpgimp;
+      const bool   follow_stretch = prm.shape_function == grid::ShapeFunction::cpgimp;
       const double max_half       = 0.5 * prm.cell_size;
       unsigned int k              = 0;
       for (auto &particle : particles_in_cell)
@@ -87,7 +87,7 @@ namespace slidewave
           p[property::equivalent_plastic_strain] = plastic;
           p[property::volume] *= 1. + strain_increment[0][0] + strain_increment[1][1];
           if (follow_stretch)
-            mpm::stretch_domain(
+            grid::stretch_domain(
               p[property::domain_half_x], p[property::domain_half_y], L, dt, max_half);
         }
     }
@@ -113,7 +113,7 @@ namespace slidewave
                               const double            hy) const
     {
       const unsigned int    n              = prm.particles_per_direction;
-      const MaterialRegion &region         = prm.regions[region_index];
+      const particles::MaterialRegion &region         = prm.regions[region_index];
       const unsigned int    m              = region.material_index;
       const double          volume         = hx * hy / (n * n);
       properties[property::mass]           = prm.materials[m].density * volume;
@@ -382,11 +382,11 @@ namespace slidewave
       result.n_particles    = cloud.particles().n_global_particles();
       return result;
     }
-  } // namespace mpm
+  } // namespace soil
 
 
 
   // The particle–grid cycle for the soil, with its terms inlined.
-  template class mpm::TransferKernels<mpm::SoilModel>;
-  template class mpm::ParticleEngine<mpm::SoilModel>;
+  template class engine::TransferKernels<soil::SoilModel>;
+  template class engine::ParticleEngine<soil::SoilModel>;
 } // namespace slidewave

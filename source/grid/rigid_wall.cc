@@ -2,11 +2,11 @@
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <slidewave/core/input_error.h>
-#include <slidewave/mpm/rigid_wall.h>
+#include <slidewave/grid/rigid_wall.h>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace grid
   {
     namespace
     {
@@ -91,5 +91,5 @@ namespace slidewave
              && x[t] >= std::min(start[t], end[t]) - tolerance
              && x[t] <= std::max(start[t], end[t]) + tolerance;
     }
-  } // namespace mpm
+  } // namespace grid
 } // namespace slidewave

@@ -1,5 +1,5 @@
-#ifndef slidewave_mpm_step_timeline_h
-#define slidewave_mpm_step_timeline_h
+#ifndef slidewave_core_step_timeline_h
+#define slidewave_core_step_timeline_h
 
 #include <array>
 #include <cstddef>
@@ -8,7 +8,7 @@
 
 namespace slidewave
 {
-  namespace mpm
+  namespace core
   {
     /**
      * Per step and per rank, the wall time of each part of a material-point step, with the
@@ -80,7 +80,7 @@ namespace slidewave
       std::vector<Row> rows;
       double           last = 0.;
     };
-  } // namespace mpm
+  } // namespace core
 } // namespace slidewave
 
 #endif

@@ -4,12 +4,12 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/grid/grid_extent.h>
 #include <slidewave/grid/load_balancing_parameters.h>
-#include <slidewave/mpm/material_point_parameters.h>
+#include <slidewave/soil/material_point_parameters.h>
 #include <sstream>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace soil
   {
     namespace
     {
@@ -399,10 +399,10 @@ namespace slidewave
                     MaterialPointParameters  &parameters)
       {
         parameters.regions.clear();
-        for (unsigned int r = 1; r <= MaterialRegion::max_regions; ++r)
+        for (unsigned int r = 1; r <= particles::MaterialRegion::max_regions; ++r)
           {
             prm.enter_subsection("Region " + std::to_string(r));
-            MaterialRegion    region;
+            particles::MaterialRegion    region;
             const std::string region_path = path + "/Region " + std::to_string(r);
             if (region.parse_parameters(prm, region_path))
               {
@@ -436,7 +436,7 @@ namespace slidewave
         parameters.materials.clear();
         for (unsigned int r = 0; r < parameters.regions.size(); ++r)
           {
-            MaterialRegion           &region      = parameters.regions[r];
+            particles::MaterialRegion           &region      = parameters.regions[r];
             const std::string         region_path = path + "/Region " + std::to_string(r + 1);
             std::vector<unsigned int> slots;
             for (unsigned int m = 1; m <= MaterialPointParameters::max_materials; ++m)
@@ -484,10 +484,10 @@ namespace slidewave
       declare_relocation_and_timing_parameters(prm);
       declare_damping_and_point_parameters(prm);
       declare_grid_parameters(prm);
-      for (unsigned int w = 1; w <= RigidWall::max_walls; ++w)
+      for (unsigned int w = 1; w <= grid::RigidWall::max_walls; ++w)
         {
           prm.enter_subsection("Rigid wall " + std::to_string(w));
-          RigidWall::declare_parameters(prm);
+          grid::RigidWall::declare_parameters(prm);
           prm.leave_subsection();
         }
       declare_initial_stress_parameters(prm);
@@ -497,10 +497,10 @@ namespace slidewave
           materials::MaterialParameters::declare_parameters(prm);
           prm.leave_subsection();
         }
-      for (unsigned int r = 1; r <= MaterialRegion::max_regions; ++r)
+      for (unsigned int r = 1; r <= particles::MaterialRegion::max_regions; ++r)
         {
           prm.enter_subsection("Region " + std::to_string(r));
-          MaterialRegion::declare_parameters(prm);
+          particles::MaterialRegion::declare_parameters(prm);
           prm.leave_subsection();
         }
     }
@@ -512,9 +512,9 @@ namespace slidewave
                                               const std::string        &path)
     {
       const std::string shape = prm.get("Shape functions");
-      shape_function          = shape == "gimp"   ? ShapeFunction::gimp :
-                                shape == "cpgimp" ? ShapeFunction::cpgimp :
-                                                    ShapeFunction::q1;
+      shape_function          = shape == "gimp"   ? grid::ShapeFunction::gimp :
+                                shape == "cpgimp" ? grid::ShapeFunction::cpgimp :
+                                                    grid::ShapeFunction::q1;
       update_scheme = prm.get("Update scheme") == "musl" ? UpdateScheme::musl : UpdateScheme::usl;
       flip_fraction = prm.get_double("FLIP fraction");
       time_step_multiplier = prm.get_double("Time step multiplier");
@@ -538,10 +538,10 @@ namespace slidewave
       parse_grid_parameters(prm, path, *this);
 
       walls.clear();
-      for (unsigned int w = 1; w <= RigidWall::max_walls; ++w)
+      for (unsigned int w = 1; w <= grid::RigidWall::max_walls; ++w)
         {
           prm.enter_subsection("Rigid wall " + std::to_string(w));
-          RigidWall wall;
+          grid::RigidWall wall;
           if (wall.parse_parameters(prm, path + "/Rigid wall " + std::to_string(w)))
             walls.push_back(wall);
           prm.leave_subsection();
@@ -561,5 +561,5 @@ namespace slidewave
                          "at least one region filled with material ('rectangle' or "
                          "'polygon')");
     }
-  } // namespace mpm
+  } // namespace soil
 } // namespace slidewave

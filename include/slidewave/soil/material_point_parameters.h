@@ -1,5 +1,5 @@
-#ifndef slidewave_mpm_material_point_parameters_h
-#define slidewave_mpm_material_point_parameters_h
+#ifndef slidewave_soil_material_point_parameters_h
+#define slidewave_soil_material_point_parameters_h
 
 #include <array>
 #include <deal.II/base/function_parser.h>
@@ -9,15 +9,15 @@
 #include <memory>
 #include <slidewave/grid/grid_boundary.h>
 #include <slidewave/materials/material.h>
-#include <slidewave/mpm/material_region.h>
-#include <slidewave/mpm/rigid_wall.h>
-#include <slidewave/mpm/shape_functions.h>
+#include <slidewave/particles/material_region.h>
+#include <slidewave/grid/rigid_wall.h>
+#include <slidewave/grid/shape_functions.h>
 #include <string>
 #include <vector>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace soil
   {
     enum class UpdateScheme
     {
@@ -67,7 +67,7 @@ namespace slidewave
       dealii::Point<2> lower_left, upper_right;
       double           cell_size               = 0.01;
       unsigned int     particles_per_direction = 2;
-      ShapeFunction    shape_function          = ShapeFunction::q1;
+      grid::ShapeFunction    shape_function          = grid::ShapeFunction::q1;
       UpdateScheme     update_scheme           = UpdateScheme::usl;
       double           flip_fraction           = 0.99;
       double           time_step_multiplier    = 0.5;
@@ -83,7 +83,7 @@ namespace slidewave
       std::array<GridBoundary, 4> boundaries{
         {GridBoundary::roller, GridBoundary::roller, GridBoundary::fixed, GridBoundary::free}};
 
-      std::vector<RigidWall> walls;
+      std::vector<grid::RigidWall> walls;
 
       /** Subsection "Adaptive grid". */
       struct Adaptivity
@@ -114,7 +114,7 @@ namespace slidewave
       std::shared_ptr<dealii::FunctionParser<2>> prescribed_velocity;
 
       std::vector<materials::MaterialParameters> materials;
-      std::vector<MaterialRegion>                regions;
+      std::vector<particles::MaterialRegion>                regions;
 
       /**
        * Whether the material points carry point forces (property::point_force_x/y): set
@@ -122,7 +122,7 @@ namespace slidewave
        */
       bool point_forces = false;
     };
-  } // namespace mpm
+  } // namespace soil
 } // namespace slidewave
 
 #endif

@@ -1,5 +1,5 @@
-#ifndef slidewave_mpm_material_point_scene_h
-#define slidewave_mpm_material_point_scene_h
+#ifndef slidewave_soil_material_point_scene_h
+#define slidewave_soil_material_point_scene_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
@@ -8,14 +8,14 @@
 #include <slidewave/core/statistics.h>
 #include <slidewave/core/time_stepped_scene.h>
 #include <slidewave/io/particle_output.h>
-#include <slidewave/mpm/material_point_solver.h>
+#include <slidewave/soil/material_point_solver.h>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace soil
   {
     /**
      * A scene of soil or rock only (Physics = material points): builds the grid and the
@@ -146,7 +146,7 @@ namespace slidewave
       /** The step this process started from (0, or the checkpoint's). */
       unsigned int first_step = 0;
     };
-  } // namespace mpm
+  } // namespace soil
 } // namespace slidewave
 
 #endif

@@ -1,12 +1,12 @@
-#ifndef slidewave_mpm_shape_functions_h
-#define slidewave_mpm_shape_functions_h
+#ifndef slidewave_grid_shape_functions_h
+#define slidewave_grid_shape_functions_h
 
 #include <algorithm>
 #include <deal.II/base/tensor.h>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace grid
   {
     /** How a material point is connected to the nodes of the background grid. */
     enum class ShapeFunction
@@ -182,7 +182,7 @@ namespace slidewave
       half_x = std::min(max_half, half_x * (1. + L[0][0] * dt));
       half_y = std::min(max_half, half_y * (1. + L[1][1] * dt));
     }
-  } // namespace mpm
+  } // namespace grid
 } // namespace slidewave
 
 #endif

@@ -3,12 +3,12 @@
 #include <fstream>
 #include <iomanip>
 #include <mpi.h>
-#include <slidewave/mpm/step_timeline.h>
+#include <slidewave/core/step_timeline.h>
 #include <stdexcept>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace core
   {
     const std::array<const char *, StepTimeline::n_parts> &
     StepTimeline::part_names()
@@ -91,5 +91,5 @@ namespace slidewave
         throw std::runtime_error("cannot write the step timeline to " + filename);
       return written;
     }
-  } // namespace mpm
+  } // namespace core
 } // namespace slidewave

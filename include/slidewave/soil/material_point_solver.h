@@ -1,5 +1,5 @@
-#ifndef slidewave_mpm_material_point_solver_h
-#define slidewave_mpm_material_point_solver_h
+#ifndef slidewave_soil_material_point_solver_h
+#define slidewave_soil_material_point_solver_h
 
 #include <array>
 #include <deal.II/base/function_parser.h>
@@ -18,11 +18,11 @@
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/nodal_workspace.h>
 #include <slidewave/grid/velocity_constraints.h>
-#include <slidewave/mpm/material_point_parameters.h>
-#include <slidewave/mpm/particle_engine.h>
-#include <slidewave/mpm/soil_model.h>
-#include <slidewave/mpm/step_timeline.h>
-#include <slidewave/mpm/transfer_kernels.h>
+#include <slidewave/soil/material_point_parameters.h>
+#include <slidewave/engine/particle_engine.h>
+#include <slidewave/soil/soil_model.h>
+#include <slidewave/core/step_timeline.h>
+#include <slidewave/engine/transfer_kernels.h>
 #include <slidewave/particles/point_cloud.h>
 #include <slidewave/particles/property_layout.h>
 #include <string>
@@ -30,7 +30,7 @@
 
 namespace slidewave
 {
-  namespace mpm
+  namespace soil
   {
     /**
      * The explicit material point method of paper 000 (§3.1, Eqs. 13–23) in 2D plane
@@ -124,7 +124,7 @@ namespace slidewave
       load(const std::string &prefix);
 
       /** What else determines the future of a run: time, lost mass, step counter. */
-      using State = ParticleEngine<SoilModel>::State;
+      using State = engine::ParticleEngine<SoilModel>::State;
 
       State
       state() const;
@@ -232,7 +232,7 @@ namespace slidewave
 
       /** The per-step, per-rank times of the parts of the step ('Step timeline'), or null
        * when it is off. */
-      const StepTimeline *
+      const core::StepTimeline *
       step_timeline() const
       {
         return timeline.get();
@@ -281,18 +281,18 @@ namespace slidewave
       MaterialPointParameters   prm;
       SoilModel                 model;
       grid::BackgroundGrid     &grid;
-      ParticleEngine<SoilModel> engine;
+      engine::ParticleEngine<SoilModel> engine;
 
       /** Per-step times of the parts ('Step timeline'): only allocated when on. */
-      std::unique_ptr<StepTimeline> timeline;
+      std::unique_ptr<core::StepTimeline> timeline;
 
       /** Gravity loading: every wall holds. */
       bool loading_gravity = false;
     };
+  } // namespace soil
 
-    extern template class TransferKernels<SoilModel>;
-    extern template class ParticleEngine<SoilModel>;
-  } // namespace mpm
+  extern template class engine::TransferKernels<soil::SoilModel>;
+  extern template class engine::ParticleEngine<soil::SoilModel>;
 } // namespace slidewave
 
 #endif

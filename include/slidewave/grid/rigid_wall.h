@@ -1,5 +1,5 @@
-#ifndef slidewave_mpm_rigid_wall_h
-#define slidewave_mpm_rigid_wall_h
+#ifndef slidewave_grid_rigid_wall_h
+#define slidewave_grid_rigid_wall_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -8,7 +8,7 @@
 
 namespace slidewave
 {
-  namespace mpm
+  namespace grid
   {
     /**
      * A rigid wall inside (or on the edge of) the background grid: a horizontal or
@@ -52,7 +52,7 @@ namespace slidewave
       /** The wall holds while t < release_time. */
       double release_time = std::numeric_limits<double>::infinity();
     };
-  } // namespace mpm
+  } // namespace grid
 } // namespace slidewave
 
 #endif

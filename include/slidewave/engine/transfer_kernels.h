@@ -1,5 +1,5 @@
-#ifndef slidewave_mpm_transfer_kernels_h
-#define slidewave_mpm_transfer_kernels_h
+#ifndef slidewave_engine_transfer_kernels_h
+#define slidewave_engine_transfer_kernels_h
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
@@ -7,14 +7,14 @@
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/nodal_workspace.h>
 #include <slidewave/grid/velocity_constraints.h>
-#include <slidewave/mpm/shape_functions.h>
-#include <slidewave/mpm/step_timeline.h>
+#include <slidewave/grid/shape_functions.h>
+#include <slidewave/core/step_timeline.h>
 #include <slidewave/particles/point_cloud.h>
 #include <vector>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace engine
   {
     /**
      * The particle–grid cycle of the explicit material point method (paper 000, §3.1,
@@ -28,7 +28,7 @@ namespace slidewave
      * A template on the particle model, instantiated in the model's own source, so that
      * the model's per-point terms are inlined into the loops: nothing is virtual, nothing
      * is allocated per point, and the kernels hold no model's name or flag. What a model
-     * declares (mpm::ParticleModelDefaults gives every optional part a default that
+     * declares (engine::ParticleModelDefaults gives every optional part a default that
      * compiles to nothing; doc/architecture.md walks through it):
      *
      * - the property indices `mass`, `volume`, `velocity_x`, `velocity_y`,
@@ -61,7 +61,7 @@ namespace slidewave
       /** Settings of the cycle that are not the model's. */
       struct Settings
       {
-        ShapeFunction shape_function = ShapeFunction::q1;
+        grid::ShapeFunction shape_function = grid::ShapeFunction::q1;
         double        flip_fraction  = 0.99;
         /** Nodes with less mass are empty: their velocity is zero. */
         double empty_node_mass = 0.;
@@ -78,7 +78,7 @@ namespace slidewave
 
       /** Where the parts of the step are timed (null: nowhere). */
       void
-      set_timeline(StepTimeline *step_timeline)
+      set_timeline(core::StepTimeline *step_timeline)
       {
         timeline = step_timeline;
       }
@@ -121,14 +121,14 @@ namespace slidewave
       void
       shape_weights(const ParticleAccessorType &particle,
                     unsigned int                cell_index,
-                    NodeWeights                &w) const;
+                    grid::NodeWeights                &w) const;
 
       /** Kinematic mode: the nodal velocities at @p time and @p time + @p dt. */
       void
       prescribe_nodal_velocities(double dt, double time);
 
       void
-      lap(const StepTimeline::Part part)
+      lap(const core::StepTimeline::Part part)
       {
         if (timeline)
           timeline->lap(part);
@@ -140,7 +140,7 @@ namespace slidewave
       const grid::CellPatches         &patches;
       const grid::VelocityConstraints &constraints;
       const Settings                   settings;
-      StepTimeline                    *timeline = nullptr;
+      core::StepTimeline                    *timeline = nullptr;
 
       /** Side arrays reused every step (no allocation per particle). */
       std::vector<dealii::Point<2>>     positions;
@@ -156,7 +156,7 @@ namespace slidewave
         cell_gradients[k] = L;
       }
     };
-  } // namespace mpm
+  } // namespace engine
 } // namespace slidewave
 
 #endif

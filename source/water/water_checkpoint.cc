@@ -1,13 +1,11 @@
-#include <slidewave/io/solver_checkpoints.h>
+#include <slidewave/water/water_checkpoint.h>
 
 namespace slidewave
 {
-  namespace io
+  namespace water
   {
     void
-    save_state(CheckpointRecord            &record,
-               const std::string           &name,
-               const water::ShallowWater1D &water)
+    save_state(io::CheckpointRecord &record, const std::string &name, const ShallowWater1D &water)
     {
       record.put(name + "/depth", water.depth());
       record.put(name + "/discharge", water.discharge());
@@ -18,14 +16,14 @@ namespace slidewave
 
 
     void
-    restore_state(const CheckpointRecord &record,
-                  const std::string      &name,
-                  water::ShallowWater1D  &water)
+    restore_state(const io::CheckpointRecord &record,
+                  const std::string          &name,
+                  ShallowWater1D             &water)
     {
       water.restore(record.get_vector(name + "/depth"),
                     record.get_vector(name + "/discharge"),
                     record.get_vector(name + "/bed"),
                     record.get(name + "/boundary_inflow"));
     }
-  } // namespace io
+  } // namespace water
 } // namespace slidewave

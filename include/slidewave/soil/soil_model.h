@@ -1,15 +1,15 @@
-#ifndef slidewave_mpm_soil_model_h
-#define slidewave_mpm_soil_model_h
+#ifndef slidewave_soil_soil_model_h
+#define slidewave_soil_soil_model_h
 
 #include <cmath>
 #include <deal.II/base/tensor.h>
 #include <deal.II/particles/particle_handler.h>
 #include <functional>
 #include <slidewave/materials/material.h>
-#include <slidewave/mpm/material_point_parameters.h>
-#include <slidewave/mpm/particle_model_defaults.h>
-#include <slidewave/mpm/particle_properties.h>
-#include <slidewave/mpm/shape_functions.h>
+#include <slidewave/soil/material_point_parameters.h>
+#include <slidewave/engine/particle_model_defaults.h>
+#include <slidewave/soil/particle_properties.h>
+#include <slidewave/grid/shape_functions.h>
 #include <slidewave/particles/point_cloud.h>
 #include <slidewave/particles/property_layout.h>
 #include <string>
@@ -17,7 +17,7 @@
 
 namespace slidewave
 {
-  namespace mpm
+  namespace soil
   {
     /**
      * The soil of paper 000 as a particle model of the material point method in 2D plane
@@ -32,7 +32,7 @@ namespace slidewave
      * point). The transfer kernels (TransferKernels<SoilModel>) are instantiated in its
      * source.
      */
-    class SoilModel : public ParticleModelDefaults
+    class SoilModel : public engine::ParticleModelDefaults
     {
     public:
       /** The properties the transfer kernels read (TransferKernels). */
@@ -102,7 +102,7 @@ namespace slidewave
        *  -V sigma grad S (Eq. 16) plus gravity and the point force (Eq. 15). */
       void
       nodal_force(const ScatterTerms &t,
-                  const NodeWeights  &w,
+                  const grid::NodeWeights  &w,
                   const unsigned int  k,
                   const double        mk,
                   double             &fx,
@@ -213,7 +213,7 @@ namespace slidewave
       /** Cundall's local damping in force now. */
       double damping;
     };
-  } // namespace mpm
+  } // namespace soil
 } // namespace slidewave
 
 #endif

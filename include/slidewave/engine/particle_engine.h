@@ -1,5 +1,5 @@
-#ifndef slidewave_mpm_particle_engine_h
-#define slidewave_mpm_particle_engine_h
+#ifndef slidewave_engine_particle_engine_h
+#define slidewave_engine_particle_engine_h
 
 #include <array>
 #include <deal.II/base/function_parser.h>
@@ -9,18 +9,18 @@
 #include <slidewave/grid/grid_boundary.h>
 #include <slidewave/grid/nodal_workspace.h>
 #include <slidewave/grid/velocity_constraints.h>
-#include <slidewave/mpm/material_region.h>
-#include <slidewave/mpm/rigid_wall.h>
-#include <slidewave/mpm/shape_functions.h>
-#include <slidewave/mpm/step_timeline.h>
-#include <slidewave/mpm/transfer_kernels.h>
+#include <slidewave/particles/material_region.h>
+#include <slidewave/grid/rigid_wall.h>
+#include <slidewave/grid/shape_functions.h>
+#include <slidewave/core/step_timeline.h>
+#include <slidewave/engine/transfer_kernels.h>
 #include <slidewave/particles/point_cloud.h>
 #include <string>
 #include <vector>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace engine
   {
     /**
      * The one composition of the explicit material point method that every particle
@@ -47,7 +47,7 @@ namespace slidewave
       /** The engine's settings that are not the model's. */
       struct Settings
       {
-        ShapeFunction shape_function = ShapeFunction::q1;
+        grid::ShapeFunction shape_function = grid::ShapeFunction::q1;
         double        flip_fraction  = 0.99;
         /** Modified update stress last: re-map the velocities before the update. */
         bool musl = false;
@@ -77,7 +77,7 @@ namespace slidewave
       ParticleEngine(grid::BackgroundGrid                    &grid,
                      const Model                             &model,
                      const std::array<grid::GridBoundary, 4> &sides,
-                     const std::vector<RigidWall>            &walls,
+                     const std::vector<grid::RigidWall>            &walls,
                      const Settings                          &settings);
 
       /**
@@ -87,7 +87,7 @@ namespace slidewave
        */
       void
       create_points(double                                     start_time,
-                    const std::vector<MaterialRegion>         &regions,
+                    const std::vector<particles::MaterialRegion>         &regions,
                     unsigned int                               n,
                     const particles::PointCloud::PropertyFill &fill);
 
@@ -129,7 +129,7 @@ namespace slidewave
 
       /** Per-step, per-rank times of the parts of the step (null: none). */
       void
-      set_timeline(StepTimeline *step_timeline)
+      set_timeline(core::StepTimeline *step_timeline)
       {
         timeline = step_timeline;
         kernels.set_timeline(step_timeline);
@@ -181,7 +181,7 @@ namespace slidewave
     private:
       /** The end of a part of the step for the step timeline, when it is on. */
       void
-      lap(const StepTimeline::Part part)
+      lap(const core::StepTimeline::Part part)
       {
         if (timeline)
           timeline->lap(part);
@@ -202,9 +202,9 @@ namespace slidewave
       double               current_time = 0.;
       unsigned int         n_steps = 0, n_full_sorts = 0;
       dealii::TimerOutput *timer    = nullptr;
-      StepTimeline        *timeline = nullptr;
+      core::StepTimeline        *timeline = nullptr;
     };
-  } // namespace mpm
+  } // namespace engine
 } // namespace slidewave
 
 #endif

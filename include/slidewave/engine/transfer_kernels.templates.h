@@ -1,10 +1,10 @@
-#ifndef slidewave_mpm_transfer_kernels_templates_h
-#define slidewave_mpm_transfer_kernels_templates_h
+#ifndef slidewave_engine_transfer_kernels_templates_h
+#define slidewave_engine_transfer_kernels_templates_h
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <slidewave/mpm/transfer_kernels.h>
+#include <slidewave/engine/transfer_kernels.h>
 #include <utility>
 
 // The definitions of TransferKernels, included only by the sources of the particle models
@@ -12,7 +12,7 @@
 
 namespace slidewave
 {
-  namespace mpm
+  namespace engine
   {
     template <class Model>
     TransferKernels<Model>::TransferKernels(const Model                     &model,
@@ -37,18 +37,18 @@ namespace slidewave
     inline void
     TransferKernels<Model>::shape_weights(const ParticleAccessorType &particle,
                                           const unsigned int          cell_index,
-                                          NodeWeights                &w) const
+                                          grid::NodeWeights                &w) const
     {
-      if (settings.shape_function == ShapeFunction::q1)
+      if (settings.shape_function == grid::ShapeFunction::q1)
         {
           const dealii::Point<2> ref = particle.get_reference_location();
-          q1_weights(patches.own(cell_index), ref[0], ref[1], w);
+          grid::q1_weights(patches.own(cell_index), ref[0], ref[1], w);
         }
       else
         {
           const dealii::Point<2> x = particle.get_location();
           const auto             p = particle.get_properties();
-          gimp_weights(patches.begin(cell_index),
+          grid::gimp_weights(patches.begin(cell_index),
                        patches.end(cell_index),
                        x[0],
                        x[1],
@@ -65,9 +65,9 @@ namespace slidewave
     TransferKernels<Model>::particles_to_grid()
     {
       nodes.clear_active_nodes();
-      NodeWeights w;
+      grid::NodeWeights w;
       // Q1 talks to the nodes of the point's cell, GIMP to those of the cell's patch.
-      const bool whole_patch = settings.shape_function != ShapeFunction::q1;
+      const bool whole_patch = settings.shape_function != grid::ShapeFunction::q1;
       // The workspace's sums as a plain pointer, taken once: the point loop then indexes
       // it directly instead of going through the workspace on every node. The stride is
       // known at compile time: mass, momentum, force and the model's nodal fields.
@@ -127,7 +127,7 @@ namespace slidewave
         }
       for (auto &field : nodes.fields)
         nodes.condense_hanging_nodes(field);
-      lap(StepTimeline::scatter);
+      lap(core::StepTimeline::scatter);
       nodes.nodal_mass.compress(dealii::VectorOperation::add);
       for (unsigned int d = 0; d < 2; ++d)
         {
@@ -139,7 +139,7 @@ namespace slidewave
       // What the model does with its summed fields (a depth from a volume, ghost values
       // for its gather).
       model.finish_nodal_fields(nodes);
-      lap(StepTimeline::exchange_sums);
+      lap(core::StepTimeline::exchange_sums);
     }
 
 
@@ -187,13 +187,13 @@ namespace slidewave
         }
       constraints.apply(velocity[0], velocity[1]);
       constraints.apply(velocity_old[0], velocity_old[1]);
-      lap(StepTimeline::grid_update);
+      lap(core::StepTimeline::grid_update);
       for (unsigned int d = 0; d < 2; ++d)
         {
           velocity[d].update_ghost_values();
           velocity_old[d].update_ghost_values();
         }
-      lap(StepTimeline::exchange_velocities);
+      lap(core::StepTimeline::exchange_velocities);
       for (unsigned int d = 0; d < 2; ++d)
         {
           nodes.interpolate_hanging_nodes(velocity[d]);
@@ -208,7 +208,7 @@ namespace slidewave
           v[2]      = v[0] - velocity_old[0].local_element(i);
           v[3]      = v[1] - velocity_old[1].local_element(i);
         }
-      lap(StepTimeline::grid_update);
+      lap(core::StepTimeline::grid_update);
     }
 
 
@@ -249,7 +249,7 @@ namespace slidewave
       for (const unsigned int i : nodes.active())
         for (unsigned int d = 0; d < 2; ++d)
           momentum[d].local_element(i) = 0.;
-      NodeWeights w;
+      grid::NodeWeights w;
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
         const unsigned int cell_index = cell->active_cell_index();
         for (const auto &particle : particles_in_cell)
@@ -295,7 +295,7 @@ namespace slidewave
       // kept aside until the stresses have been updated on the old positions. With USL
       // the velocity gradients come from the same nodal velocities, so the stresses are
       // updated in the same pass.
-      NodeWeights  w;
+      grid::NodeWeights  w;
       const double flip = settings.flip_fraction;
       // The workspace's velocities as a plain pointer, taken once (see particles_to_grid).
       const double *const all_velocities = nodes.velocities(0);
@@ -342,7 +342,7 @@ namespace slidewave
     void
     TransferKernels<Model>::update_stresses(const double dt)
     {
-      NodeWeights w;
+      grid::NodeWeights w;
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
         const unsigned int cell_index = cell->active_cell_index();
         unsigned int       k          = 0;
@@ -382,7 +382,7 @@ namespace slidewave
         }
       return max_speed;
     }
-  } // namespace mpm
+  } // namespace engine
 } // namespace slidewave
 
 #endif

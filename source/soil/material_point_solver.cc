@@ -5,18 +5,18 @@
 #include <deal.II/base/utilities.h>
 #include <limits>
 #include <optional>
-#include <slidewave/mpm/material_point_solver.h>
+#include <slidewave/soil/material_point_solver.h>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace soil
   {
     namespace
     {
-      ParticleEngine<SoilModel>::Settings
+      engine::ParticleEngine<SoilModel>::Settings
       engine_settings(const MaterialPointParameters &prm)
       {
-        ParticleEngine<SoilModel>::Settings settings;
+        engine::ParticleEngine<SoilModel>::Settings settings;
         settings.shape_function       = prm.shape_function;
         settings.flip_fraction        = prm.flip_fraction;
         settings.musl                 = prm.update_scheme != UpdateScheme::usl;
@@ -56,7 +56,7 @@ namespace slidewave
       , engine(grid, model, prm.boundaries, prm.walls, engine_settings(prm))
     {
       if (prm.step_timeline)
-        timeline = std::make_unique<StepTimeline>();
+        timeline = std::make_unique<core::StepTimeline>();
       engine.set_timeline(timeline.get());
     }
 
@@ -255,5 +255,5 @@ namespace slidewave
     {
       return model.integrals(engine.point_cloud());
     }
-  } // namespace mpm
+  } // namespace soil
 } // namespace slidewave

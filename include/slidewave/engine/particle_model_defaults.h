@@ -1,12 +1,12 @@
-#ifndef slidewave_mpm_particle_model_defaults_h
-#define slidewave_mpm_particle_model_defaults_h
+#ifndef slidewave_engine_particle_model_defaults_h
+#define slidewave_engine_particle_model_defaults_h
 
 #include <slidewave/grid/nodal_workspace.h>
-#include <slidewave/mpm/shape_functions.h>
+#include <slidewave/grid/shape_functions.h>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace engine
   {
     /**
      * The optional parts of a particle model of the engine (TransferKernels<Model>), each
@@ -76,14 +76,14 @@ namespace slidewave
        *  @p p; @p before_update: the model's update follows in the same pass (USL). */
       template <typename Properties>
       void
-      gather_fields(const NodeWeights & /*w*/,
+      gather_fields(const grid::NodeWeights & /*w*/,
                     const grid::NodalWorkspace & /*nodes*/,
                     Properties & /*p*/,
                     bool /*before_update*/) const
       {
       }
     };
-  } // namespace mpm
+  } // namespace engine
 } // namespace slidewave
 
 #endif

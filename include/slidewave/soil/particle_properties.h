@@ -1,12 +1,12 @@
-#ifndef slidewave_mpm_particle_properties_h
-#define slidewave_mpm_particle_properties_h
+#ifndef slidewave_soil_particle_properties_h
+#define slidewave_soil_particle_properties_h
 
 #include <array>
 #include <string>
 
 namespace slidewave
 {
-  namespace mpm
+  namespace soil
   {
     /**
      * The state a material point carries, as indices into its property array. A property
@@ -68,7 +68,7 @@ namespace slidewave
          "domain_half_y"}};
       return names;
     }
-  } // namespace mpm
+  } // namespace soil
 } // namespace slidewave
 
 #endif

@@ -2,7 +2,7 @@
 #include <deal.II/base/mpi.h>
 #include <exception>
 #include <iostream>
-#include <slidewave/core/application.h>
+#include <slidewave/app/application.h>
 
 int
 main(int argc, char *argv[])

@@ -7,7 +7,7 @@
 #include <deal.II/base/mpi.h>
 #include <filesystem>
 #include <iostream>
-#include <slidewave/core/application.h>
+#include <slidewave/app/application.h>
 #include <sstream>
 
 int

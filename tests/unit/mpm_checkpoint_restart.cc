@@ -16,7 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <slidewave/core/application.h>
+#include <slidewave/app/application.h>
 #include <sstream>
 #include <string>
 #include <vector>

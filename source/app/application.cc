@@ -4,7 +4,7 @@
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fstream>
-#include <slidewave/core/application.h>
+#include <slidewave/app/application.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parameter_documentation.h>
 #include <slidewave/core/scene_parameters.h>

@@ -1,5 +1,5 @@
-#ifndef slidewave_core_application_h
-#define slidewave_core_application_h
+#ifndef slidewave_app_application_h
+#define slidewave_app_application_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <ostream>

@@ -228,8 +228,8 @@ namespace slidewave
         prm.enter_subsection("Release");
         {
           particles::MaterialRegion::declare_parameters(prm,
-                                                  /*with_material=*/false,
-                                                  /*with_vector_file=*/true);
+                                                        /*with_material=*/false,
+                                                        /*with_vector_file=*/true);
           prm.declare_entry("Depth",
                             "",
                             Anything(),

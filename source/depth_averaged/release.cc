@@ -17,11 +17,11 @@ namespace slidewave
       /** Refuses @p area unless it lies inside the grid: an InputError naming @p parameter
        *  = @p value, what is allowed and @p which ("it", "polygon 2"). */
       void
-      check_inside_grid(const particles::MaterialRegion     &area,
-                        const DepthAveragedParameters &prm,
-                        const std::string             &parameter,
-                        const std::string             &value,
-                        const std::string             &which);
+      check_inside_grid(const particles::MaterialRegion &area,
+                        const DepthAveragedParameters   &prm,
+                        const std::string               &parameter,
+                        const std::string               &value,
+                        const std::string               &which);
 
       /** "[x0, x1] x [y0, y1]" */
       std::string
@@ -37,11 +37,11 @@ namespace slidewave
 
 
       void
-      check_inside_grid(const particles::MaterialRegion     &area,
-                        const DepthAveragedParameters &prm,
-                        const std::string             &parameter,
-                        const std::string             &value,
-                        const std::string             &which)
+      check_inside_grid(const particles::MaterialRegion &area,
+                        const DepthAveragedParameters   &prm,
+                        const std::string               &parameter,
+                        const std::string               &value,
+                        const std::string               &which)
       {
         const auto [lower, upper] = area.bounding_box();
         for (unsigned int d = 0; d < 2; ++d)

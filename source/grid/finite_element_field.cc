@@ -58,6 +58,34 @@ namespace slidewave
 
 
 
+    void
+    FiniteElementField::copy_to_grid_nodes(
+      dealii::LinearAlgebra::distributed::Vector<double> &nodal) const
+    {
+      const dealii::DoFHandler<2>                 &grid_dofs = grid.dof_handler();
+      std::vector<dealii::types::global_dof_index> field_indices(fe.n_dofs_per_cell());
+      std::vector<dealii::types::global_dof_index> grid_indices(
+        grid_dofs.get_fe().n_dofs_per_cell());
+      AssertDimension(field_indices.size(), grid_indices.size());
+      nodal.zero_out_ghost_values();
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(field_indices);
+            const dealii::DoFHandler<2>::active_cell_iterator grid_cell(&grid.triangulation(),
+                                                                        cell->level(),
+                                                                        cell->index(),
+                                                                        &grid_dofs);
+            grid_cell->get_dof_indices(grid_indices);
+            for (unsigned int k = 0; k < grid_indices.size(); ++k)
+              if (nodal.in_local_range(grid_indices[k]))
+                nodal(grid_indices[k]) = ghosted_values[field_indices[k]];
+          }
+      nodal.update_ghost_values();
+    }
+
+
+
     double
     FiniteElementField::integral() const
     {

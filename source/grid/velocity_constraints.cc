@@ -6,9 +6,9 @@ namespace slidewave
 {
   namespace grid
   {
-    VelocityConstraints::VelocityConstraints(const BackgroundGrid              &grid,
-                                             const NodalWorkspace              &nodes,
-                                             const std::array<GridBoundary, 4> &sides,
+    VelocityConstraints::VelocityConstraints(const BackgroundGrid               &grid,
+                                             const NodalWorkspace               &nodes,
+                                             const std::array<GridBoundary, 4>  &sides,
                                              const std::vector<grid::RigidWall> &walls)
       : grid(grid)
       , nodes(nodes)

@@ -402,8 +402,8 @@ namespace slidewave
         for (unsigned int r = 1; r <= particles::MaterialRegion::max_regions; ++r)
           {
             prm.enter_subsection("Region " + std::to_string(r));
-            particles::MaterialRegion    region;
-            const std::string region_path = path + "/Region " + std::to_string(r);
+            particles::MaterialRegion region;
+            const std::string         region_path = path + "/Region " + std::to_string(r);
             if (region.parse_parameters(prm, region_path))
               {
                 const std::string entry = prm.get("Shape") == "rectangle" ? "Rectangle" : "Polygon";
@@ -436,9 +436,9 @@ namespace slidewave
         parameters.materials.clear();
         for (unsigned int r = 0; r < parameters.regions.size(); ++r)
           {
-            particles::MaterialRegion           &region      = parameters.regions[r];
-            const std::string         region_path = path + "/Region " + std::to_string(r + 1);
-            std::vector<unsigned int> slots;
+            particles::MaterialRegion &region      = parameters.regions[r];
+            const std::string          region_path = path + "/Region " + std::to_string(r + 1);
+            std::vector<unsigned int>  slots;
             for (unsigned int m = 1; m <= MaterialPointParameters::max_materials; ++m)
               {
                 prm.enter_subsection("Material " + std::to_string(m));

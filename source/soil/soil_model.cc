@@ -112,21 +112,21 @@ namespace slidewave
                               const double            hx,
                               const double            hy) const
     {
-      const unsigned int    n              = prm.particles_per_direction;
-      const particles::MaterialRegion &region         = prm.regions[region_index];
-      const unsigned int    m              = region.material_index;
-      const double          volume         = hx * hy / (n * n);
-      properties[property::mass]           = prm.materials[m].density * volume;
-      properties[property::volume]         = volume;
-      properties[property::initial_volume] = volume;
-      const dealii::Tensor<1, 2> v         = region.initial_velocity(position);
-      properties[property::velocity_x]     = v[0];
-      properties[property::velocity_y]     = v[1];
-      properties[property::initial_x]      = position[0];
-      properties[property::initial_y]      = position[1];
-      properties[property::material_id]    = m;
-      properties[property::domain_half_x]  = 0.5 * hx / n;
-      properties[property::domain_half_y]  = 0.5 * hy / n;
+      const unsigned int               n      = prm.particles_per_direction;
+      const particles::MaterialRegion &region = prm.regions[region_index];
+      const unsigned int               m      = region.material_index;
+      const double                     volume = hx * hy / (n * n);
+      properties[property::mass]              = prm.materials[m].density * volume;
+      properties[property::volume]            = volume;
+      properties[property::initial_volume]    = volume;
+      const dealii::Tensor<1, 2> v            = region.initial_velocity(position);
+      properties[property::velocity_x]        = v[0];
+      properties[property::velocity_y]        = v[1];
+      properties[property::initial_x]         = position[0];
+      properties[property::initial_y]         = position[1];
+      properties[property::material_id]       = m;
+      properties[property::domain_half_x]     = 0.5 * hx / n;
+      properties[property::domain_half_y]     = 0.5 * hy / n;
     }
 
 

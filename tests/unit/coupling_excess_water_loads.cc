@@ -57,7 +57,7 @@ namespace
 
   /** The loads on the soil with the water at @p level, the initial level being @p initial. */
   dealii::Tensor<1, 2>
-  loads_at(soil::MaterialPointSolver     &soil,
+  loads_at(soil::MaterialPointSolver    &soil,
            const double                  initial,
            const double                  level,
            const coupling::WaterPressure pressure)
@@ -86,10 +86,10 @@ namespace
 
   void
   check_level(soil::MaterialPointSolver &soil,
-              const double              initial_level,
-              const double              level,
-              const double              exact_x,
-              const double              exact_y)
+              const double               initial_level,
+              const double               level,
+              const double               exact_x,
+              const double               exact_y)
   {
     if (root)
       std::printf("water level from %.1f m to %.1f m, excess over initial level\n",
@@ -177,8 +177,8 @@ main(int argc, char **argv)
   root              = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   unit_check::print = root;
   {
-    const auto               soil_parameters = block_in_a_tank();
-    auto                     grid            = soil::MaterialPointSolver::make_grid(soil_parameters);
+    const auto                soil_parameters = block_in_a_tank();
+    auto                      grid = soil::MaterialPointSolver::make_grid(soil_parameters);
     soil::MaterialPointSolver soil(soil_parameters, *grid);
     soil.setup();
     check_level(soil, 1.5, 1.5, 0., 0.);

@@ -49,11 +49,11 @@ namespace
    *  @p still. */
   void
   check_water(soil::MaterialPointSolver &soil,
-              const double              still,
-              const double              level,
-              const double              exact_x,
-              const double              exact_y,
-              const double              buoyant_below)
+              const double               still,
+              const double               level,
+              const double               exact_x,
+              const double               exact_y,
+              const double               buoyant_below)
   {
     const water::WaterMesh       mesh = water::WaterMesh::uniform(0., 2., 20);
     water::ShallowWater1D        water(mesh, water::ShallowWaterParameters());
@@ -126,8 +126,8 @@ main(int argc, char **argv)
   root              = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   unit_check::print = root;
   {
-    const auto               soil_parameters = block_in_a_tank();
-    auto                     grid            = soil::MaterialPointSolver::make_grid(soil_parameters);
+    const auto                soil_parameters = block_in_a_tank();
+    auto                      grid = soil::MaterialPointSolver::make_grid(soil_parameters);
     soil::MaterialPointSolver soil(soil_parameters, *grid);
     soil.setup();
     const double rho_g = 1000. * 9.81;

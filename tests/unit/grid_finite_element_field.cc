@@ -15,6 +15,9 @@
 // 4. the field's refinement indicator (|grad u| h above a threshold) decides which cells
 //    grid.adapt() refines, and its cell weight decides the partition: the rank owning the
 //    heavy cells owns fewer cells than without the weight.
+// 5. the field's values copied to the grid's own nodes (a field of a particle model's nodal
+//    workspace, what the model's gather reads) give the linear function and its gradient
+//    exactly at the nodes, hanging ones included, and at points.
 // Every printed line is the same on one and two ranks.
 
 #include <array>
@@ -25,6 +28,7 @@
 #include <map>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/finite_element_field.h>
+#include <slidewave/grid/nodal_workspace.h>
 #include <string>
 #include <utility>
 #include <vector>
@@ -361,6 +365,45 @@ main(int argc, char **argv)
         "rank: all of them)");
   check(max_nodal_error(linear, Linear()) < tolerance,
         "linear field exact after balance() (max nodal error < 1e-12)");
+
+  // 5. What a particle model gathers from a grid physics: the field's values at the grid's
+  //    own nodes (copy_to_grid_nodes) in a field of the model's nodal workspace, on a grid
+  //    with hanging nodes, and what the model's gather computes from them with the Q1
+  //    weights at a point (here each cell's centre): u and grad u = (2, -3) exactly.
+  adapt_lower_left(grid, true);
+  grid::NodalWorkspace nodes(grid, /*with_node_positions=*/true, 1, 1);
+  nodes.reinit();
+  linear.copy_to_grid_nodes(nodes.fields[0]);
+  const auto                                  &q1 = grid.dof_handler().get_fe();
+  std::vector<dealii::types::global_dof_index> indices(q1.n_dofs_per_cell());
+  const dealii::Point<2>                       centre(0.5, 0.5);
+  const dealii::Tensor<1, 2>                   exact_gradient({2., -3.});
+  double node_error = 0., centre_error = 0., gradient_error = 0.;
+  for (const auto &cell : grid.dof_handler().active_cell_iterators())
+    if (cell->is_locally_owned())
+      {
+        cell->get_dof_indices(indices);
+        const double         h     = cell->extent_in_direction(0);
+        double               value = 0.;
+        dealii::Tensor<1, 2> gradient;
+        for (unsigned int k = 0; k < indices.size(); ++k)
+          {
+            const double u_k = nodes.fields[0][indices[k]];
+            node_error = std::max(node_error, std::abs(u_k - Linear().value(cell->vertex(k))));
+            value += q1.shape_value(k, centre) * u_k;
+            gradient += q1.shape_grad(k, centre) / h * u_k;
+          }
+        centre_error   = std::max(centre_error, std::abs(value - Linear().value(cell->center())));
+        gradient_error = std::max(gradient_error, (gradient - exact_gradient).norm());
+      }
+  if (root)
+    std::printf("gather: the field at the grid's nodes, %u cells\n",
+                grid.triangulation().n_global_active_cells());
+  check(dealii::Utilities::MPI::max(node_error, MPI_COMM_WORLD) < tolerance,
+        "every node of the owned cells (hanging ones too) holds the field's value (< 1e-12)");
+  check(dealii::Utilities::MPI::max(std::max(centre_error, gradient_error), MPI_COMM_WORLD)
+          < tolerance,
+        "value and gradient gathered at the cells' centres exact (< 1e-12)");
 
   if (root)
     std::printf("%s\n", all_passed ? "all checks passed" : "SOME CHECKS FAILED");

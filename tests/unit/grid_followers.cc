@@ -124,7 +124,7 @@ main(int argc, char **argv)
       soil::MaterialPointParameters prm;
       prm.point_forces = point_forces;
       const soil::SoilModel soil(prm);
-      const auto          &layout = soil.layout();
+      const auto           &layout = soil.layout();
       if (root)
         {
           std::printf("soil layout%s: %u properties\n",

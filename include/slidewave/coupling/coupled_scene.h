@@ -150,7 +150,7 @@ namespace slidewave
 
       const SceneParameters          &scene;
       CouplingParameters              coupling;
-      soil::MaterialPointParameters    soil_parameters;
+      soil::MaterialPointParameters   soil_parameters;
       water::ShallowWaterParameters   water_parameters;
       std::optional<water::WaterMesh> configured_mesh;
       water::WaterBoundary            boundaries[2];
@@ -160,12 +160,12 @@ namespace slidewave
       unsigned int                    check_interval = 10;
 
       /** The soil's background grid (declared before the soil: it outlives it). */
-      std::unique_ptr<grid::BackgroundGrid>     grid;
+      std::unique_ptr<grid::BackgroundGrid>      grid;
       std::unique_ptr<soil::MaterialPointSolver> soil;
-      std::unique_ptr<water::ShallowWater1D>    water;
-      std::unique_ptr<SoilWaterInterface>       interface;
-      water::GaugeRecorder                      gauges;
-      io::ParticleOutput                        particle_output;
+      std::unique_ptr<water::ShallowWater1D>     water;
+      std::unique_ptr<SoilWaterInterface>        interface;
+      water::GaugeRecorder                       gauges;
+      io::ParticleOutput                         particle_output;
 
       double initial_volume = 0., initial_toe = 0.;
       /** The soil columns of the interface (their x interfaces). */

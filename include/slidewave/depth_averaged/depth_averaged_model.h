@@ -175,12 +175,12 @@ namespace slidewave
       /** The point's force on its k-th node (Eq. 28 without the friction): the internal
        *  force -V_p sigma^nabla grad N and the weight's slope term m N b. */
       void
-      nodal_force(const ScatterTerms     &t,
+      nodal_force(const ScatterTerms      &t,
                   const grid::NodeWeights &w,
-                  const unsigned int      k,
-                  const double            mk,
-                  double                 &fx,
-                  double                 &fy) const
+                  const unsigned int       k,
+                  const double             mk,
+                  double                  &fx,
+                  double                  &fy) const
       {
         fx = -t.V * (t.sxx * w.grad_x[k] + t.sxy * w.grad_y[k]) + mk * t.bx;
         fy = -t.V * (t.sxy * w.grad_x[k] + t.syy * w.grad_y[k]) + mk * t.by;
@@ -228,7 +228,7 @@ namespace slidewave
        *  the point at the start of the step; the update then adds the step's own change. */
       template <typename Properties>
       void
-      gather_fields(const grid::NodeWeights     &w,
+      gather_fields(const grid::NodeWeights    &w,
                     const grid::NodalWorkspace &nodes,
                     Properties                 &p,
                     const bool                  before_update) const

@@ -8,8 +8,8 @@
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/grid/grid_boundary.h>
 #include <slidewave/grid/load_balancing_parameters.h>
-#include <slidewave/particles/material_region.h>
 #include <slidewave/grid/shape_functions.h>
+#include <slidewave/particles/material_region.h>
 #include <slidewave/terrain/raster_terrain.h>
 #include <string>
 
@@ -106,7 +106,7 @@ namespace slidewave
       bool depth_normal_to_slope = false;
 
       /** @name Numerics */
-      DepthUpdate        depth_update   = DepthUpdate::strain;
+      DepthUpdate         depth_update   = DepthUpdate::strain;
       grid::ShapeFunction shape_function = grid::ShapeFunction::q1;
       /** 0: PIC (Eq. 33), 1: FLIP (Eq. 34), between: a blend. */
       double flip_fraction = 0.;

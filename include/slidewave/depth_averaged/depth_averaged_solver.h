@@ -11,13 +11,13 @@
 #include <slidewave/depth_averaged/depth_averaged_model.h>
 #include <slidewave/depth_averaged/depth_averaged_parameters.h>
 #include <slidewave/depth_averaged/release.h>
+#include <slidewave/engine/particle_engine.h>
+#include <slidewave/engine/transfer_kernels.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/nodal_workspace.h>
-#include <slidewave/grid/velocity_constraints.h>
-#include <slidewave/engine/particle_engine.h>
 #include <slidewave/grid/rigid_wall.h>
-#include <slidewave/engine/transfer_kernels.h>
+#include <slidewave/grid/velocity_constraints.h>
 #include <slidewave/particles/point_cloud.h>
 #include <slidewave/terrain/elevation_grid.h>
 #include <string>
@@ -183,11 +183,11 @@ namespace slidewave
     private:
       DepthAveragedParameters prm;
       /** The terrain raster's CRS as WKT; "" for an expression or a table. */
-      std::string                             model_crs;
-      terrain::ElevationGrid                  elevation;
-      Release                                 release;
-      DepthAveragedModel                      flow;
-      grid::BackgroundGrid                   &grid;
+      std::string                                model_crs;
+      terrain::ElevationGrid                     elevation;
+      Release                                    release;
+      DepthAveragedModel                         flow;
+      grid::BackgroundGrid                      &grid;
       engine::ParticleEngine<DepthAveragedModel> engine;
     };
   } // namespace depth_averaged

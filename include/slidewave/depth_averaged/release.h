@@ -58,8 +58,8 @@ namespace slidewave
       depth_source() const;
 
     private:
-      const DepthAveragedParameters   &prm;
-      const terrain::ElevationGrid    &elevation;
+      const DepthAveragedParameters         &prm;
+      const terrain::ElevationGrid          &elevation;
       std::vector<particles::MaterialRegion> areas;
       /** 'Depth attribute': the value of each area. */
       std::vector<double> area_depth;

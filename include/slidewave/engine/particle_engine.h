@@ -4,16 +4,16 @@
 #include <array>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/timer.h>
+#include <slidewave/core/step_timeline.h>
+#include <slidewave/engine/transfer_kernels.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/grid_boundary.h>
 #include <slidewave/grid/nodal_workspace.h>
-#include <slidewave/grid/velocity_constraints.h>
-#include <slidewave/particles/material_region.h>
 #include <slidewave/grid/rigid_wall.h>
 #include <slidewave/grid/shape_functions.h>
-#include <slidewave/core/step_timeline.h>
-#include <slidewave/engine/transfer_kernels.h>
+#include <slidewave/grid/velocity_constraints.h>
+#include <slidewave/particles/material_region.h>
 #include <slidewave/particles/point_cloud.h>
 #include <string>
 #include <vector>
@@ -48,7 +48,7 @@ namespace slidewave
       struct Settings
       {
         grid::ShapeFunction shape_function = grid::ShapeFunction::q1;
-        double        flip_fraction  = 0.99;
+        double              flip_fraction  = 0.99;
         /** Modified update stress last: re-map the velocities before the update. */
         bool musl = false;
         /** Relocate the points by deal.II's full sort every step. */
@@ -77,7 +77,7 @@ namespace slidewave
       ParticleEngine(grid::BackgroundGrid                    &grid,
                      const Model                             &model,
                      const std::array<grid::GridBoundary, 4> &sides,
-                     const std::vector<grid::RigidWall>            &walls,
+                     const std::vector<grid::RigidWall>      &walls,
                      const Settings                          &settings);
 
       /**
@@ -86,10 +86,10 @@ namespace slidewave
        * properties), a repartition by the points if unbalanced and a first full sort.
        */
       void
-      create_points(double                                     start_time,
-                    const std::vector<particles::MaterialRegion>         &regions,
-                    unsigned int                               n,
-                    const particles::PointCloud::PropertyFill &fill);
+      create_points(double                                        start_time,
+                    const std::vector<particles::MaterialRegion> &regions,
+                    unsigned int                                  n,
+                    const particles::PointCloud::PropertyFill    &fill);
 
       /** Writes the grid and the points under @p prefix (collective). */
       void
@@ -202,7 +202,7 @@ namespace slidewave
       double               current_time = 0.;
       unsigned int         n_steps = 0, n_full_sorts = 0;
       dealii::TimerOutput *timer    = nullptr;
-      core::StepTimeline        *timeline = nullptr;
+      core::StepTimeline  *timeline = nullptr;
     };
   } // namespace engine
 } // namespace slidewave

@@ -17,7 +17,7 @@ namespace slidewave
     ParticleEngine<Model>::ParticleEngine(grid::BackgroundGrid                    &grid,
                                           const Model                             &model,
                                           const std::array<grid::GridBoundary, 4> &sides,
-                                          const std::vector<grid::RigidWall>            &walls,
+                                          const std::vector<grid::RigidWall>      &walls,
                                           const Settings                          &settings)
       : grid(grid)
       , settings(settings)
@@ -51,10 +51,10 @@ namespace slidewave
 
     template <class Model>
     void
-    ParticleEngine<Model>::create_points(const double                               start_time,
-                                         const std::vector<particles::MaterialRegion>         &regions,
-                                         const unsigned int                         n,
-                                         const particles::PointCloud::PropertyFill &fill)
+    ParticleEngine<Model>::create_points(const double                                  start_time,
+                                         const std::vector<particles::MaterialRegion> &regions,
+                                         const unsigned int                            n,
+                                         const particles::PointCloud::PropertyFill    &fill)
     {
       current_time = start_time;
       // Until the points exist, every partition of the grid (the refinements, the

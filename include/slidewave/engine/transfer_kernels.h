@@ -4,11 +4,11 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <slidewave/core/step_timeline.h>
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/nodal_workspace.h>
-#include <slidewave/grid/velocity_constraints.h>
 #include <slidewave/grid/shape_functions.h>
-#include <slidewave/core/step_timeline.h>
+#include <slidewave/grid/velocity_constraints.h>
 #include <slidewave/particles/point_cloud.h>
 #include <vector>
 
@@ -62,7 +62,7 @@ namespace slidewave
       struct Settings
       {
         grid::ShapeFunction shape_function = grid::ShapeFunction::q1;
-        double        flip_fraction  = 0.99;
+        double              flip_fraction  = 0.99;
         /** Nodes with less mass are empty: their velocity is zero. */
         double empty_node_mass = 0.;
         /** Kinematic mode: the nodal velocities are this field (null: off). */
@@ -121,7 +121,7 @@ namespace slidewave
       void
       shape_weights(const ParticleAccessorType &particle,
                     unsigned int                cell_index,
-                    grid::NodeWeights                &w) const;
+                    grid::NodeWeights          &w) const;
 
       /** Kinematic mode: the nodal velocities at @p time and @p time + @p dt. */
       void
@@ -140,7 +140,7 @@ namespace slidewave
       const grid::CellPatches         &patches;
       const grid::VelocityConstraints &constraints;
       const Settings                   settings;
-      core::StepTimeline                    *timeline = nullptr;
+      core::StepTimeline              *timeline = nullptr;
 
       /** Side arrays reused every step (no allocation per particle). */
       std::vector<dealii::Point<2>>     positions;

@@ -37,7 +37,7 @@ namespace slidewave
     inline void
     TransferKernels<Model>::shape_weights(const ParticleAccessorType &particle,
                                           const unsigned int          cell_index,
-                                          grid::NodeWeights                &w) const
+                                          grid::NodeWeights          &w) const
     {
       if (settings.shape_function == grid::ShapeFunction::q1)
         {
@@ -49,12 +49,12 @@ namespace slidewave
           const dealii::Point<2> x = particle.get_location();
           const auto             p = particle.get_properties();
           grid::gimp_weights(patches.begin(cell_index),
-                       patches.end(cell_index),
-                       x[0],
-                       x[1],
-                       p[Model::domain_half_x],
-                       p[Model::domain_half_y],
-                       w);
+                             patches.end(cell_index),
+                             x[0],
+                             x[1],
+                             p[Model::domain_half_x],
+                             p[Model::domain_half_y],
+                             w);
         }
     }
 
@@ -295,8 +295,8 @@ namespace slidewave
       // kept aside until the stresses have been updated on the old positions. With USL
       // the velocity gradients come from the same nodal velocities, so the stresses are
       // updated in the same pass.
-      grid::NodeWeights  w;
-      const double flip = settings.flip_fraction;
+      grid::NodeWeights w;
+      const double      flip = settings.flip_fraction;
       // The workspace's velocities as a plain pointer, taken once (see particles_to_grid).
       const double *const all_velocities = nodes.velocities(0);
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {

@@ -89,7 +89,7 @@ namespace slidewave
       std::vector<grid::PatchCell> own_cell;
       /** Cells of each owned cell's patch: patch_cells[patch_start[c] .. patch_start[c+1]),
        * the cell itself first. */
-      std::vector<unsigned int>   patch_start;
+      std::vector<unsigned int>    patch_start;
       std::vector<grid::PatchCell> patch_cells;
       /** The cell of each entry of patch_cells. */
       std::vector<BackgroundGrid::ActiveCellIterator> patch_cell_iterators;

@@ -7,6 +7,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <functional>
 #include <memory>
@@ -142,6 +143,18 @@ namespace slidewave
       {
         user_weight = std::move(weight);
       }
+
+      /**
+       * The field's values at the material points' nodes (the grid's own Q1 dofs) into
+       * @p nodal, a vector with the grid's dof layout such as a field of the particle
+       * model's NodalWorkspace: the way a particle model gathers a grid physics' field at
+       * its points (its gather_fields reads the workspace's fields with the points' shape
+       * weights, value and gradient). Both elements are Q1 on the same cells, so the values
+       * go vertex by vertex; hanging nodes get the field's conforming value. Writes the
+       * owned entries and updates the ghosts (collective).
+       */
+      void
+      copy_to_grid_nodes(dealii::LinearAlgebra::distributed::Vector<double> &nodal) const;
 
       void
       grid_ready() override;

@@ -23,9 +23,9 @@ namespace slidewave
     class VelocityConstraints : public GridFollower
     {
     public:
-      VelocityConstraints(const BackgroundGrid              &grid,
-                          const NodalWorkspace              &nodes,
-                          const std::array<GridBoundary, 4> &sides,
+      VelocityConstraints(const BackgroundGrid               &grid,
+                          const NodalWorkspace               &nodes,
+                          const std::array<GridBoundary, 4>  &sides,
                           const std::vector<grid::RigidWall> &walls);
 
       /** The held nodes of the sides and walls on the current grid. */
@@ -79,9 +79,9 @@ namespace slidewave
       void
       find_wall_nodes();
 
-      const BackgroundGrid             &grid;
-      const NodalWorkspace             &nodes;
-      const std::array<GridBoundary, 4> sides;
+      const BackgroundGrid              &grid;
+      const NodalWorkspace              &nodes;
+      const std::array<GridBoundary, 4>  sides;
       const std::vector<grid::RigidWall> walls;
 
       /** Local indices of owned nodes where v_x (0) or v_y (1) is held at zero. */

@@ -8,10 +8,10 @@
 #include <deal.II/base/tensor.h>
 #include <memory>
 #include <slidewave/grid/grid_boundary.h>
-#include <slidewave/materials/material.h>
-#include <slidewave/particles/material_region.h>
 #include <slidewave/grid/rigid_wall.h>
 #include <slidewave/grid/shape_functions.h>
+#include <slidewave/materials/material.h>
+#include <slidewave/particles/material_region.h>
 #include <string>
 #include <vector>
 
@@ -64,17 +64,17 @@ namespace slidewave
       void
       parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
 
-      dealii::Point<2> lower_left, upper_right;
-      double           cell_size               = 0.01;
-      unsigned int     particles_per_direction = 2;
-      grid::ShapeFunction    shape_function          = grid::ShapeFunction::q1;
-      UpdateScheme     update_scheme           = UpdateScheme::usl;
-      double           flip_fraction           = 0.99;
-      double           time_step_multiplier    = 0.5;
-      double           fixed_time_step         = 0.;
-      bool             b_bar                   = true;
-      bool             detailed_timing         = false;
-      bool             step_timeline           = false;
+      dealii::Point<2>    lower_left, upper_right;
+      double              cell_size               = 0.01;
+      unsigned int        particles_per_direction = 2;
+      grid::ShapeFunction shape_function          = grid::ShapeFunction::q1;
+      UpdateScheme        update_scheme           = UpdateScheme::usl;
+      double              flip_fraction           = 0.99;
+      double              time_step_multiplier    = 0.5;
+      double              fixed_time_step         = 0.;
+      bool                b_bar                   = true;
+      bool                detailed_timing         = false;
+      bool                step_timeline           = false;
       /** 'Particle relocation = full sort': deal.II's sort every step. */
       bool                 full_sort_every_step = false;
       dealii::Tensor<1, 2> gravity;
@@ -114,7 +114,7 @@ namespace slidewave
       std::shared_ptr<dealii::FunctionParser<2>> prescribed_velocity;
 
       std::vector<materials::MaterialParameters> materials;
-      std::vector<particles::MaterialRegion>                regions;
+      std::vector<particles::MaterialRegion>     regions;
 
       /**
        * Whether the material points carry point forces (property::point_force_x/y): set

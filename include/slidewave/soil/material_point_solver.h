@@ -14,17 +14,17 @@
 #include <functional>
 #include <memory>
 #include <set>
+#include <slidewave/core/step_timeline.h>
+#include <slidewave/engine/particle_engine.h>
+#include <slidewave/engine/transfer_kernels.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/nodal_workspace.h>
 #include <slidewave/grid/velocity_constraints.h>
-#include <slidewave/soil/material_point_parameters.h>
-#include <slidewave/engine/particle_engine.h>
-#include <slidewave/soil/soil_model.h>
-#include <slidewave/core/step_timeline.h>
-#include <slidewave/engine/transfer_kernels.h>
 #include <slidewave/particles/point_cloud.h>
 #include <slidewave/particles/property_layout.h>
+#include <slidewave/soil/material_point_parameters.h>
+#include <slidewave/soil/soil_model.h>
 #include <string>
 #include <vector>
 
@@ -278,9 +278,9 @@ namespace slidewave
       void
       load_gravity();
 
-      MaterialPointParameters   prm;
-      SoilModel                 model;
-      grid::BackgroundGrid     &grid;
+      MaterialPointParameters           prm;
+      SoilModel                         model;
+      grid::BackgroundGrid             &grid;
       engine::ParticleEngine<SoilModel> engine;
 
       /** Per-step times of the parts ('Step timeline'): only allocated when on. */

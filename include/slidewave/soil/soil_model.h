@@ -5,13 +5,13 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/particles/particle_handler.h>
 #include <functional>
-#include <slidewave/materials/material.h>
-#include <slidewave/soil/material_point_parameters.h>
 #include <slidewave/engine/particle_model_defaults.h>
-#include <slidewave/soil/particle_properties.h>
 #include <slidewave/grid/shape_functions.h>
+#include <slidewave/materials/material.h>
 #include <slidewave/particles/point_cloud.h>
 #include <slidewave/particles/property_layout.h>
+#include <slidewave/soil/material_point_parameters.h>
+#include <slidewave/soil/particle_properties.h>
 #include <string>
 #include <vector>
 
@@ -101,12 +101,12 @@ namespace slidewave
       /** The point's force on its k-th node, with @p mk = S_k m: the internal force
        *  -V sigma grad S (Eq. 16) plus gravity and the point force (Eq. 15). */
       void
-      nodal_force(const ScatterTerms &t,
-                  const grid::NodeWeights  &w,
-                  const unsigned int  k,
-                  const double        mk,
-                  double             &fx,
-                  double             &fy) const
+      nodal_force(const ScatterTerms      &t,
+                  const grid::NodeWeights &w,
+                  const unsigned int       k,
+                  const double             mk,
+                  double                  &fx,
+                  double                  &fy) const
       {
         fx = -t.V * (t.sxx * w.grad_x[k] + t.sxy * w.grad_y[k]) + mk * t.gx + w.value[k] * t.fx;
         fy = -t.V * (t.sxy * w.grad_x[k] + t.syy * w.grad_y[k]) + mk * t.gy + w.value[k] * t.fy;

@@ -3,7 +3,6 @@
 
 #include <slidewave/io/checkpoint.h>
 #include <slidewave/water/shallow_water_1d.h>
-
 #include <string>
 
 namespace slidewave

@@ -5,12 +5,12 @@
 #include <deal.II/base/point.h>
 #include <deal.II/particles/particle_handler.h>
 #include <functional>
+#include <slidewave/core/step_timeline.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/grid_follower.h>
 #include <slidewave/grid/velocity_constraints.h>
 #include <slidewave/particles/material_region.h>
-#include <slidewave/core/step_timeline.h>
 #include <slidewave/particles/property_layout.h>
 #include <string>
 #include <vector>
@@ -63,10 +63,10 @@ namespace slidewave
        * n x n sub-cells that lie in a region (the first that holds it). */
       template <typename Function>
       void
-      for_each_point_to_create(const grid::BackgroundGrid::CellIterator &cell,
-                               unsigned int                              n,
-                               const std::vector<particles::MaterialRegion>   &regions,
-                               const Function                           &f) const;
+      for_each_point_to_create(const grid::BackgroundGrid::CellIterator     &cell,
+                               unsigned int                                  n,
+                               const std::vector<particles::MaterialRegion> &regions,
+                               const Function                               &f) const;
 
       /** What create() asks of the model for each point: its properties (zeroed before)
        *  from its position, region index and the cell's size; false: no point there (no
@@ -81,9 +81,9 @@ namespace slidewave
        *  identifiers from the global cell index and the lattice position. Ends the
        *  expectation of expect_points(). */
       void
-      create(unsigned int                            n,
+      create(unsigned int                                  n,
              const std::vector<particles::MaterialRegion> &regions,
-             const PropertyFill                     &fill);
+             const PropertyFill                           &fill);
 
       /**
        * Calls @p f(cell, particles) for every locally owned cell that holds points, in the
@@ -114,7 +114,7 @@ namespace slidewave
       bool
       relocate_within_patches(const std::vector<dealii::Point<2>> &new_positions,
                               const grid::CellPatches             &patches,
-                              core::StepTimeline                   *timeline);
+                              core::StepTimeline                  *timeline);
 
       /** deal.II's full sort of the points into the cells and ranks. */
       void
@@ -179,7 +179,7 @@ namespace slidewave
       ParticleHandler                         handler;
       /** Set-up, until create(): the regions and the points per direction to come. */
       const std::vector<particles::MaterialRegion> *expected_regions       = nullptr;
-      unsigned int                            expected_per_direction = 0;
+      unsigned int                                  expected_per_direction = 0;
 
       /** The points create() puts in @p cell with @p n per direction (expect_points()),
        *  or the points the cell holds. */
@@ -198,16 +198,22 @@ namespace slidewave
        *  grown): the moving points and their properties, one row each. */
       std::vector<MovingParticle> moving_particles;
       std::vector<double>         moving_data;
+
+      /** The end of relocate_within_patches() when some point on some rank changed cell:
+       *  inserts this rank's moving points in their new cells, then removes them from their
+       *  old ones, and updates the handler's counts. */
+      void
+      move_to_new_cells();
     };
 
 
 
     template <typename Function>
     void
-    PointCloud::for_each_point_to_create(const grid::BackgroundGrid::CellIterator &cell,
-                                         const unsigned int                        n,
-                                         const std::vector<particles::MaterialRegion>   &regions,
-                                         const Function                           &f) const
+    PointCloud::for_each_point_to_create(const grid::BackgroundGrid::CellIterator     &cell,
+                                         const unsigned int                            n,
+                                         const std::vector<particles::MaterialRegion> &regions,
+                                         const Function                               &f) const
     {
       const dealii::Point<2> origin = cell->vertex(0);
       const double           hx     = cell->vertex(1)[0] - origin[0];

@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <slidewave/app/application.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parameter_documentation.h>
@@ -186,6 +187,202 @@ namespace slidewave
       prepare_output_directory(scene.output_directory, input_file);
       return physics.run() ? success : verification_error;
     }
+
+    /** What the command line asks for when it names a scene to read. */
+    struct CommandLine
+    {
+      std::string              input_file;
+      std::vector<std::string> overrides;
+      bool                     validate_only = false;
+    };
+
+    /** Prints every parameter in @p format (prm, json or markdown). Returns an ExitStatus. */
+    int
+    print_all_parameters(const std::string &format, std::ostream &out, std::ostream &err)
+    {
+      dealii::ParameterHandler prm;
+      declare_all_parameters(prm);
+      if (format == "prm")
+        prm.print_parameters(out,
+                             dealii::ParameterHandler::PRM
+                               | dealii::ParameterHandler::KeepDeclarationOrder);
+      else if (format == "json")
+        prm.print_parameters(out,
+                             dealii::ParameterHandler::JSON
+                               | dealii::ParameterHandler::KeepDeclarationOrder);
+      else if (format == "markdown")
+        print_parameters_markdown(prm, out);
+      else
+        {
+          err << "slidewave: error: --print-parameters " << format
+              << ": allowed formats are prm, json and markdown\n";
+          return input_error;
+        }
+      return success;
+    }
+
+    /**
+     * Parses the command line @p arguments into @p command_line, in order. Options that end
+     * the program (--help, --version, --print-parameters) are served here, and an error is
+     * reported here: then returns the ExitStatus; returns nothing when a scene is to be read.
+     */
+    std::optional<int>
+    parse_command_line(const std::vector<std::string> &arguments,
+                       CommandLine                    &command_line,
+                       std::ostream                   &out,
+                       std::ostream                   &err)
+    {
+      for (unsigned int a = 0; a < arguments.size(); ++a)
+        {
+          const std::string &arg = arguments[a];
+          if (arg == "--help" || arg == "-h")
+            {
+              out << usage;
+              return success;
+            }
+          if (arg == "--version")
+            {
+              out << "slidewave " << SLIDEWAVE_VERSION << " (deal.II " << DEAL_II_PACKAGE_VERSION
+                  << ")\n";
+              return success;
+            }
+          if (arg == "--print-parameters")
+            return print_all_parameters(a + 1 < arguments.size() ? arguments[a + 1] : "prm",
+                                        out,
+                                        err);
+          if (arg == "--validate")
+            command_line.validate_only = true;
+          else if (arg == "--resume")
+            command_line.overrides.push_back("Checkpoint/Resume=true");
+          else if (arg == "--set")
+            {
+              if (a + 1 >= arguments.size())
+                {
+                  err << "slidewave: error: --set needs an assignment 'PATH=VALUE'\n";
+                  return input_error;
+                }
+              command_line.overrides.push_back(arguments[++a]);
+            }
+          else if (!arg.empty() && arg[0] == '-')
+            {
+              err << "slidewave: error: unknown option '" << arg << "'\n\n" << usage;
+              return input_error;
+            }
+          else if (command_line.input_file.empty())
+            command_line.input_file = arg;
+          else
+            {
+              err << "slidewave: error: more than one scene file ('" << command_line.input_file
+                  << "', '" << arg << "')\n\n"
+                  << usage;
+              return input_error;
+            }
+        }
+      return std::nullopt;
+    }
+
+    /** Checks that a scene file was given and can be read; reports on @p err if not. */
+    bool
+    scene_file_is_readable(const std::string &input_file, std::ostream &err)
+    {
+      if (input_file.empty())
+        {
+          err << "slidewave: error: no scene file given\n\n" << usage;
+          return false;
+        }
+      if (!std::filesystem::is_regular_file(input_file) || !std::ifstream(input_file))
+        {
+          err << "slidewave: error: cannot read the scene file '" << input_file << "'\n";
+          return false;
+        }
+      return true;
+    }
+
+    /**
+     * Declares every parameter into @p prm and parses @p input_file into it. Returns false
+     * (after reporting on @p err) if deal.II rejects the file.
+     */
+    bool
+    parse_scene_file(dealii::ParameterHandler &prm,
+                     const std::string        &input_file,
+                     std::ostream             &err)
+    {
+      declare_all_parameters(prm);
+      try
+        {
+          prm.parse_input(input_file,
+                          "",
+                          /*skip_undefined=*/false,
+                          /*assert_mandatory_entries_are_found=*/false);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          err << "slidewave: error: " << one_line(e) << subsection_at_line(input_file, one_line(e))
+              << '\n';
+          return false;
+        }
+      return true;
+    }
+
+    /** Runs (or only validates) the scene of the physics @p scene names. Returns an
+     *  ExitStatus. */
+    int
+    dispatch_scene(const SceneParameters    &scene,
+                   dealii::ParameterHandler &prm,
+                   const bool                validate_only,
+                   const std::string        &input_file,
+                   std::ostream             &out)
+    {
+      switch (scene.physics)
+        {
+          case Physics::shallow_water:
+            return run_scene<water::WaterScene>(scene, prm, validate_only, input_file, out);
+          case Physics::material_points:
+            return run_scene<soil::MaterialPointScene>(scene, prm, validate_only, input_file, out);
+          case Physics::coupled:
+            return run_scene<coupling::CoupledScene>(scene, prm, validate_only, input_file, out);
+          case Physics::depth_averaged:
+            return run_scene<depth_averaged::DepthAveragedScene>(
+              scene, prm, validate_only, input_file, out);
+          case Physics::none:
+            break;
+        }
+      return input_error;
+    }
+
+    /**
+     * Reads the scene file of @p command_line, applies its overrides, checks the scene and
+     * runs it (or only validates it). Input errors and run failures are reported on @p err.
+     * Returns an ExitStatus.
+     */
+    int
+    read_and_run_scene(const CommandLine &command_line, std::ostream &out, std::ostream &err)
+    {
+      const std::string &input_file = command_line.input_file;
+      try
+        {
+          dealii::ParameterHandler prm;
+          if (!parse_scene_file(prm, input_file, err))
+            return input_error;
+          for (const auto &assignment : command_line.overrides)
+            apply_override(prm, assignment);
+
+          SceneParameters scene;
+          scene.parse_parameters(prm, input_file);
+          return dispatch_scene(scene, prm, command_line.validate_only, input_file, out);
+        }
+      catch (const InputError &e)
+        {
+          err << "slidewave: error in '" << input_file << "': " << e.what() << '\n';
+          return input_error;
+        }
+      catch (const RunFailure &e)
+        {
+          err << "slidewave: run failed " << e.what()
+              << "; the output written before this step is kept.\n";
+          return run_failure;
+        }
+    }
   } // namespace
 
 
@@ -212,135 +409,11 @@ namespace slidewave
     std::ostream &out = is_root ? out_all : null_stream;
     std::ostream &err = is_root ? err_all : null_stream;
 
-    std::string              input_file;
-    std::vector<std::string> overrides;
-    bool                     validate_only = false;
-    for (unsigned int a = 0; a < arguments.size(); ++a)
-      {
-        const std::string &arg = arguments[a];
-        if (arg == "--help" || arg == "-h")
-          {
-            out << usage;
-            return success;
-          }
-        if (arg == "--version")
-          {
-            out << "slidewave " << SLIDEWAVE_VERSION << " (deal.II " << DEAL_II_PACKAGE_VERSION
-                << ")\n";
-            return success;
-          }
-        if (arg == "--print-parameters")
-          {
-            const std::string        format = a + 1 < arguments.size() ? arguments[a + 1] : "prm";
-            dealii::ParameterHandler prm;
-            declare_all_parameters(prm);
-            if (format == "prm")
-              prm.print_parameters(out,
-                                   dealii::ParameterHandler::PRM
-                                     | dealii::ParameterHandler::KeepDeclarationOrder);
-            else if (format == "json")
-              prm.print_parameters(out,
-                                   dealii::ParameterHandler::JSON
-                                     | dealii::ParameterHandler::KeepDeclarationOrder);
-            else if (format == "markdown")
-              print_parameters_markdown(prm, out);
-            else
-              {
-                err << "slidewave: error: --print-parameters " << format
-                    << ": allowed formats are prm, json and markdown\n";
-                return input_error;
-              }
-            return success;
-          }
-        if (arg == "--validate")
-          validate_only = true;
-        else if (arg == "--resume")
-          overrides.push_back("Checkpoint/Resume=true");
-        else if (arg == "--set")
-          {
-            if (a + 1 >= arguments.size())
-              {
-                err << "slidewave: error: --set needs an assignment 'PATH=VALUE'\n";
-                return input_error;
-              }
-            overrides.push_back(arguments[++a]);
-          }
-        else if (!arg.empty() && arg[0] == '-')
-          {
-            err << "slidewave: error: unknown option '" << arg << "'\n\n" << usage;
-            return input_error;
-          }
-        else if (input_file.empty())
-          input_file = arg;
-        else
-          {
-            err << "slidewave: error: more than one scene file ('" << input_file << "', '" << arg
-                << "')\n\n"
-                << usage;
-            return input_error;
-          }
-      }
-
-    if (input_file.empty())
-      {
-        err << "slidewave: error: no scene file given\n\n" << usage;
-        return input_error;
-      }
-    if (!std::filesystem::is_regular_file(input_file) || !std::ifstream(input_file))
-      {
-        err << "slidewave: error: cannot read the scene file '" << input_file << "'\n";
-        return input_error;
-      }
-
-    try
-      {
-        dealii::ParameterHandler prm;
-        declare_all_parameters(prm);
-        try
-          {
-            prm.parse_input(input_file,
-                            "",
-                            /*skip_undefined=*/false,
-                            /*assert_mandatory_entries_are_found=*/false);
-          }
-        catch (const dealii::ExceptionBase &e)
-          {
-            err << "slidewave: error: " << one_line(e)
-                << subsection_at_line(input_file, one_line(e)) << '\n';
-            return input_error;
-          }
-        for (const auto &assignment : overrides)
-          apply_override(prm, assignment);
-
-        SceneParameters scene;
-        scene.parse_parameters(prm, input_file);
-
-        switch (scene.physics)
-          {
-            case Physics::shallow_water:
-              return run_scene<water::WaterScene>(scene, prm, validate_only, input_file, out);
-            case Physics::material_points:
-              return run_scene<soil::MaterialPointScene>(scene, prm, validate_only, input_file, out);
-            case Physics::coupled:
-              return run_scene<coupling::CoupledScene>(scene, prm, validate_only, input_file, out);
-            case Physics::depth_averaged:
-              return run_scene<depth_averaged::DepthAveragedScene>(
-                scene, prm, validate_only, input_file, out);
-            case Physics::none:
-              break;
-          }
-        return input_error;
-      }
-    catch (const InputError &e)
-      {
-        err << "slidewave: error in '" << input_file << "': " << e.what() << '\n';
-        return input_error;
-      }
-    catch (const RunFailure &e)
-      {
-        err << "slidewave: run failed " << e.what()
-            << "; the output written before this step is kept.\n";
-        return run_failure;
-      }
+    CommandLine command_line;
+    if (const auto done = parse_command_line(arguments, command_line, out, err))
+      return *done;
+    if (!scene_file_is_readable(command_line.input_file, err))
+      return input_error;
+    return read_and_run_scene(command_line, out, err);
   }
 } // namespace slidewave

@@ -5,12 +5,99 @@
 
 namespace slidewave
 {
+  namespace
+  {
+    /** Declares the subsection Time: the time window, the step bound, the report intervals. */
+    void
+    declare_time_parameters(dealii::ParameterHandler &prm)
+    {
+      using dealii::Patterns::Double;
+      using dealii::Patterns::Integer;
+
+      prm.enter_subsection("Time");
+      {
+        prm.declare_entry("Start time", "0", Double(), "Time at which the scene starts [s].");
+        prm.declare_entry("End time",
+                          "1",
+                          Double(),
+                          "Time at which the scene ends [s]; must be after the start time.");
+        prm.declare_entry("Maximum time step",
+                          "0",
+                          Double(0.),
+                          "Upper bound on the time step [s]; 0 means no bound beyond the "
+                          "stability limit of the physics.");
+        prm.declare_entry("Output interval",
+                          "0",
+                          Double(0.),
+                          "Simulated time between two outputs (profiles, particle files) [s]. "
+                          "Output is always written at the start and at the end; 0 means only "
+                          "then. Time steps are shortened to land on output times.");
+        prm.declare_entry("Statistics interval",
+                          "1",
+                          Integer(1),
+                          "A row is written to statistics.csv every this many steps (and at "
+                          "every output time and at the end).");
+      }
+      prm.leave_subsection();
+    }
+
+    /** Declares the subsection Checkpoint: when to write checkpoints and whether to resume. */
+    void
+    declare_checkpoint_parameters(dealii::ParameterHandler &prm)
+    {
+      using dealii::Patterns::Bool;
+      using dealii::Patterns::Double;
+      using dealii::Patterns::Integer;
+
+      prm.enter_subsection("Checkpoint");
+      {
+        prm.declare_entry("Step interval",
+                          "0",
+                          Integer(0),
+                          "Write a checkpoint every this many steps (0: never). Checkpoints "
+                          "go to OUTPUT/checkpoint (the previous one is kept as "
+                          "checkpoint.previous); writing is atomic.");
+        prm.declare_entry("Wall time interval",
+                          "0",
+                          Double(0.),
+                          "Write a checkpoint every this many minutes of wall time (0: never).");
+        prm.declare_entry("At end", "false", Bool(), "Write a checkpoint at the end of the run.");
+        prm.declare_entry("Resume",
+                          "false",
+                          Bool(),
+                          "Resume from the newest checkpoint in the output directory (same as "
+                          "the command-line option --resume). The scene may change its end "
+                          "time, output and checkpoint settings, and the number of MPI ranks; "
+                          "the physics, grid and materials must be those of the checkpoint. "
+                          "Material points only, for now.");
+      }
+      prm.leave_subsection();
+    }
+
+    /** Declares the subsection Test: the deterministic reporting of the test suite. */
+    void
+    declare_test_parameters(dealii::ParameterHandler &prm)
+    {
+      using dealii::Patterns::Bool;
+
+      prm.enter_subsection("Test");
+      {
+        prm.declare_entry("Enable",
+                          "false",
+                          Bool(),
+                          "Test mode: rank 0 prints only deterministic integral quantities at "
+                          "fixed precision (no timers, no progress line), identical for any "
+                          "number of MPI ranks.");
+      }
+      prm.leave_subsection();
+    }
+  } // namespace
+
+
+
   void
   SceneParameters::declare_parameters(dealii::ParameterHandler &prm)
   {
-    using dealii::Patterns::Bool;
-    using dealii::Patterns::Double;
-    using dealii::Patterns::Integer;
     using dealii::Patterns::Selection;
 
     prm.declare_entry("Physics",
@@ -33,66 +120,9 @@ namespace slidewave
                       "working directory, <scene> being the scene file's name without '.prm'. "
                       "The scene file is copied into it.");
 
-    prm.enter_subsection("Time");
-    {
-      prm.declare_entry("Start time", "0", Double(), "Time at which the scene starts [s].");
-      prm.declare_entry("End time",
-                        "1",
-                        Double(),
-                        "Time at which the scene ends [s]; must be after the start time.");
-      prm.declare_entry("Maximum time step",
-                        "0",
-                        Double(0.),
-                        "Upper bound on the time step [s]; 0 means no bound beyond the "
-                        "stability limit of the physics.");
-      prm.declare_entry("Output interval",
-                        "0",
-                        Double(0.),
-                        "Simulated time between two outputs (profiles, particle files) [s]. "
-                        "Output is always written at the start and at the end; 0 means only "
-                        "then. Time steps are shortened to land on output times.");
-      prm.declare_entry("Statistics interval",
-                        "1",
-                        Integer(1),
-                        "A row is written to statistics.csv every this many steps (and at "
-                        "every output time and at the end).");
-    }
-    prm.leave_subsection();
-
-    prm.enter_subsection("Checkpoint");
-    {
-      prm.declare_entry("Step interval",
-                        "0",
-                        Integer(0),
-                        "Write a checkpoint every this many steps (0: never). Checkpoints "
-                        "go to OUTPUT/checkpoint (the previous one is kept as "
-                        "checkpoint.previous); writing is atomic.");
-      prm.declare_entry("Wall time interval",
-                        "0",
-                        Double(0.),
-                        "Write a checkpoint every this many minutes of wall time (0: never).");
-      prm.declare_entry("At end", "false", Bool(), "Write a checkpoint at the end of the run.");
-      prm.declare_entry("Resume",
-                        "false",
-                        Bool(),
-                        "Resume from the newest checkpoint in the output directory (same as "
-                        "the command-line option --resume). The scene may change its end "
-                        "time, output and checkpoint settings, and the number of MPI ranks; "
-                        "the physics, grid and materials must be those of the checkpoint. "
-                        "Material points only, for now.");
-    }
-    prm.leave_subsection();
-
-    prm.enter_subsection("Test");
-    {
-      prm.declare_entry("Enable",
-                        "false",
-                        Bool(),
-                        "Test mode: rank 0 prints only deterministic integral quantities at "
-                        "fixed precision (no timers, no progress line), identical for any "
-                        "number of MPI ranks.");
-    }
-    prm.leave_subsection();
+    declare_time_parameters(prm);
+    declare_checkpoint_parameters(prm);
+    declare_test_parameters(prm);
   }
 
 

@@ -25,7 +25,8 @@ namespace slidewave
 
 
     void
-    PointCloud::expect_points(const std::vector<particles::MaterialRegion> &regions, const unsigned int n)
+    PointCloud::expect_points(const std::vector<particles::MaterialRegion> &regions,
+                              const unsigned int                            n)
     {
       expected_regions       = &regions;
       expected_per_direction = n;
@@ -145,9 +146,9 @@ namespace slidewave
 
 
     void
-    PointCloud::create(const unsigned int                      n,
+    PointCloud::create(const unsigned int                            n,
                        const std::vector<particles::MaterialRegion> &regions,
-                       const PropertyFill                     &fill)
+                       const PropertyFill                           &fill)
     {
       std::vector<double> values(handler.n_properties_per_particle(), 0.);
       for (const auto &cell : grid.triangulation().active_cell_iterators())
@@ -186,7 +187,7 @@ namespace slidewave
     bool
     PointCloud::relocate_within_patches(const std::vector<dealii::Point<2>> &new_positions,
                                         const grid::CellPatches             &patches,
-                                        core::StepTimeline                   *timeline)
+                                        core::StepTimeline                  *timeline)
     {
       // The reference coordinates exactly as deal.II's MappingCartesian computes them,
       // and its test for a point inside the unit cell, so that this path and the full
@@ -200,9 +201,8 @@ namespace slidewave
           };
       moving_particles.clear();
       moving_data.clear();
-      const unsigned int n_properties = handler.n_properties_per_particle();
-      bool               leaves_patch = false;
-      dealii::Point<2>   reference;
+      bool             leaves_patch = false;
+      dealii::Point<2> reference;
       for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
         const unsigned int cell_index = cell->active_cell_index();
         const unsigned int own        = patches.start(cell_index);
@@ -251,12 +251,21 @@ namespace slidewave
         return false; // the full sort takes over (the locations are set)
       if (global[1] == 0)
         return true;
+      move_to_new_cells();
+      return true;
+    }
 
+
+
+    void
+    PointCloud::move_to_new_cells()
+    {
       // As deal.II's sort does it, so that the points end up in the same order within
       // their cells: the moving points are appended to their new cells first, then
       // removed from their old ones back to front (the points were collected cell by cell
       // in increasing order within each cell; a removal moves a cell's last point into
       // the gap, so the iterators of the points still to be removed stay valid).
+      const unsigned int n_properties = handler.n_properties_per_particle();
       for (unsigned int k = 0; k < moving_particles.size(); ++k)
         {
           const MovingParticle &moving = moving_particles[k];
@@ -270,7 +279,6 @@ namespace slidewave
       for (auto moving = moving_particles.rbegin(); moving != moving_particles.rend(); ++moving)
         handler.remove_particle(moving->particle);
       handler.update_cached_numbers();
-      return true;
     }
 
 

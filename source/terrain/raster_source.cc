@@ -103,6 +103,47 @@ namespace slidewave
         const long last  = static_cast<long>(std::ceil(hi - 1e-9));
         return {first, std::max(last, first + 1)};
       }
+
+
+
+      /** Refuses a raster without a coordinate reference system (@p crs null) unless its
+       *  coordinates are to be taken as metres. */
+      void
+      require_crs(const OGRSpatialReferenceH crs,
+                  const RasterOptions       &options,
+                  const std::string         &parameter,
+                  const std::string         &filename)
+      {
+        if (crs == nullptr && !options.assume_metric)
+          throw InputError(parameter,
+                           filename,
+                           "a raster with a coordinate reference system (this one has none: "
+                           "set 'Raster without CRS = metric' to take its coordinates as "
+                           "metres)");
+      }
+
+
+
+      /**
+       * The pixel size [m] of the warp of a raster of geotransform @p gt in @p crs centred at
+       * @p centre: no larger than the source's smallest side in metres. Bilinear resampling
+       * onto a coarser grid averages (GDAL widens the kernel) and bends even a field linear
+       * in degrees by 0.1 % of its relief; onto a finer one it keeps it.
+       */
+      double
+      warp_resolution(const double               gt[6],
+                      const OGRSpatialReferenceH crs,
+                      const dealii::Point<2>    &centre)
+      {
+        double resolution = std::min(gt[1], std::abs(gt[5]));
+        if (OSRIsGeographic(crs))
+          {
+            const double metres_per_degree = M_PI / 180. * 6371000.;
+            resolution = std::min(gt[1] * metres_per_degree * std::cos(centre[1] * M_PI / 180.),
+                                  std::abs(gt[5]) * metres_per_degree);
+          }
+        return resolution;
+      }
     } // namespace
 
 
@@ -117,87 +158,17 @@ namespace slidewave
       // A constructor that throws runs no destructor: what is open is closed here.
       try
         {
-          GDALAllRegister();
-          // GDAL's own diagnosis goes to stderr otherwise; the InputError says what is wrong.
-          CPLPushErrorHandler(CPLQuietErrorHandler);
-          // ESRI ASCII grids are read as 32-bit floats unless asked otherwise.
-          CPLSetThreadLocalConfigOption("AAIGRID_DATATYPE", "Float64");
-          source = GDALOpen(filename.c_str(), GA_ReadOnly);
-          CPLPopErrorHandler();
-          if (source == nullptr)
-            throw InputError(parameter,
-                             filename,
-                             "a raster file GDAL can read (GeoTIFF, ESRI ASCII grid, ...): it "
-                             "does not exist or is not a raster");
-          ++n_opens;
-          if (GDALGetRasterCount(source) < 1)
-            throw InputError(parameter, filename, "a raster with at least one band");
+          open();
           double gt[6];
-          if (GDALGetGeoTransform(source, gt) != CE_None)
-            throw InputError(parameter,
-                             filename,
-                             "a georeferenced raster (this one has no geotransform)");
-          if (gt[2] != 0. || gt[4] != 0. || !(gt[1] > 0.))
-            throw InputError(parameter,
-                             filename,
-                             "a north-up raster (this one is rotated or sheared)");
+          read_geotransform(gt);
           const OGRSpatialReferenceH crs = GDALGetSpatialRef(source);
-          if (crs == nullptr && !options.assume_metric)
-            throw InputError(parameter,
-                             filename,
-                             "a raster with a coordinate reference system (this one has none: "
-                             "set 'Raster without CRS = metric' to take its coordinates as "
-                             "metres)");
+          require_crs(crs, options, parameter, filename);
           // x = longitude in GDAL's traditional order of a geotransform.
           const dealii::Point<2> centre(gt[0] + 0.5 * gt[1] * GDALGetRasterXSize(source),
                                         gt[3] + 0.5 * gt[5] * GDALGetRasterYSize(source));
           const std::string      target_wkt = target_crs(crs, centre, options, parameter, filename);
           if (!target_wkt.empty())
-            {
-              // Pixels no larger than the source's smallest side in metres: bilinear
-              // resampling onto a coarser grid averages (GDAL widens the kernel) and bends
-              // even a field linear in degrees by 0.1 % of its relief; onto a finer one it
-              // keeps it.
-              double resolution = std::min(gt[1], std::abs(gt[5]));
-              if (OSRIsGeographic(crs))
-                {
-                  const double metres_per_degree = M_PI / 180. * 6371000.;
-                  resolution
-                    = std::min(gt[1] * metres_per_degree * std::cos(centre[1] * M_PI / 180.),
-                               std::abs(gt[5]) * metres_per_degree);
-                }
-              const std::string         res       = std::to_string(resolution);
-              std::vector<const char *> arguments = {"-of",
-                                                     "MEM",
-                                                     "-t_srs",
-                                                     target_wkt.c_str(),
-                                                     "-r",
-                                                     options.resampling.c_str(),
-                                                     "-et",
-                                                     "0",
-                                                     "-tr",
-                                                     res.c_str(),
-                                                     res.c_str(),
-                                                     // Outside the source (the wedges a
-                                                     // reprojection opens at the corners):
-                                                     // no-data, refused under the domain.
-                                                     "-dstnodata",
-                                                     "-3.4e38",
-                                                     nullptr};
-              GDALWarpAppOptions       *warp_options
-                = GDALWarpAppOptionsNew(const_cast<char **>(arguments.data()), nullptr);
-              CPLPushErrorHandler(CPLQuietErrorHandler);
-              int error = 0;
-              warped    = GDALWarp("", nullptr, 1, &source, warp_options, &error);
-              CPLPopErrorHandler();
-              GDALWarpAppOptionsFree(warp_options);
-              if (warped == nullptr || error != 0)
-                throw InputError(parameter,
-                                 filename,
-                                 "a raster GDAL can reproject to a metric CRS (the warper "
-                                 "refused this one)");
-              ++n_warps;
-            }
+            warp(target_wkt, warp_resolution(gt, crs, centre));
           GDALGetGeoTransform(dataset(), transform);
         }
       catch (...)
@@ -208,6 +179,79 @@ namespace slidewave
             GDALClose(source);
           throw;
         }
+    }
+
+
+
+    void
+    RasterSource::open()
+    {
+      GDALAllRegister();
+      // GDAL's own diagnosis goes to stderr otherwise; the InputError says what is wrong.
+      CPLPushErrorHandler(CPLQuietErrorHandler);
+      // ESRI ASCII grids are read as 32-bit floats unless asked otherwise.
+      CPLSetThreadLocalConfigOption("AAIGRID_DATATYPE", "Float64");
+      source = GDALOpen(filename.c_str(), GA_ReadOnly);
+      CPLPopErrorHandler();
+      if (source == nullptr)
+        throw InputError(parameter,
+                         filename,
+                         "a raster file GDAL can read (GeoTIFF, ESRI ASCII grid, ...): it "
+                         "does not exist or is not a raster");
+      ++n_opens;
+      if (GDALGetRasterCount(source) < 1)
+        throw InputError(parameter, filename, "a raster with at least one band");
+    }
+
+
+
+    void
+    RasterSource::read_geotransform(double gt[6]) const
+    {
+      if (GDALGetGeoTransform(source, gt) != CE_None)
+        throw InputError(parameter,
+                         filename,
+                         "a georeferenced raster (this one has no geotransform)");
+      if (gt[2] != 0. || gt[4] != 0. || !(gt[1] > 0.))
+        throw InputError(parameter, filename, "a north-up raster (this one is rotated or sheared)");
+    }
+
+
+
+    void
+    RasterSource::warp(const std::string &target_wkt, const double resolution)
+    {
+      const std::string         res       = std::to_string(resolution);
+      std::vector<const char *> arguments = {"-of",
+                                             "MEM",
+                                             "-t_srs",
+                                             target_wkt.c_str(),
+                                             "-r",
+                                             options.resampling.c_str(),
+                                             "-et",
+                                             "0",
+                                             "-tr",
+                                             res.c_str(),
+                                             res.c_str(),
+                                             // Outside the source (the wedges a
+                                             // reprojection opens at the corners):
+                                             // no-data, refused under the domain.
+                                             "-dstnodata",
+                                             "-3.4e38",
+                                             nullptr};
+      GDALWarpAppOptions       *warp_options
+        = GDALWarpAppOptionsNew(const_cast<char **>(arguments.data()), nullptr);
+      CPLPushErrorHandler(CPLQuietErrorHandler);
+      int error = 0;
+      warped    = GDALWarp("", nullptr, 1, &source, warp_options, &error);
+      CPLPopErrorHandler();
+      GDALWarpAppOptionsFree(warp_options);
+      if (warped == nullptr || error != 0)
+        throw InputError(parameter,
+                         filename,
+                         "a raster GDAL can reproject to a metric CRS (the warper "
+                         "refused this one)");
+      ++n_warps;
     }
 
 

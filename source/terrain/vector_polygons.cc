@@ -98,6 +98,153 @@ namespace slidewave
                            "transform from this file's)");
         return transformation;
       }
+
+
+
+      /** The vector file @p filename, opened by OGR (its diagnosis silenced); refuses a file
+       *  OGR cannot read or one without vector layers. */
+      GDALDatasetUniquePtr
+      open_vector_file(const std::string &parameter, const std::string &filename)
+      {
+        GDALAllRegister();
+        CPLPushErrorHandler(CPLQuietErrorHandler);
+        GDALDatasetUniquePtr dataset(
+          GDALDataset::Open(filename.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+        CPLPopErrorHandler();
+        if (dataset == nullptr || dataset->GetLayerCount() == 0)
+          throw InputError(parameter,
+                           filename,
+                           "a vector file OGR reads (shapefile, GeoJSON, GeoPackage, ...): it "
+                           "does not exist or holds no vector layer");
+        return dataset;
+      }
+
+
+
+      /** The layer @p layer_name of @p dataset (empty: its first); refuses an unknown name,
+       *  listing the layers there are. */
+      OGRLayer &
+      find_layer(GDALDataset       &dataset,
+                 const std::string &layer_name,
+                 const std::string &parameter,
+                 const std::string &filename)
+      {
+        OGRLayer *layer
+          = layer_name.empty() ? dataset.GetLayer(0) : dataset.GetLayerByName(layer_name.c_str());
+        if (layer == nullptr)
+          {
+            std::string names;
+            for (int i = 0; i < dataset.GetLayerCount(); ++i)
+              names += std::string(i > 0 ? ", '" : "'") + dataset.GetLayer(i)->GetName() + "'";
+            throw InputError(parameter,
+                             filename,
+                             "a file with the layer '" + layer_name + "' (its layers: " + names
+                               + ")");
+          }
+        return *layer;
+      }
+
+
+
+      /** The index of the numeric field @p attribute of @p layer, -1 when @p attribute is
+       *  empty; refuses a missing or non-numeric field. */
+      int
+      numeric_field(OGRLayer          &layer,
+                    const std::string &attribute,
+                    const std::string &parameter,
+                    const std::string &filename)
+      {
+        int field = -1;
+        if (!attribute.empty())
+          {
+            field = layer.GetLayerDefn()->GetFieldIndex(attribute.c_str());
+            if (field < 0)
+              throw InputError(parameter,
+                               filename,
+                               "a layer with the numeric field '" + attribute
+                                 + "' (this one has "
+                                   "no such field)");
+            const OGRFieldType type = layer.GetLayerDefn()->GetFieldDefn(field)->GetType();
+            if (type != OFTReal && type != OFTInteger && type != OFTInteger64)
+              throw InputError(parameter,
+                               filename,
+                               "a layer whose field '" + attribute + "' is numeric");
+          }
+        return field;
+      }
+
+
+
+      /** The value of the field @p field (named @p attribute) of @p feature, NaN when
+       *  @p field is -1; refuses a feature without a value. */
+      double
+      field_value(OGRFeature        &feature,
+                  const int          field,
+                  const std::string &attribute,
+                  const std::string &parameter,
+                  const std::string &filename)
+      {
+        double value = std::numeric_limits<double>::quiet_NaN();
+        if (field >= 0)
+          {
+            if (!feature.IsFieldSetAndNotNull(field))
+              throw InputError(parameter,
+                               filename,
+                               "a value of '" + attribute + "' on every polygon (feature "
+                                 + std::to_string(feature.GetFID()) + " has none)");
+            value = feature.GetFieldAsDouble(field);
+          }
+        return value;
+      }
+
+
+
+      /** @p geometry (of the feature @p fid) with its curves made line strings, in the
+       *  model's coordinates (@p transformation, none: as it is). */
+      std::unique_ptr<OGRGeometry>
+      linear_in_model(const OGRGeometry           &geometry,
+                      OGRCoordinateTransformation *transformation,
+                      const std::string           &parameter,
+                      const std::string           &filename,
+                      const GIntBig                fid)
+      {
+        std::unique_ptr<OGRGeometry> linear(geometry.getLinearGeometry());
+        if (transformation != nullptr && linear->transform(transformation) != OGRERR_NONE)
+          throw InputError(parameter,
+                           filename,
+                           "polygons OGR can transform to the terrain's CRS (feature "
+                             + std::to_string(fid) + " failed)");
+        return linear;
+      }
+
+
+
+      /** Appends the polygon or the parts of the multipolygon @p linear (the feature @p fid,
+       *  of value @p value) to @p out; refuses any other geometry. */
+      void
+      append_polygons(OGRGeometry                &linear,
+                      const double                value,
+                      const std::string          &parameter,
+                      const std::string          &filename,
+                      const GIntBig               fid,
+                      std::vector<VectorPolygon> &out)
+      {
+        switch (wkbFlatten(linear.getGeometryType()))
+          {
+            case wkbPolygon:
+              append_polygon(*linear.toPolygon(), value, parameter, filename, fid, out);
+              break;
+            case wkbMultiPolygon:
+              for (const OGRPolygon *part : *linear.toMultiPolygon())
+                append_polygon(*part, value, parameter, filename, fid, out);
+              break;
+            default:
+              throw InputError(parameter,
+                               filename,
+                               "a file of polygons (feature " + std::to_string(fid) + " is a "
+                                 + OGRGeometryTypeToName(linear.getGeometryType()) + ")");
+          }
+      }
     } // namespace
 
 
@@ -109,87 +256,23 @@ namespace slidewave
                   const std::string &model_crs_wkt,
                   const std::string &attribute)
     {
-      GDALAllRegister();
-      CPLPushErrorHandler(CPLQuietErrorHandler);
-      GDALDatasetUniquePtr dataset(
-        GDALDataset::Open(filename.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-      CPLPopErrorHandler();
-      if (dataset == nullptr || dataset->GetLayerCount() == 0)
-        throw InputError(parameter,
-                         filename,
-                         "a vector file OGR reads (shapefile, GeoJSON, GeoPackage, ...): it "
-                         "does not exist or holds no vector layer");
-      OGRLayer *layer
-        = layer_name.empty() ? dataset->GetLayer(0) : dataset->GetLayerByName(layer_name.c_str());
-      if (layer == nullptr)
-        {
-          std::string names;
-          for (int i = 0; i < dataset->GetLayerCount(); ++i)
-            names += std::string(i > 0 ? ", '" : "'") + dataset->GetLayer(i)->GetName() + "'";
-          throw InputError(parameter,
-                           filename,
-                           "a file with the layer '" + layer_name + "' (its layers: " + names
-                             + ")");
-        }
-      const auto transformation = to_model(*layer, model_crs_wkt, parameter, filename);
-
-      int field = -1;
-      if (!attribute.empty())
-        {
-          field = layer->GetLayerDefn()->GetFieldIndex(attribute.c_str());
-          if (field < 0)
-            throw InputError(parameter,
-                             filename,
-                             "a layer with the numeric field '" + attribute
-                               + "' (this one has "
-                                 "no such field)");
-          const OGRFieldType type = layer->GetLayerDefn()->GetFieldDefn(field)->GetType();
-          if (type != OFTReal && type != OFTInteger && type != OFTInteger64)
-            throw InputError(parameter,
-                             filename,
-                             "a layer whose field '" + attribute + "' is numeric");
-        }
+      const GDALDatasetUniquePtr dataset = open_vector_file(parameter, filename);
+      OGRLayer                  &layer   = find_layer(*dataset, layer_name, parameter, filename);
+      const auto transformation          = to_model(layer, model_crs_wkt, parameter, filename);
+      const int  field                   = numeric_field(layer, attribute, parameter, filename);
 
       std::vector<VectorPolygon> polygons;
-      layer->ResetReading();
-      for (const auto &feature : *layer)
+      layer.ResetReading();
+      for (const auto &feature : layer)
         {
           const OGRGeometry *geometry = feature->GetGeometryRef();
           if (geometry == nullptr || geometry->IsEmpty())
             continue;
           const GIntBig fid   = feature->GetFID();
-          double        value = std::numeric_limits<double>::quiet_NaN();
-          if (field >= 0)
-            {
-              if (!feature->IsFieldSetAndNotNull(field))
-                throw InputError(parameter,
-                                 filename,
-                                 "a value of '" + attribute + "' on every polygon (feature "
-                                   + std::to_string(fid) + " has none)");
-              value = feature->GetFieldAsDouble(field);
-            }
-          // Curves become line strings; then the model's coordinates.
-          std::unique_ptr<OGRGeometry> linear(geometry->getLinearGeometry());
-          if (transformation != nullptr && linear->transform(transformation.get()) != OGRERR_NONE)
-            throw InputError(parameter,
-                             filename,
-                             "polygons OGR can transform to the terrain's CRS (feature "
-                               + std::to_string(fid) + " failed)");
-          switch (wkbFlatten(linear->getGeometryType()))
-            {
-              case wkbPolygon:
-                append_polygon(*linear->toPolygon(), value, parameter, filename, fid, polygons);
-                break;
-              case wkbMultiPolygon:
-                for (const OGRPolygon *part : *linear->toMultiPolygon())
-                  append_polygon(*part, value, parameter, filename, fid, polygons);
-                break;
-              default:
-                throw InputError(parameter,
-                                 filename,
-                                 "a file of polygons (feature " + std::to_string(fid) + " is a "
-                                   + OGRGeometryTypeToName(linear->getGeometryType()) + ")");
-            }
+          const double  value = field_value(*feature, field, attribute, parameter, filename);
+          const std::unique_ptr<OGRGeometry> linear
+            = linear_in_model(*geometry, transformation.get(), parameter, filename, fid);
+          append_polygons(*linear, value, parameter, filename, fid, polygons);
         }
       if (polygons.empty())
         throw InputError(parameter, filename, "a layer with at least one polygon (it has none)");

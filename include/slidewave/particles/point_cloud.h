@@ -198,6 +198,12 @@ namespace slidewave
        *  grown): the moving points and their properties, one row each. */
       std::vector<MovingParticle> moving_particles;
       std::vector<double>         moving_data;
+
+      /** The end of relocate_within_patches() when some point on some rank changed cell:
+       *  inserts this rank's moving points in their new cells, then removes them from their
+       *  old ones, and updates the handler's counts. */
+      void
+      move_to_new_cells();
     };
 
 

@@ -118,6 +118,22 @@ namespace slidewave
       n_warped();
 
     private:
+      /** Opens the file (GDAL's own diagnosis silenced; ESRI ASCII grids read as doubles)
+       *  into source; refuses a file that is not a raster or has no band. */
+      void
+      open();
+
+      /** The geotransform of the file into @p gt; refuses a raster without one and a
+       *  rotated or sheared raster. */
+      void
+      read_geotransform(double gt[6]) const;
+
+      /** Warps the file with GDAL's warper into the in-memory dataset warped: in the CRS
+       *  @p target_wkt, onto square pixels of side @p resolution, no-data outside the
+       *  source; refuses a raster the warper refuses. */
+      void
+      warp(const std::string &target_wkt, double resolution);
+
       /** The extent of the centres of the pixels [@p c0, @p c1] x [@p r0, @p r1]
        *  (columns, rows), the pixel sizes and the CRS. */
       RasterExtent

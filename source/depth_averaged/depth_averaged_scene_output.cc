@@ -1,0 +1,267 @@
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <fstream>
+#include <slidewave/depth_averaged/depth_averaged_scene.h>
+#include <slidewave/water/dam_break_solutions.h>
+#include <sstream>
+
+// DepthAveragedScene, what it reports: the conservation and the errors against an exact
+// solution (still state, dam break), the statistics, the output files (points, point
+// tables, the grid) and, at the end, the hazard maps and the verification verdict
+// (finish()). The set-up, the steps, the guards and the checkpoints are in
+// depth_averaged_scene.cc.
+namespace slidewave
+{
+  namespace depth_averaged
+  {
+    void
+    DepthAveragedScene::record_conservation()
+    {
+      conservation           = conservation_errors();
+      max_conservation_error = std::max({max_conservation_error, conservation[0], conservation[1]});
+    }
+
+
+
+    DepthAveragedModel::StillStateErrors
+    DepthAveragedScene::still_state_errors() const
+    {
+      const auto &terrain = solver->model().terrain();
+      return solver->model().still_state_errors(solver->point_cloud(),
+                                                [&](const dealii::Point<2> &x) {
+                                                  return surface->value(x) - terrain.value(x);
+                                                });
+    }
+
+
+
+    double
+    DepthAveragedScene::dam_break_error(const double time) const
+    {
+      const water::DamBreakSolution exact(left_depth,
+                                          right_depth,
+                                          dam_position,
+                                          parameters.gravity);
+      const auto                    depth = solver->nodal_depth();
+      const auto                    area  = grid->lumped_nodal_area();
+      const auto                   &dofs  = solver->dof_handler();
+      std::vector<bool>             done(depth.locally_owned_size(), false);
+      double                        sums[2] = {0., 0.};
+      const double                  t       = time - scene.start_time;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const auto i = cell->vertex_dof_index(v, 0);
+              if (!depth.in_local_range(i))
+                continue;
+              const unsigned int local = depth.get_partitioner()->global_to_local(i);
+              if (done[local])
+                continue;
+              done[local] = true;
+              // The node's lumped area: a quarter of each cell around it.
+              const dealii::Point<2> &x = cell->vertex(v);
+              const double            a = area.local_element(local);
+              double                  h, u;
+              exact.evaluate(x[0], t, h, u);
+              sums[0] += std::abs(depth[i] - h) * a;
+              sums[1] += h * a;
+            }
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 2),
+                                  MPI_COMM_WORLD,
+                                  dealii::ArrayView<double>(sums, 2));
+      return sums[0] / sums[1];
+    }
+
+
+
+    std::array<double, 2>
+    DepthAveragedScene::conservation_errors() const
+    {
+      const auto   integrals = solver->model().integrals(solver->point_cloud());
+      const auto   nodal     = solver->nodal_totals();
+      const double scale     = integrals.mass * std::max(integrals.max_speed, 1e-300);
+      return {{std::abs(nodal[0] - integrals.mass) / integrals.mass,
+               std::max(std::abs(nodal[1] - integrals.momentum_x),
+                        std::abs(nodal[2] - integrals.momentum_y))
+                 / scale}};
+    }
+
+
+
+    void
+    DepthAveragedScene::add_statistics(Statistics &statistics, const StepInfo &info) const
+    {
+      const auto integrals = solver->model().integrals(solver->point_cloud());
+      statistics.add_value("time", info.time);
+      statistics.add_value("step", info.step);
+      statistics.add_value("dt", info.dt);
+      statistics.add_value("particles", integrals.n_particles);
+      statistics.add_value("mass", integrals.mass);
+      statistics.add_value("lost_mass", integrals.lost_mass);
+      statistics.add_value("momentum_x", integrals.momentum_x);
+      statistics.add_value("momentum_y", integrals.momentum_y);
+      statistics.add_value("kinetic_energy", integrals.kinetic_energy);
+      statistics.add_value("potential_energy", integrals.potential_energy);
+      statistics.add_value("max_speed", integrals.max_speed);
+      statistics.add_value("max_depth", integrals.max_depth);
+      statistics.add_value("max_travel", integrals.max_travel);
+      statistics.add_value("x_min", integrals.x_min);
+      statistics.add_value("x_max", integrals.x_max);
+      statistics.add_value("y_min", integrals.y_min);
+      statistics.add_value("y_max", integrals.y_max);
+      statistics.add_value("centroid_x", integrals.centroid_x);
+      statistics.add_value("centroid_y", integrals.centroid_y);
+      statistics.add_value("covered_area", integrals.covered_area);
+      statistics.add_value("load_imbalance", solver->load_imbalance());
+      if (check_conservation)
+        {
+          statistics.add_value("nodal_mass_error", conservation[0]);
+          statistics.add_value("nodal_momentum_error", conservation[1]);
+        }
+      if (exact_solution == ExactSolution::still_state)
+        {
+          const auto        errors  = still_state_errors();
+          const std::string names[] = {"h", "hu", "hv"};
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              statistics.add_value("error_" + names[i] + "_l1", errors.l1[i]);
+              statistics.add_value("error_" + names[i] + "_linf", errors.linf[i]);
+            }
+        }
+      if (exact_solution == ExactSolution::dam_break)
+        statistics.add_value("depth_error_l1", dam_break_error(info.time));
+    }
+
+
+
+    void
+    DepthAveragedScene::write_output(const unsigned int index, const double time)
+    {
+      if (scene.test_mode)
+        return;
+      dealii::TimerOutput::Scope scope(*timer, "depth averaged: output");
+      solver->model().refresh_effective_stress(solver->point_cloud());
+      particle_output.write(solver->particles(), solver->model().layout(), index, time);
+      if (write_table)
+        write_point_table(index);
+      if (write_grid)
+        {
+          using Vector         = dealii::LinearAlgebra::distributed::Vector<double>;
+          const Vector depth   = solver->nodal_depth();
+          const Vector terrain = solver->nodal_elevation();
+          Vector       level(depth);
+          level += terrain;
+          grid_output.write(solver->dof_handler(),
+                            {{"depth", &depth},
+                             {"surface", &level},
+                             {"elevation", &terrain},
+                             {"velocity_x", &solver->nodal_velocity(0)},
+                             {"velocity_y", &solver->nodal_velocity(1)}},
+                            index,
+                            time);
+        }
+    }
+
+
+
+    void
+    DepthAveragedScene::write_point_table(const unsigned int index) const
+    {
+      // Each rank's rows, gathered on rank 0, which writes the file.
+      std::ostringstream rows;
+      rows.precision(9);
+      const auto &terrain = solver->model().terrain();
+      for (const auto &particle : solver->particles())
+        {
+          const auto              p = particle.get_properties();
+          const dealii::Point<2> &x = particle.get_location();
+          rows << x[0] << ',' << x[1] << ',' << terrain.value(x) << ',' << p[property::depth] << ','
+               << p[property::velocity_x] << ',' << p[property::velocity_y] << '\n';
+        }
+      const auto all = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, rows.str(), 0);
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      char name[32];
+      std::snprintf(name, sizeof(name), "points_%05u.csv", index);
+      std::ofstream file(scene.output_directory + "/points/" + name);
+      file << "x,y,elevation,depth,velocity_x,velocity_y\n";
+      for (const auto &part : all)
+        file << part;
+    }
+
+
+
+    bool
+    DepthAveragedScene::finish(const StepInfo &info)
+    {
+      const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      if (maps)
+        {
+          maps->write(scene.output_directory + "/maps",
+                      *solver,
+                      solver->crs(),
+                      release_centre,
+                      scene.start_time);
+          if (is_writer && !scene.test_mode)
+            std::printf("Hazard maps in %s/maps\n", scene.output_directory.c_str());
+        }
+      if (exact_solution == ExactSolution::still_state)
+        {
+          const auto errors = still_state_errors();
+          max_error         = errors.linf[0];
+          if (is_writer)
+            {
+              std::printf("Still state at t = %g s (paper 001, Table 1):\n", info.time);
+              std::printf("  variable  L1          L-infinity\n");
+              const char *names[] = {"h", "hu", "hv"};
+              for (unsigned int i = 0; i < 3; ++i)
+                std::printf("  %-8s  %.3e   %.3e\n", names[i], errors.l1[i], errors.linf[i]);
+            }
+        }
+      if (exact_solution == ExactSolution::dam_break)
+        {
+          max_error = dam_break_error(info.time);
+          if (is_writer)
+            std::printf("Dam break (%s) at t = %g s: relative L1 error of the depth = %.4e\n",
+                        right_depth > 0. ? "Stoker" : "Ritter",
+                        info.time - scene.start_time,
+                        max_error);
+        }
+      bool conserved = true;
+      if (check_conservation && conservation_tolerance > 0.)
+        {
+          conserved = max_conservation_error <= conservation_tolerance;
+          if (is_writer)
+            std::printf("Largest relative difference of the nodal totals from the points' "
+                        "(mass, momentum) %s %g: %s\n",
+                        conserved ? "<=" : ">",
+                        conservation_tolerance,
+                        conserved ? "yes" : "no");
+        }
+      if (!std::isnan(symmetry_line))
+        {
+          const bool symmetric = max_asymmetry <= symmetry_tolerance;
+          conserved            = conserved && symmetric;
+          if (is_writer)
+            std::printf("Largest asymmetry about y = %g (centroid offset / cell size, "
+                        "momentum_y / (mass x speed)) %s %g: %s\n",
+                        symmetry_line,
+                        symmetric ? "<=" : ">",
+                        symmetry_tolerance,
+                        symmetric ? "yes" : "no");
+        }
+      if (exact_solution != ExactSolution::none && tolerance > 0. && is_writer)
+        std::printf("Error %.4e <= %g: %s\n",
+                    max_error,
+                    tolerance,
+                    max_error <= tolerance ? "yes" : "no");
+      std::fflush(stdout);
+      return conserved && (!(tolerance > 0.) || max_error <= tolerance);
+    }
+  } // namespace depth_averaged
+} // namespace slidewave

@@ -205,7 +205,10 @@ namespace slidewave
        * Voellmy's friction as a nodal force of at most R_i opposing the motion the node
        * would have without it: it takes |v| dt R_i / m off the speed, down to zero, never
        * past it. So friction stops a node but cannot reverse it, and a node at rest stays
-       * there while the other forces stay below R_i (static friction).
+       * there while the other forces stay below R_i (static friction). Called after the
+       * sides and walls have removed their normal components (issue 28): a wall's
+       * reaction is not motion, so it must not use up the friction (applied before, the
+       * lateral push of the depth on a wall made a slab at rest on a slope creep along it).
        */
       void
       update_nodal_velocity(const grid::NodalWorkspace &nodes,

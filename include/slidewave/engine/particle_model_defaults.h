@@ -61,7 +61,8 @@ namespace slidewave
         return f;
       }
 
-      /** After Eqs. 18–19 at a node @p i with mass @p m, before the constraints. */
+      /** After Eqs. 18–19 and the constraints (sides, walls) at a node @p i with mass @p m:
+       *  may only scale or reduce the velocity (a held component must stay zero). */
       void
       update_nodal_velocity(const grid::NodalWorkspace & /*nodes*/,
                             unsigned int /*i*/,

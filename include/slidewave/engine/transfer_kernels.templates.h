@@ -178,15 +178,23 @@ namespace slidewave
                       velocity[d].local_element(i)     = 0.;
                     }
                 }
-              // What the model does at a node with mass after the update (friction
-              // that stops the node but never reverses it).
-              if (m > tiny)
-                model.update_nodal_velocity(
-                  nodes, i, m, dt, velocity[0].local_element(i), velocity[1].local_element(i));
             }
         }
       constraints.apply(velocity[0], velocity[1]);
       constraints.apply(velocity_old[0], velocity_old[1]);
+      // What the model does at a node with mass once the walls have taken their share
+      // (friction that stops the node but never reverses it): after the constraints, so
+      // that a wall's reaction is not counted as motion the friction must stop. A model's
+      // hook only scales or reduces the velocity it is given, so a held component stays
+      // zero.
+      if (settings.prescribed_velocity == nullptr)
+        for (const unsigned int i : nodes.active())
+          {
+            const double m = nodes.nodal_mass.local_element(i);
+            if (m > tiny)
+              model.update_nodal_velocity(
+                nodes, i, m, dt, velocity[0].local_element(i), velocity[1].local_element(i));
+          }
       lap(core::StepTimeline::grid_update);
       for (unsigned int d = 0; d < 2; ++d)
         {

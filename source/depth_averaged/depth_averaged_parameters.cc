@@ -5,6 +5,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/depth_averaged_parameters.h>
 #include <slidewave/grid/grid_extent.h>
+#include <slidewave/terrain/crs.h>
 #include <sstream>
 
 namespace slidewave
@@ -197,6 +198,17 @@ namespace slidewave
                             "The projected CRS a raster in degrees is reprojected to, as GDAL "
                             "reads it (e.g. 'EPSG:32632'); empty: the UTM zone of the raster's "
                             "centre.");
+          prm.declare_entry("Coordinates CRS",
+                            "",
+                            Anything(),
+                            "The projected CRS of the model's x, y when the terrain has none "
+                            "(an expression, a table, a raster read with 'Raster without CRS = "
+                            "metric'), as GDAL reads it (e.g. 'EPSG:32616'): a release file or "
+                            "depth raster in another CRS is then reprojected to it, and the "
+                            "hazard maps carry it. Empty: the model's coordinates have no CRS, "
+                            "and a release file or depth raster that has one is refused. A "
+                            "terrain raster with its own CRS needs none (if given, it must be "
+                            "the raster's).");
           prm.declare_entry("Table file",
                             "",
                             Anything(),
@@ -394,6 +406,9 @@ namespace slidewave
           parameters.elevation_raster.clear();
           parameters.raster_options.assume_metric = prm.get("Raster without CRS") == "metric";
           parameters.raster_options.target_crs    = dealii::Utilities::trim(prm.get("Target CRS"));
+          parameters.coordinates_crs_wkt
+            = terrain::projected_crs_wkt(path + "/Terrain/Coordinates CRS",
+                                         dealii::Utilities::trim(prm.get("Coordinates CRS")));
           if (parameters.grid_from_raster && prm.get("Source") != "raster")
             throw InputError(path + "/Grid/Extent",
                              "terrain raster",

@@ -7,6 +7,7 @@
 #include <optional>
 #include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/depth_averaged_solver.h>
+#include <slidewave/terrain/crs.h>
 #include <slidewave/terrain/elevation_table.h>
 #include <slidewave/terrain/raster_terrain.h>
 
@@ -78,6 +79,26 @@ namespace slidewave
         return settings;
       }
 
+      /** The CRS of the model's coordinates: the terrain raster's, else 'Terrain/
+       *  Coordinates CRS' ("" for none); both given and different is refused. */
+      std::string
+      model_crs_of(const DepthAveragedParameters &prm)
+      {
+        const std::string raster_crs
+          = prm.terrain_raster == nullptr ? std::string() : prm.terrain_raster->extent().crs_wkt;
+        if (prm.coordinates_crs_wkt.empty())
+          return raster_crs;
+        if (raster_crs.empty())
+          return prm.coordinates_crs_wkt;
+        if (!terrain::same_crs(raster_crs, prm.coordinates_crs_wkt))
+          throw InputError("Depth averaged/Terrain/Coordinates CRS",
+                           terrain::crs_name(prm.coordinates_crs_wkt),
+                           "empty, or the terrain raster's own CRS, "
+                             + terrain::crs_name(raster_crs)
+                             + " (the raster defines the model's coordinates)");
+        return raster_crs;
+      }
+
       /** No rigid walls in a depth-averaged scene. */
       const std::vector<grid::RigidWall> no_walls;
     } // namespace
@@ -87,8 +108,7 @@ namespace slidewave
     DepthAveragedSolver::DepthAveragedSolver(const DepthAveragedParameters &parameters,
                                              grid::BackgroundGrid          &grid)
       : prm(with_terrain_raster(parameters))
-      , model_crs(prm.terrain_raster == nullptr ? std::string() :
-                                                  prm.terrain_raster->extent().crs_wkt)
+      , model_crs(model_crs_of(prm))
       , elevation(sample_terrain(prm))
       , release(prm, elevation, model_crs)
       , flow(prm, elevation)

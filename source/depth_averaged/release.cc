@@ -2,6 +2,7 @@
 #include <cmath>
 #include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/release.h>
+#include <slidewave/terrain/crs.h>
 #include <slidewave/terrain/raster_source.h>
 #include <slidewave/terrain/vector_polygons.h>
 #include <sstream>
@@ -113,8 +114,16 @@ namespace slidewave
           options.window_name            = "the release area";
           // One opening (and warp) for the extent and the values.
           const terrain::RasterSource raster(path + "/Depth raster", prm.depth_raster, options);
-          const auto                  extent  = raster.extent();
-          const double                half[2] = {0.5 * extent.pixel_x, 0.5 * extent.pixel_y};
+          const auto                  extent = raster.extent();
+          if (model_crs_wkt.empty() && !extent.crs_wkt.empty())
+            throw InputError(path + "/Depth raster",
+                             prm.depth_raster,
+                             "a raster in the model's coordinates: this one has a CRS ("
+                               + terrain::crs_name(extent.crs_wkt)
+                               + ") and the terrain has none to reproject it to (set "
+                                 "'Terrain/Coordinates CRS' to the CRS of the model's x, y, or "
+                                 "use a terrain raster with a CRS)");
+          const double half[2] = {0.5 * extent.pixel_x, 0.5 * extent.pixel_y};
           for (unsigned int d = 0; d < 2; ++d)
             {
               if (lower[d] < extent.lower[d] && lower[d] >= extent.lower[d] - half[d])

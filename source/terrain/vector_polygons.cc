@@ -69,16 +69,17 @@ namespace slidewave
           return nullptr;
         if (model_crs_wkt.empty())
           {
-            if (own->IsGeographic())
-              throw InputError(parameter,
-                               filename,
-                               "polygons in metres: this file is in degrees ("
-                                 + std::string(own->GetName() != nullptr ? own->GetName() :
-                                                                           "a geographic CRS")
-                                 + ") and the terrain has no CRS to reproject it to (use a "
-                                   "raster terrain, or a file in the model's metric "
-                                   "coordinates)");
-            return nullptr;
+            // Two sets of coordinates, one with a CRS and one without, cannot be matched:
+            // taking the file's as the model's would be a guess.
+            const std::string name = own->GetName() != nullptr ? own->GetName() : "unnamed";
+            throw InputError(parameter,
+                             filename,
+                             "polygons in the model's coordinates: this file has a CRS (" + name
+                               + (own->IsGeographic() ? ", in degrees" : "")
+                               + ") and the terrain has none to reproject it to (set "
+                                 "'Terrain/Coordinates CRS' to the CRS of the model's x, y, "
+                                 "use a terrain raster with a CRS, or a file without a CRS: a "
+                                 "shapefile without .prj)");
           }
         OGRSpatialReference source(*own), target;
         source.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);

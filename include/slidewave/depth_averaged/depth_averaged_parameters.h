@@ -86,6 +86,9 @@ namespace slidewave
        *  coordinates are taken; empty: not a raster. */
       std::string            elevation_raster;
       terrain::RasterOptions raster_options;
+      /** 'Terrain/Coordinates CRS' as WKT: the CRS of the model's coordinates when the
+       *  terrain has none ("": none). */
+      std::string coordinates_crs_wkt;
       /** The terrain raster, opened (and warped) once for the whole set-up and shared:
        *  by the scene when 'Extent = terrain raster' asks it for its footprint, else by
        *  the solver, which takes its CRS and elevations from it and lets it go; null until

@@ -8,6 +8,7 @@
 #include <slidewave/app/application.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parameter_documentation.h>
+#include <slidewave/core/scene_file_check.h>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/coupling/coupled_scene.h>
 #include <slidewave/depth_averaged/depth_averaged_scene.h>
@@ -308,6 +309,9 @@ namespace slidewave
                      std::ostream             &err)
     {
       declare_all_parameters(prm);
+      // What deal.II would crash on or silently accept (include loops, a parameter set
+      // twice, a byte-order mark): an InputError naming the file and the line.
+      core::check_scene_file(input_file);
       try
         {
           prm.parse_input(input_file,

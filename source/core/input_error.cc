@@ -5,10 +5,27 @@
 
 namespace slidewave
 {
+  namespace
+  {
+    /** @p value as a message shows it: whole up to 200 characters, else its start and its
+     *  length (a 10 MB expression is not echoed back). */
+    std::string
+    shown(const std::string &value)
+    {
+      constexpr std::size_t longest = 200;
+      if (value.size() <= longest)
+        return value;
+      return value.substr(0, 120) + "... (" + std::to_string(value.size()) + " characters)";
+    }
+  } // namespace
+
+
+
   InputError::InputError(const std::string &parameter,
                          const std::string &value,
                          const std::string &allowed)
-    : std::runtime_error("parameter '" + parameter + "' = '" + value + "': allowed: " + allowed)
+    : std::runtime_error("parameter '" + shown(parameter) + "' = '" + shown(value)
+                         + "': allowed: " + allowed)
     , parameter(parameter)
     , value(value)
     , allowed(allowed)

@@ -23,7 +23,8 @@ namespace slidewave
 
     /** The full path of the offending parameter, subsections separated by '/'. */
     const std::string parameter;
-    /** The value as given. */
+    /** The value as given (the message shows at most its first 120 characters when it is
+     *  longer than 200). */
     const std::string value;
     /** What would have been accepted. */
     const std::string allowed;

@@ -1,10 +1,9 @@
 #include <deal.II/base/utilities.h>
-#include <slidewave/core/input_error.h>
-#include <slidewave/core/scene_file_check.h>
-
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/scene_file_check.h>
 #include <sstream>
 
 namespace slidewave
@@ -18,8 +17,8 @@ namespace slidewave
       std::string
       identity(const std::string &filename)
       {
-        std::error_code  error;
-        const auto canonical = std::filesystem::weakly_canonical(filename, error);
+        std::error_code error;
+        const auto      canonical = std::filesystem::weakly_canonical(filename, error);
         return error ? filename : canonical.string();
       }
 

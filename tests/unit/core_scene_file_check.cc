@@ -76,8 +76,8 @@ main(int argc, char **argv)
   write("b.prm", "set Physics = water\ninclude " + directory + "/a.prm\n");
   check(refuses(directory + "/a.prm"), "two files that include each other are refused");
 
-  check(refuses(write("twice.prm",
-                      "set Physics = depth averaged\n# a comment\nset Physics = water\n")),
+  check(refuses(
+          write("twice.prm", "set Physics = depth averaged\n# a comment\nset Physics = water\n")),
         "'set Physics' twice is refused, naming lines 1 and 3");
   check(refuses(write("subsection_twice.prm",
                       "subsection Time\n  set End time = 1\nend\n"
@@ -86,8 +86,9 @@ main(int argc, char **argv)
   check(refuses(write("bom.prm", "\xEF\xBB\xBFset Physics = water\n")),
         "a UTF-8 byte-order mark is refused, saying what it is");
 
-  const std::string base = write("base.prm", "set Physics = water\nsubsection Time\n"
-                                             "  set End time = 1\nend\n");
+  const std::string base = write("base.prm",
+                                 "set Physics = water\nsubsection Time\n"
+                                 "  set End time = 1\nend\n");
   check(!refuses(write("override.prm",
                        "include " + base + "\nsubsection Time\n  set End time = 2\nend\n")),
         "setting again what an included file set is allowed (an override)");

@@ -96,3 +96,23 @@ def retry_once(run, exe, wait_s):
         time.sleep(2)
         r = run()
     return r
+
+
+def interleaved_pairs(run, pairs):
+    """Runs ``run(which)`` for the two builds, "base" and "new", ``pairs`` times, the order
+    alternating from pair to pair (base new, new base, ...) so that a drift of the machine
+    within a pair favours neither. ``run`` returns its result, or None when the run failed
+    (that pair is then dropped). Returns ([(pair, order, {which: result})], failed)."""
+    done, failed = [], False
+    for pair in range(pairs):
+        order = ("base", "new") if pair % 2 == 0 else ("new", "base")
+        results = {}
+        for which in order:
+            result = run(which)
+            if result is None:
+                failed = True
+                break
+            results[which] = result
+        if len(results) == 2:
+            done.append((pair, "-".join(order), results))
+    return done, failed

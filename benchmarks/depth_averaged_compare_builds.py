@@ -7,8 +7,8 @@ function and cell size, the two executables run as interleaved pairs.
 The companion of ``mpm_compare_builds.py`` (the soil): a refactoring of the engine must not
 cost the depth-averaged model speed either. Each pair runs the two builds back to back, the
 order alternating from pair to pair (A B, B A, ...), so that a drift of the machine within a
-pair favours neither. Per case it prints the median 'depth averaged: advance' wall time of
-each build, the median of the per-pair ratios new/base and the ratio of the medians (> 1:
+pair favours neither (``benchmark_common.interleaved_pairs``). Per case it prints the median
+'depth averaged: advance' wall time of each build, the median of the per-pair ratios new/base and the ratio of the medians (> 1:
 the new build is slower).
 
 Usage::
@@ -26,7 +26,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from benchmark_common import write_csv  # noqa: E402
+from benchmark_common import interleaved_pairs, write_csv  # noqa: E402
 from depth_averaged_throughput import (END_TIME, REPO, run_once,  # noqa: E402
                                        settings_for)
 
@@ -61,30 +61,26 @@ def main(argv=None):
         for shape in parse_list(args.shapes):
             for ranks in parse_list(args.ranks, int):
                 _, settings = settings_for(cell, 4, END_TIME, shape, False)
-                times, ratios, columns, steps = {"base": [], "new": []}, [], None, None
-                for pair in range(args.pairs):
-                    order = ("base", "new") if pair % 2 == 0 else ("new", "base")
-                    result = {}
-                    for which in order:
-                        r = run_once(executables[which], args.prm, settings, ranks,
-                                     args.mpirun)
-                        if r["status"] != "ok":
-                            print(f"{which} {shape} {cell}: {r['status']}")
-                            failed = True
-                            break
-                        result[which] = r["advance_wall_s"]
-                        columns, steps = r["columns"], r["steps"]
-                    if len(result) < 2:
-                        continue
-                    for which in result:
-                        times[which].append(result[which])
-                    ratios.append(result["new"] / result["base"])
+                def run(which):
+                    r = run_once(executables[which], args.prm, settings, ranks, args.mpirun)
+                    if r["status"] != "ok":
+                        print(f"{which} {shape} {cell}: {r['status']}")
+                        return None
+                    return r
+                done, any_failed = interleaved_pairs(run, args.pairs)
+                failed = failed or any_failed
+                times = {which: [results[which]["advance_wall_s"] for _, _, results in done]
+                         for which in ("base", "new")}
+                ratios = [n / b for b, n in zip(times["base"], times["new"])]
+                columns = done[-1][2]["new"]["columns"] if done else None
+                steps = done[-1][2]["new"]["steps"] if done else None
+                for (pair, order, results), ratio in zip(done, ratios):
                     rows.append({"shape": shape, "ranks": ranks, "cell_size": cell,
                                  "columns": columns, "steps": steps, "pair": pair,
-                                 "order": "-".join(order),
-                                 "base_advance_s": f"{result['base']:.4f}",
-                                 "new_advance_s": f"{result['new']:.4f}",
-                                 "ratio": f"{ratios[-1]:.4f}"})
+                                 "order": order,
+                                 "base_advance_s": f"{results['base']['advance_wall_s']:.4f}",
+                                 "new_advance_s": f"{results['new']['advance_wall_s']:.4f}",
+                                 "ratio": f"{ratio:.4f}"})
                 if not ratios:
                     continue
                 base_median = statistics.median(times["base"])

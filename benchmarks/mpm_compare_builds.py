@@ -25,7 +25,7 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from benchmark_common import write_csv  # noqa: E402
+from benchmark_common import interleaved_pairs, write_csv  # noqa: E402
 from mpm_throughput import (MATERIALS, REPO, SHAPES, SIZES,  # noqa: E402
                             column_collapse_settings, run_slidewave)
 
@@ -68,32 +68,26 @@ def main(argv=None):
             for material in parse_list(args.materials):
                 for ranks in parse_list(args.ranks, int):
                     _, settings = column_collapse_settings(cell, steps, shape, material)
-                    times = {"base": [], "new": []}
-                    ratios = []
-                    particles = None
-                    for pair in range(args.pairs):
-                        order = ("base", "new") if pair % 2 == 0 else ("new", "base")
-                        result = {}
-                        for which in order:
-                            r = run_slidewave(executables[which], args.prm, settings, ranks,
-                                              args.mpirun)
-                            if r["status"] != "ok":
-                                print(f"{which} {shape} {material}: {r['status']}")
-                                failed = True
-                                break
-                            result[which] = r["advance_wall_s"]
-                            particles = r["particles"]
-                        if len(result) < 2:
-                            continue
-                        for which in result:
-                            times[which].append(result[which])
-                        ratios.append(result["new"] / result["base"])
+                    def run(which):
+                        r = run_slidewave(executables[which], args.prm, settings, ranks,
+                                          args.mpirun)
+                        if r["status"] != "ok":
+                            print(f"{which} {shape} {material}: {r['status']}")
+                            return None
+                        return r
+                    done, any_failed = interleaved_pairs(run, args.pairs)
+                    failed = failed or any_failed
+                    times = {which: [results[which]["advance_wall_s"] for _, _, results in done]
+                             for which in ("base", "new")}
+                    ratios = [n / b for b, n in zip(times["base"], times["new"])]
+                    particles = done[-1][2]["new"]["particles"] if done else None
+                    for (pair, order, results), ratio in zip(done, ratios):
                         rows.append({"shape": shape, "material": material, "ranks": ranks,
                                      "particles": particles, "steps": steps, "pair": pair,
-                                     "order": "-".join(order),
-                                     "base_advance_s": f"{result['base']:.4f}",
-                                     "new_advance_s": f"{result['new']:.4f}",
-                                     "ratio": f"{ratios[-1]:.4f}"})
+                                     "order": order,
+                                     "base_advance_s": f"{results['base']['advance_wall_s']:.4f}",
+                                     "new_advance_s": f"{results['new']['advance_wall_s']:.4f}",
+                                     "ratio": f"{ratio:.4f}"})
                     if not ratios:
                         continue
                     base_median = statistics.median(times["base"])

@@ -8,8 +8,8 @@ The companion of ``mpm_compare_builds.py`` (the soil): a refactoring of the engi
 cost the depth-averaged model speed either. Each pair runs the two builds back to back, the
 order alternating from pair to pair (A B, B A, ...), so that a drift of the machine within a
 pair favours neither (``benchmark_common.interleaved_pairs``). Per case it prints the median
-'depth averaged: advance' wall time of each build, the median of the per-pair ratios new/base and the ratio of the medians (> 1:
-the new build is slower).
+'depth averaged: advance' wall time of each build, the median of the per-pair ratios
+new/base and the ratio of the medians (> 1: the new build is slower).
 
 Usage::
 

@@ -86,11 +86,11 @@ namespace slidewave
 
 
     void
-    BackgroundGrid::load(const std::string &prefix, const std::function<void()> &before_load)
+    BackgroundGrid::load(const std::string &prefix)
     {
       create_coarse_grid();
-      if (before_load)
-        before_load();
+      for (GridFollower *follower : followers)
+        follower->before_checkpoint_load();
       tria.load(prefix);
       distribute_dofs();
       for (GridFollower *follower : followers)

@@ -86,8 +86,9 @@ namespace slidewave
     void
     ParticleEngine<Model>::load(const std::string &prefix)
     {
-      // The particle handler lives on the coarse grid before the cells are read.
-      grid.load(prefix, [this]() { cloud.initialize(); });
+      // The point cloud initializes its particle handler on the coarse grid
+      // (before_checkpoint_load), before the cells are read.
+      grid.load(prefix);
     }
 
 

@@ -6,7 +6,6 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/la_parallel_vector.h>
-#include <functional>
 #include <set>
 #include <slidewave/grid/grid_follower.h>
 #include <string>
@@ -82,13 +81,12 @@ namespace slidewave
       create();
 
       /**
-       * Resume: the coarse grid, then the cells written by save() under @p prefix (on any
-       * number of ranks), the dofs, every follower's grid_ready() and then its
-       * checkpoint_loaded(), in attach order. @p before_load is called once the coarse
-       * grid exists, before the cells are read (a particle handler is initialized there).
+       * Resume: the coarse grid, every follower's before_checkpoint_load(), then the cells
+       * written by save() under @p prefix (on any number of ranks), the dofs, every
+       * follower's grid_ready() and then its checkpoint_loaded(), in attach order.
        */
       void
-      load(const std::string &prefix, const std::function<void()> &before_load = {});
+      load(const std::string &prefix);
 
       /** Writes the cells and every follower's data (prepare_for_checkpoint, in attach
        *  order) under @p prefix (collective). */

@@ -70,6 +70,13 @@ namespace slidewave
       {
       }
 
+      /** Before the grid reads a checkpoint, once its coarse cells exist: register what
+       *  must receive data attached to the cells (a particle handler). */
+      virtual void
+      before_checkpoint_load()
+      {
+      }
+
       /** After the grid read a checkpoint and grid_ready() was called: take back the data
        *  prepare_for_checkpoint() attached (in the same order among the followers). */
       virtual void

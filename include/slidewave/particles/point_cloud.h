@@ -132,6 +132,13 @@ namespace slidewave
       void
       prepare_for_checkpoint() override;
 
+      /** The particle handler on the coarse grid, before the cells are read. */
+      void
+      before_checkpoint_load() override
+      {
+        initialize();
+      }
+
       /** Takes the points back from the cells after the grid was loaded. */
       void
       checkpoint_loaded() override;

@@ -12,6 +12,7 @@
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/coupling/coupled_scene.h>
 #include <slidewave/depth_averaged/depth_averaged_scene.h>
+#include <slidewave/fluid/free_surface_scene.h>
 #include <slidewave/soil/material_point_scene.h>
 #include <slidewave/water/water_scene.h>
 #include <sstream>
@@ -348,6 +349,8 @@ namespace slidewave
           case Physics::depth_averaged:
             return run_scene<depth_averaged::DepthAveragedScene>(
               scene, prm, validate_only, input_file, out);
+          case Physics::free_surface_flow:
+            return run_scene<fluid::FreeSurfaceScene>(scene, prm, validate_only, input_file, out);
           case Physics::none:
             break;
         }
@@ -399,6 +402,7 @@ namespace slidewave
     soil::MaterialPointScene::declare_parameters(prm);
     coupling::CoupledScene::declare_parameters(prm);
     depth_averaged::DepthAveragedScene::declare_parameters(prm);
+    fluid::FreeSurfaceScene::declare_parameters(prm);
   }
 
 

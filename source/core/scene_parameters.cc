@@ -102,7 +102,7 @@ namespace slidewave
 
     prm.declare_entry("Physics",
                       "none",
-                      Selection("none|shallow water|material points|coupled|depth averaged"),
+                      Selection("none|shallow water|material points|coupled|depth averaged|free surface flow"),
                       "The physics this scene switches on. 'shallow water': the 1D "
                       "well-balanced finite-volume water column of paper 000 (subsection "
                       "'Shallow water'). 'material points': the 2D plane-strain material "
@@ -111,8 +111,10 @@ namespace slidewave
                       "loading the soil (paper 000, Algorithm 1; subsections 'Material "
                       "points', 'Shallow water' and 'Coupling'). 'depth averaged': the "
                       "depth-averaged material point method for flow-like landslides over "
-                      "a terrain of paper 001 (subsection 'Depth averaged'). A scene must "
-                      "choose one.");
+                      "a terrain of paper 001 (subsection 'Depth averaged'). 'free surface "
+                      "flow': water and air by stabilized finite elements with a phase-field "
+                      "surface on the background grid, paper 002's fluid (subsection 'Free "
+                      "surface flow'). A scene must choose one.");
     prm.declare_entry("Output directory",
                       "",
                       dealii::Patterns::Anything(),
@@ -150,11 +152,13 @@ namespace slidewave
       physics = Physics::coupled;
     else if (physics_name == "depth averaged")
       physics = Physics::depth_averaged;
+    else if (physics_name == "free surface flow")
+      physics = Physics::free_surface_flow;
     else
       throw InputError("Physics",
                        physics_name,
                        "one of 'shallow water', 'material points', 'coupled', 'depth "
-                       "averaged' (a scene must choose its physics)");
+                       "averaged', 'free surface flow' (a scene must choose its physics)");
 
     scene_directory  = std::filesystem::path(input_file).parent_path().string();
     output_directory = prm.get("Output directory");

@@ -11,10 +11,44 @@ namespace slidewave
   namespace grid
   {
     FiniteElementField::FiniteElementField(BackgroundGrid &grid)
-      : grid(grid)
-      , fe(1)
+      : FiniteElementField(grid, dealii::FE_Q<2>(1), 1)
     {
+    }
+
+
+
+    FiniteElementField::FiniteElementField(BackgroundGrid                 &grid,
+                                           const dealii::FiniteElement<2> &element,
+                                           const unsigned int              n_states)
+      : grid(grid)
+      , fe(element.clone())
+      , owned_values(n_states)
+      , ghosted_values(n_states)
+    {
+      Assert(n_states > 0, dealii::ExcMessage("A field keeps at least one state."));
       grid.attach(*this);
+    }
+
+
+
+    std::vector<const FiniteElementField::VectorType *>
+    FiniteElementField::ghosted_pointers() const
+    {
+      std::vector<const VectorType *> pointers;
+      for (const auto &v : ghosted_values)
+        pointers.push_back(&v);
+      return pointers;
+    }
+
+
+
+    std::vector<FiniteElementField::VectorType *>
+    FiniteElementField::owned_pointers()
+    {
+      std::vector<VectorType *> pointers;
+      for (auto &v : owned_values)
+        pointers.push_back(&v);
+      return pointers;
     }
 
 
@@ -22,7 +56,7 @@ namespace slidewave
     void
     FiniteElementField::setup_dofs()
     {
-      dofs.distribute_dofs(fe);
+      dofs.distribute_dofs(*fe);
       owned_dofs = dofs.locally_owned_dofs();
       dealii::DoFTools::extract_locally_relevant_dofs(dofs, relevant_dofs);
 
@@ -32,28 +66,30 @@ namespace slidewave
       hanging_node_constraints.close();
 
       const MPI_Comm communicator = grid.communicator();
-      owned_values.reinit(owned_dofs, communicator);
-      ghosted_values.reinit(owned_dofs, relevant_dofs, communicator);
+      for (auto &v : owned_values)
+        v.reinit(owned_dofs, communicator);
+      for (auto &v : ghosted_values)
+        v.reinit(owned_dofs, relevant_dofs, communicator);
     }
 
 
 
     void
-    FiniteElementField::interpolate(const dealii::Function<2> &function)
+    FiniteElementField::interpolate(const dealii::Function<2> &function, const unsigned int state)
     {
-      dealii::VectorTools::interpolate(dofs, function, owned_values);
-      values_changed();
+      dealii::VectorTools::interpolate(dofs, function, owned_values[state]);
+      values_changed(state);
     }
 
 
 
     void
-    FiniteElementField::values_changed()
+    FiniteElementField::values_changed(const unsigned int state)
     {
       // The value at a hanging node is the one of the coarse side's edge: without it the
       // field would jump across the edge (and a transfer would carry the jump along).
-      hanging_node_constraints.distribute(owned_values);
-      ghosted_values = owned_values;
+      hanging_node_constraints.distribute(owned_values[state]);
+      ghosted_values[state] = owned_values[state];
     }
 
 
@@ -62,8 +98,10 @@ namespace slidewave
     FiniteElementField::copy_to_grid_nodes(
       dealii::LinearAlgebra::distributed::Vector<double> &nodal) const
     {
+      Assert(fe->n_components() == 1 && fe->degree == 1,
+             dealii::ExcMessage("copy_to_grid_nodes() takes a scalar Q1 field"));
       const dealii::DoFHandler<2>                 &grid_dofs = grid.dof_handler();
-      std::vector<dealii::types::global_dof_index> field_indices(fe.n_dofs_per_cell());
+      std::vector<dealii::types::global_dof_index> field_indices(fe->n_dofs_per_cell());
       std::vector<dealii::types::global_dof_index> grid_indices(
         grid_dofs.get_fe().n_dofs_per_cell());
       AssertDimension(field_indices.size(), grid_indices.size());
@@ -79,7 +117,7 @@ namespace slidewave
             grid_cell->get_dof_indices(grid_indices);
             for (unsigned int k = 0; k < grid_indices.size(); ++k)
               if (nodal.in_local_range(grid_indices[k]))
-                nodal(grid_indices[k]) = ghosted_values[field_indices[k]];
+                nodal(grid_indices[k]) = ghosted_values[0][field_indices[k]];
           }
       nodal.update_ghost_values();
     }
@@ -87,10 +125,11 @@ namespace slidewave
 
 
     double
-    FiniteElementField::integral() const
+    FiniteElementField::integral(const unsigned int state) const
     {
+      Assert(fe->n_components() == 1, dealii::ExcMessage("integral() of a scalar field"));
       const dealii::QGauss<2> quadrature(2);
-      dealii::FEValues<2>     fe_values(fe,
+      dealii::FEValues<2>     fe_values(*fe,
                                     quadrature,
                                     dealii::update_values | dealii::update_JxW_values);
       std::vector<double>     u(quadrature.size());
@@ -99,7 +138,7 @@ namespace slidewave
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
-            fe_values.get_function_values(ghosted_values, u);
+            fe_values.get_function_values(ghosted_values[state], u);
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               sum += u[q] * fe_values.JxW(q);
           }
@@ -128,7 +167,7 @@ namespace slidewave
       // grid_changed().
       transfer
         = std::make_unique<dealii::parallel::distributed::SolutionTransfer<2, VectorType>>(dofs);
-      transfer->prepare_for_coarsening_and_refinement(ghosted_values);
+      transfer->prepare_for_coarsening_and_refinement(ghosted_pointers());
     }
 
 
@@ -141,10 +180,12 @@ namespace slidewave
       setup_dofs();
       if (transfer)
         {
-          transfer->interpolate(owned_values);
+          std::vector<VectorType *> targets = owned_pointers();
+          transfer->interpolate(targets);
           transfer.reset();
         }
-      values_changed();
+      for (unsigned int s = 0; s < n_states(); ++s)
+        values_changed(s);
     }
 
 
@@ -156,7 +197,7 @@ namespace slidewave
       // resumed on another number of ranks gets each cell's values wherever the cell lands.
       transfer
         = std::make_unique<dealii::parallel::distributed::SolutionTransfer<2, VectorType>>(dofs);
-      transfer->prepare_for_serialization(ghosted_values);
+      transfer->prepare_for_serialization(ghosted_pointers());
     }
 
 
@@ -167,9 +208,11 @@ namespace slidewave
       // grid_ready() has distributed the dofs on the cells that were read.
       transfer
         = std::make_unique<dealii::parallel::distributed::SolutionTransfer<2, VectorType>>(dofs);
-      transfer->deserialize(owned_values);
+      std::vector<VectorType *> targets = owned_pointers();
+      transfer->deserialize(targets);
       transfer.reset();
-      values_changed();
+      for (unsigned int s = 0; s < n_states(); ++s)
+        values_changed(s);
     }
 
 
@@ -179,19 +222,19 @@ namespace slidewave
     {
       // Before grid_ready() (the grid's initial adaptive levels) the field has no values:
       // it asks for nothing.
-      if (!(gradient_threshold > 0.) || ghosted_values.size() != dofs.n_dofs()
+      if (!(gradient_threshold > 0.) || ghosted_values[0].size() != dofs.n_dofs()
           || !dofs.has_active_dofs())
         return;
       // The gradient of a Q1 function is largest at one of the corners of the cell; the
       // 2x2 Gauss points see it closely enough for an indicator and cost four points.
       const dealii::QGauss<2>           quadrature(2);
-      dealii::FEValues<2>               fe_values(fe, quadrature, dealii::update_gradients);
+      dealii::FEValues<2>               fe_values(*fe, quadrature, dealii::update_gradients);
       std::vector<dealii::Tensor<1, 2>> gradients(quadrature.size());
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
-            fe_values.get_function_gradients(ghosted_values, gradients);
+            fe_values.get_function_gradients(ghosted_values[0], gradients);
             double steepest = 0.;
             for (const auto &gradient : gradients)
               steepest = std::max(steepest, gradient.norm());
@@ -209,7 +252,7 @@ namespace slidewave
       // be refined (each child weighs the same) or a parent made of coarsened children:
       // the share does not read the DoFHandler, which is out of date during the change.
       unsigned long long weight
-        = static_cast<unsigned long long>(weight_per_dof) * fe.n_dofs_per_cell();
+        = static_cast<unsigned long long>(weight_per_dof) * fe->n_dofs_per_cell();
       if (user_weight)
         weight += user_weight(cell, status);
       return weight;

@@ -19,10 +19,12 @@ namespace slidewave
   namespace grid
   {
     /**
-     * A continuous scalar finite-element field (Q1 Lagrange element) living on the
-     * background grid and following every event of its cells: the pattern a grid
-     * physics solved by finite elements (the stabilized fluid of issue 26) copies, with
-     * an FESystem in place of the scalar element.
+     * A continuous finite-element field living on the background grid and following
+     * every event of its cells: by default the scalar Q1 Lagrange element with one vector
+     * of values; a grid physics solved by finite elements gives its own element (an
+     * FESystem such as velocity and pressure of the free-surface flow) and the number of
+     * states it keeps (the values of the last steps a time scheme needs), and every state
+     * travels with the cells.
      *
      * The field has its own DoFHandler on the grid's triangulation (the grid's own Q1
      * DoFHandler belongs to the material point method and is renumbered at the grid's
@@ -51,43 +53,64 @@ namespace slidewave
       /** A user share of a cell's partitioning weight (see GridFollower::cell_weight()). */
       using CellWeight = std::function<unsigned long long(const CellIterator &, CellStatus)>;
 
-      /** A field on @p grid; attaches itself to the grid, so create it before the grid's
-       *  create() or load(). The field is zero until interpolate() or a checkpoint. */
+      /** A scalar Q1 field on @p grid; attaches itself to the grid, so create it before
+       *  the grid's create() or load(). The field is zero until interpolate() or a
+       *  checkpoint. */
       explicit FiniteElementField(BackgroundGrid &grid);
+
+      /** A field of the element @p element (copied) with @p n_states vectors of values
+       *  (state 0 the newest), all of which follow the cells. */
+      FiniteElementField(BackgroundGrid                 &grid,
+                         const dealii::FiniteElement<2> &element,
+                         unsigned int                    n_states);
 
       FiniteElementField(const FiniteElementField &) = delete;
       FiniteElementField &
       operator=(const FiniteElementField &)
         = delete;
 
-      /** Sets the field to the Q1 interpolant of @p function (nodal values), made
+      /** Sets state @p state to the interpolant of @p function (nodal values), made
        *  continuous at hanging nodes (collective). */
       void
-      interpolate(const dealii::Function<2> &function);
+      interpolate(const dealii::Function<2> &function, unsigned int state = 0);
 
-      /** The locally owned values, for a solver to write; call values_changed() after. */
+      /** The locally owned values of @p state, for a solver to write; call
+       *  values_changed() after. */
       VectorType &
-      locally_owned_values()
+      locally_owned_values(const unsigned int state = 0)
       {
-        return owned_values;
+        return owned_values[state];
       }
 
-      /** After the owned values were written: hanging nodes made conforming and the
-       *  ghosted copy updated (collective). */
-      void
-      values_changed();
-
-      /** The field's values on the locally relevant dofs (owned and ghost). */
       const VectorType &
-      values() const
+      locally_owned_values(const unsigned int state = 0) const
       {
-        return ghosted_values;
+        return owned_values[state];
       }
 
-      /** The integral of the field over the domain (2x2 Gauss points per cell, exact for
-       *  the bilinear Q1 function on the grid's square cells; collective). */
+      /** After the owned values of @p state were written: hanging nodes made conforming
+       *  and the ghosted copy updated (collective). */
+      void
+      values_changed(unsigned int state = 0);
+
+      /** The values of @p state on the locally relevant dofs (owned and ghost). */
+      const VectorType &
+      values(const unsigned int state = 0) const
+      {
+        return ghosted_values[state];
+      }
+
+      /** How many states the field keeps. */
+      unsigned int
+      n_states() const
+      {
+        return owned_values.size();
+      }
+
+      /** The integral of a scalar field over the domain (2x2 Gauss points per cell, exact
+       *  for the bilinear Q1 function on the grid's square cells; collective). */
       double
-      integral() const;
+      integral(unsigned int state = 0) const;
 
       const dealii::DoFHandler<2> &
       dof_handler() const
@@ -98,7 +121,7 @@ namespace slidewave
       const dealii::FiniteElement<2> &
       finite_element() const
       {
-        return fe;
+        return *fe;
       }
 
       /** The hanging-node constraints of the current cells. */
@@ -151,7 +174,7 @@ namespace slidewave
        * its points (its gather_fields reads the workspace's fields with the points' shape
        * weights, value and gradient). Both elements are Q1 on the same cells, so the values
        * go vertex by vertex; hanging nodes get the field's conforming value. Writes the
-       * owned entries and updates the ghosts (collective).
+       * owned entries and updates the ghosts (collective). Scalar Q1 fields only.
        */
       void
       copy_to_grid_nodes(dealii::LinearAlgebra::distributed::Vector<double> &nodal) const;
@@ -183,15 +206,22 @@ namespace slidewave
       void
       setup_dofs();
 
-      const BackgroundGrid             &grid;
-      dealii::FE_Q<2>                   fe;
-      dealii::DoFHandler<2>             dofs;
-      dealii::IndexSet                  owned_dofs, relevant_dofs;
-      dealii::AffineConstraints<double> hanging_node_constraints;
-      VectorType                        owned_values, ghosted_values;
-      double                            gradient_threshold = 0.;
-      unsigned int                      weight_per_dof     = 0;
-      CellWeight                        user_weight;
+      /** The states' vectors as deal.II's transfer takes them. */
+      std::vector<const VectorType *>
+      ghosted_pointers() const;
+
+      std::vector<VectorType *>
+      owned_pointers();
+
+      const BackgroundGrid                     &grid;
+      std::unique_ptr<dealii::FiniteElement<2>> fe;
+      dealii::DoFHandler<2>                     dofs;
+      dealii::IndexSet                          owned_dofs, relevant_dofs;
+      dealii::AffineConstraints<double>         hanging_node_constraints;
+      std::vector<VectorType>                   owned_values, ghosted_values;
+      double                                    gradient_threshold = 0.;
+      unsigned int                              weight_per_dof     = 0;
+      CellWeight                                user_weight;
       /** The values packed for the next change or checkpoint; alive until they are
        *  taken back, since deal.II calls it when the cells are written or moved. */
       std::unique_ptr<dealii::parallel::distributed::SolutionTransfer<2, VectorType>> transfer;

@@ -1,0 +1,62 @@
+#ifndef slidewave_fluid_free_surface_output_h
+#define slidewave_fluid_free_surface_output_h
+
+#include <fstream>
+#include <memory>
+#include <slidewave/fluid/free_surface_solver.h>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace slidewave
+{
+  namespace fluid
+  {
+    /**
+     * What the free-surface flow writes into OUTPUT (collective calls):
+     * - free_surface/fields_NNNNN.pvtu with velocity, pressure, phi, density and the
+     *   owning rank on the grid, listed by free_surface.pvd;
+     * - free_surface/surface_NNNNN.csv: the phi = 0.5 contour as segments x0,y0,x1,y1;
+     * - free_surface/gauges.csv: time, then the surface elevation at every gauge, every
+     *   step (the shallow water's gauge format: scripts/plot_water.py reads both).
+     */
+    class FreeSurfaceOutput
+    {
+    public:
+      FreeSurfaceOutput(std::string output_directory, std::vector<double> gauges);
+
+      /** The folder (rank 0). */
+      void
+      create_directories() const;
+
+      /** Fields and surface of output number @p index at @p time. */
+      void
+      write(const FreeSurfaceSolver &solver, bool surface, unsigned int index, double time);
+
+      /** Opens the gauge file (rank 0; with @p append it continues a resumed one). */
+      void
+      open_gauges(bool append);
+
+      /** One gauge row (collective: the elevations are reduced over the ranks). */
+      void
+      record_gauges(const FreeSurfaceSolver &solver, double time);
+
+      /** The gauge file relative to the output directory (a checkpoint keeps it). */
+      static std::string
+      gauge_file()
+      {
+        return "free_surface/gauges.csv";
+      }
+
+      /** (time, file) of every field record so far (kept by checkpoints). */
+      std::vector<std::pair<double, std::string>> files;
+
+    private:
+      std::string                    directory;
+      std::vector<double>            gauge_positions;
+      std::unique_ptr<std::ofstream> gauges;
+    };
+  } // namespace fluid
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,110 @@
+#ifndef slidewave_fluid_free_surface_scene_h
+#define slidewave_fluid_free_surface_scene_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <memory>
+#include <slidewave/core/scene_parameters.h>
+#include <slidewave/core/time_stepped_scene.h>
+#include <slidewave/fluid/free_surface_output.h>
+#include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/fluid/free_surface_solver.h>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace fluid
+  {
+    /**
+     * A scene of water and air only (Physics = free surface flow, subsection "Free
+     * surface flow"): the stabilized finite-element flow with a phase-field surface on
+     * the background grid (paper 002's fluid), its output, gauges, guards, statistics,
+     * checkpoints and verification (doc/free-surface-flow.md).
+     */
+    class FreeSurfaceScene : public TimeSteppedScene
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      FreeSurfaceScene(const SceneParameters &scene, dealii::ParameterHandler &prm);
+
+      bool
+      run();
+
+      std::string
+      timer_prefix() const override
+      {
+        return "fluid";
+      }
+
+      void
+      create_output_directories() const override;
+
+      void
+      set_up(double start_time, dealii::TimerOutput &timer) override;
+
+      std::string
+      description() const override;
+
+      void
+      start(const StepInfo &info) override;
+
+      double
+      stable_time_step() override;
+
+      void
+      advance(const StepInfo &info) override;
+
+      void
+      after_step(const StepInfo &info) override;
+
+      void
+      write_output(unsigned int index, double time) override;
+
+      void
+      add_statistics(Statistics &statistics, const StepInfo &info) const override;
+
+      bool
+      finish(const StepInfo &info) override;
+
+      std::string
+      checkpoint_signature() const override;
+
+      std::vector<std::string>
+      growing_files() const override;
+
+      void
+      save(io::CheckpointRecord &record) override;
+
+      void
+      save_data(const std::string &prefix) override;
+
+      void
+      resume(const io::CheckpointRecord &record,
+             const std::string          &prefix,
+             dealii::TimerOutput        &timer) override;
+
+    private:
+      void
+      create_solver();
+
+      /** The guards: finite fields, the speed limit, the water volume (RunFailure). */
+      void
+      check_state(const StepInfo &info) const;
+
+      const SceneParameters                &scene;
+      FreeSurfaceParameters                 parameters;
+      std::unique_ptr<grid::BackgroundGrid> grid;
+      std::unique_ptr<FreeSurfaceSolver>    solver;
+      FreeSurfaceOutput                     output;
+      dealii::TimerOutput                  *timer = nullptr;
+      FluidStepReport                       last_report;
+      /** The water volume at the start and the largest relative drift since. */
+      double initial_volume = 0., max_drift = 0.;
+    };
+  } // namespace fluid
+} // namespace slidewave
+
+#endif

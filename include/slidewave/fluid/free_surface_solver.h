@@ -1,0 +1,123 @@
+#ifndef slidewave_fluid_free_surface_solver_h
+#define slidewave_fluid_free_surface_solver_h
+
+#include <deal.II/fe/fe_system.h>
+#include <memory>
+#include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/fluid/navier_stokes_system.h>
+#include <slidewave/fluid/phase_field_system.h>
+#include <slidewave/grid/background_grid.h>
+#include <slidewave/grid/finite_element_field.h>
+#include <string>
+
+namespace slidewave
+{
+  namespace fluid
+  {
+    /** What one step of the fluid did. */
+    struct FluidStepReport
+    {
+      SolveReport flow, phase;
+      double      gamma = 0.;
+    };
+
+    /**
+     * The water and the air on the scene's background grid (paper 002's fluid): the flow
+     * field (velocity and pressure, two states), the phase field, and their two linear
+     * systems, all followers of the grid in that order, so that refinement, coarsening,
+     * repartitioning and checkpoints carry every state and rebuild every system.
+     *
+     * One step (advance()): the grid's changes when due, the phase field from phi^n to
+     * phi^{n+1} with the extrapolated velocity, then the flow with the density and
+     * viscosity of phi at t^{n+theta}. The step is any length the caller gives (at most
+     * stable_time_step()): a particle model coupled to the fluid sub-cycles its explicit
+     * steps inside one fluid step and hands its fields over at the fluid's step (issue 27).
+     */
+    class FreeSurfaceSolver
+    {
+    public:
+      /** The grid of the scene's parameters (the scene owns it). */
+      static std::unique_ptr<grid::BackgroundGrid>
+      make_grid(const FreeSurfaceParameters &parameters);
+
+      FreeSurfaceSolver(const FreeSurfaceParameters &parameters, grid::BackgroundGrid &grid);
+
+      /** Creates the grid (refined along the initial surface when adaptive) and the
+       *  initial state: water at rest, phi from the signed distance to the water. */
+      void
+      setup(double start_time);
+
+      /** Reads a checkpoint written by save() (the grid and every field). */
+      void
+      load(const std::string &prefix);
+
+      void
+      save(const std::string &prefix) const;
+
+      double
+      stable_time_step() const;
+
+      FluidStepReport
+      advance(double dt);
+
+      /** gamma = factor x max(largest speed, sqrt(|g| h)). */
+      double
+      profile_velocity() const;
+
+      double
+      max_speed() const
+      {
+        return flow_system.max_speed();
+      }
+
+      /** The integral of phi: the water's area [m^2 per m of width]. */
+      double
+      water_volume() const
+      {
+        return phase.integral();
+      }
+
+      /** Whether every value of the fields is finite (collective). */
+      bool
+      state_is_finite() const;
+
+      const grid::FiniteElementField &
+      flow_field() const
+      {
+        return flow;
+      }
+
+      const grid::FiniteElementField &
+      phase_field() const
+      {
+        return phase;
+      }
+
+      const grid::BackgroundGrid &
+      background_grid() const
+      {
+        return grid;
+      }
+
+      /** @name The state a checkpoint keeps */
+      /** @{ */
+      double       time = 0., last_dt = 0.;
+      unsigned int n_steps = 0;
+      /** @} */
+
+    private:
+      /** phi of the initial water. */
+      void
+      set_initial_state();
+
+      const FreeSurfaceParameters &parameters;
+      grid::BackgroundGrid        &grid;
+      grid::FiniteElementField     flow;
+      grid::FiniteElementField     phase;
+      NavierStokesSystem           flow_system;
+      PhaseFieldSystem             phase_system;
+    };
+  } // namespace fluid
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,114 @@
+#ifndef slidewave_fluid_navier_stokes_system_h
+#define slidewave_fluid_navier_stokes_system_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/grid/finite_element_field.h>
+#include <slidewave/grid/grid_follower.h>
+
+namespace slidewave
+{
+  namespace fluid
+  {
+    /** The two steps' lengths a time step of the fluid needs. */
+    struct StepLengths
+    {
+      /** This step and the one before it (0 at the first step: no extrapolation). */
+      double dt = 0., dt_old = 0.;
+    };
+
+    /**
+     * The weight w of the Adams-Bashforth advection velocity at t^{n+theta}:
+     * u_bar = u^n + w (u^n - u^{n-1}), w = theta dt / dt_old (paper 002, the explicit
+     * advection velocity of its Eqs. 56-57); 0 at the first step.
+     */
+    inline double
+    extrapolation_weight(const StepLengths &lengths, const double theta)
+    {
+      return lengths.dt_old > 0. ? theta * lengths.dt / lengths.dt_old : 0.;
+    }
+
+    /** What a linear solve did. */
+    struct SolveReport
+    {
+      unsigned int iterations = 0;
+      double       residual   = 0.;
+    };
+
+    /**
+     * The momentum and continuity equations of the water-air mixture on the background
+     * grid (paper 002, Eqs. 9 and 14 with no solid; discrete form Eqs. 25-31, time
+     * discretization Eqs. 56-68): equal-order Q1 velocity and pressure stabilized by SUPG
+     * and PSPG with tau_m and by the continuity (grad-div) term with tau_cont (Tezduyar's
+     * parameters, which paper 002 uses), the theta-scheme for velocity, advection and
+     * viscosity, the pressure and the continuity implicit, the advection velocity by
+     * Adams-Bashforth from the two last steps. Density and viscosity come from the phase
+     * field at t^{n+theta}.
+     *
+     * The unknowns live in the flow field (a grid::FiniteElementField with the element
+     * FESystem(Q1^2, Q1) and two states: state 0 the newest velocity and pressure, state 1
+     * the step before); this object holds the linear system and follows the grid: its
+     * constraints (hanging nodes, walls) and sparsity are rebuilt whenever the cells change
+     * (it is attached after the fields). One solve per step, GMRES with Trilinos' ILU or
+     * ML's AMG.
+     */
+    class NavierStokesSystem : public grid::GridFollower
+    {
+    public:
+      using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+
+      NavierStokesSystem(grid::BackgroundGrid           &grid,
+                         grid::FiniteElementField       &flow,
+                         const grid::FiniteElementField &phase,
+                         const FreeSurfaceParameters    &parameters);
+
+      /**
+       * One step: assembles with the flow's states (u^n, u^{n-1}), the phase field before
+       * the step @p phase_old (ghosted, the phase field's dofs) and after it (the phase
+       * field's state 0), solves for u^{n+1}, p^{n+1}, and shifts the flow's states
+       * (collective). Throws RunFailure when GMRES does not converge.
+       */
+      SolveReport
+      step(const VectorType &phase_old, const StepLengths &lengths);
+
+      /** The largest nodal speed of the newest state (collective). */
+      double
+      max_speed() const;
+
+      /** The velocity and hanging-node constraints of the current cells. */
+      const dealii::AffineConstraints<double> &
+      constraints() const
+      {
+        return flow_constraints;
+      }
+
+      void
+      grid_ready() override;
+
+      void
+      grid_changed() override;
+
+    private:
+      /** Constraints, sparsity, matrix and vectors for the current cells. */
+      void
+      setup_system();
+
+      /** The matrix and right-hand side of one step. */
+      void
+      assemble(const VectorType &phase_old, const StepLengths &lengths);
+
+      grid::BackgroundGrid                  &grid;
+      grid::FiniteElementField              &flow;
+      const grid::FiniteElementField        &phase;
+      const FreeSurfaceParameters           &parameters;
+      dealii::AffineConstraints<double>      flow_constraints;
+      dealii::TrilinosWrappers::SparseMatrix matrix;
+      VectorType                             rhs, solution;
+    };
+  } // namespace fluid
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,86 @@
+#ifndef slidewave_fluid_phase_field_system_h
+#define slidewave_fluid_phase_field_system_h
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/fluid/navier_stokes_system.h>
+#include <slidewave/grid/finite_element_field.h>
+#include <slidewave/grid/grid_follower.h>
+
+namespace slidewave
+{
+  namespace fluid
+  {
+    /**
+     * The phase field phi (1 water, 0 air, the surface at 0.5) carried by the flow
+     * (paper 002, §3.4 and Appendix B): the conservative Allen-Cahn equation
+     *
+     *   d phi/dt + div(u phi) = div( gamma (epsilon grad phi - phi (1 - phi) n) ),
+     *   n = grad phi / |grad phi|,
+     *
+     * (Chiu and Lin 2011), or paper 002's Allen-Cahn form with the reaction term
+     * - gamma phi (1 - phi) (1 - 2 phi) / epsilon in place of the divergence of the
+     * sharpening flux. Both keep the profile phi = 1 / (1 + exp(-d / epsilon)) of a flat
+     * surface. The advection is in divergence form (u . grad phi + phi div u; the same
+     * for a divergence-free velocity): summed over the test functions the discrete
+     * equation leaves only the flux through the sides, so the conservative form keeps the
+     * integral of phi (the water volume) to the solver's tolerance although the
+     * stabilized velocity is divergence free only weakly; the other form shrinks curved
+     * surfaces.
+     *
+     * Q1 on the background grid (the phase field's grid::FiniteElementField), SUPG with
+     * tau_phi (paper 002, Eq. 95), the theta-scheme for advection and diffusion with the
+     * Adams-Bashforth advection velocity, the sharpening or reaction term explicit. One
+     * GMRES solve with ILU per step; the system follows the grid as the flow's does.
+     */
+    class PhaseFieldSystem : public grid::GridFollower
+    {
+    public:
+      using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+
+      PhaseFieldSystem(grid::BackgroundGrid           &grid,
+                       const grid::FiniteElementField &flow,
+                       grid::FiniteElementField       &phase,
+                       const FreeSurfaceParameters    &parameters);
+
+      /**
+       * One step from phi^n to phi^{n+1} with the flow's states u^n, u^{n-1} and the
+       * profile velocity @p gamma [m/s]: keeps phi^n (previous()) and writes phi^{n+1}
+       * into the phase field (collective). Throws RunFailure when GMRES fails.
+       */
+      SolveReport
+      step(const StepLengths &lengths, double gamma);
+
+      /** phi^n of the last step (ghosted, the phase field's dofs). */
+      const VectorType &
+      previous() const
+      {
+        return phase_old;
+      }
+
+      void
+      grid_ready() override;
+
+      void
+      grid_changed() override;
+
+    private:
+      void
+      setup_system();
+
+      void
+      assemble(const StepLengths &lengths, double gamma);
+
+      grid::BackgroundGrid                  &grid;
+      const grid::FiniteElementField        &flow;
+      grid::FiniteElementField              &phase;
+      const FreeSurfaceParameters           &parameters;
+      dealii::TrilinosWrappers::SparseMatrix matrix;
+      VectorType                             rhs, solution, phase_old;
+    };
+  } // namespace fluid
+} // namespace slidewave
+
+#endif

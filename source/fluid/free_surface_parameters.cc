@@ -1,0 +1,428 @@
+#include <cmath>
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/parsed_expression.h>
+#include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/grid/grid_extent.h>
+#include <slidewave/grid/load_balancing_parameters.h>
+#include <sstream>
+
+namespace slidewave
+{
+  namespace fluid
+  {
+    namespace
+    {
+      const std::string section = "Free surface flow";
+
+      FlowBoundary
+      flow_boundary(const std::string &name)
+      {
+        return name == "no slip" ? FlowBoundary::no_slip :
+               name == "open"    ? FlowBoundary::open :
+                                   FlowBoundary::free_slip;
+      }
+
+      /** "x0, y0, x1, y1; x0, y0, x1, y1" into boxes inside the domain. */
+      std::vector<WaterBox>
+      parse_boxes(const std::string &text)
+      {
+        const std::string     parameter = section + "/Initial water/Water boxes";
+        std::vector<WaterBox> boxes;
+        std::istringstream    in(text);
+        std::string           item;
+        while (std::getline(in, item, ';'))
+          {
+            if (item.find_first_not_of(" \t") == std::string::npos)
+              continue;
+            const auto v = parse_number_list(parameter,
+                                             item,
+                                             "rectangles 'x0, y0, x1, y1' separated by ';' "
+                                             "with x0 < x1 and y0 < y1",
+                                             4);
+            if (!(v[0] < v[2] && v[1] < v[3]))
+              throw InputError(parameter,
+                               item,
+                               "rectangles 'x0, y0, x1, y1' with x0 < x1 and y0 < y1");
+            boxes.push_back({dealii::Point<2>(v[0], v[1]), dealii::Point<2>(v[2], v[3])});
+          }
+        return boxes;
+      }
+    } // namespace
+
+
+
+    void
+    FreeSurfaceParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.enter_subsection("Grid");
+      grid::GridExtent::declare_parameters(prm, "0.01");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Adaptive grid");
+      {
+        prm.declare_entry("Enable",
+                          "false",
+                          Bool(),
+                          "Refine the grid along the water surface (to 'Cell size') and "
+                          "coarsen it elsewhere, by 'Levels' levels.");
+        prm.declare_entry("Levels", "2", Integer(1, 8), "Levels of refinement.");
+        prm.declare_entry("Buffer cells",
+                          "2",
+                          Integer(0, 20),
+                          "Layers of cells kept fine around the cells the surface crosses.");
+        prm.declare_entry("Interval", "10", Integer(1), "Steps between two adaptations.");
+        prm.declare_entry("Refinement threshold",
+                          "0.01",
+                          Double(0.),
+                          "A cell is kept fine where |grad phi| h exceeds this (phi the "
+                          "phase field, h the cell side).");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Load balancing");
+      grid::LoadBalancingParameters::declare_parameters(prm);
+      prm.leave_subsection();
+
+      prm.enter_subsection("Fluids");
+      {
+        prm.declare_entry("Water density", "1000", Double(0.), "rho_l [kg/m^3].");
+        prm.declare_entry("Air density", "1.2", Double(0.), "rho_g [kg/m^3].");
+        prm.declare_entry("Water viscosity", "1e-3", Double(0.), "mu_l [Pa s].");
+        prm.declare_entry("Air viscosity", "1.8e-5", Double(0.), "mu_g [Pa s].");
+        prm.declare_entry("Gravity", "0, -9.81", Anything(), "g_x, g_y [m/s^2].");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Boundary conditions");
+      {
+        const std::string help = "'no slip' (u = 0), 'free slip' (no flow through the side, "
+                                 "no shear) or 'open' (traction free at the ambient pressure "
+                                 "0: water and air may leave and air may enter). At least "
+                                 "one side must be open: it sets the pressure level.";
+        prm.declare_entry("Left", "free slip", Selection("no slip|free slip|open"), help);
+        prm.declare_entry("Right", "free slip", Selection("no slip|free slip|open"), help);
+        prm.declare_entry("Bottom", "free slip", Selection("no slip|free slip|open"), help);
+        prm.declare_entry("Top", "open", Selection("no slip|free slip|open"), help);
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Initial water");
+      {
+        prm.declare_entry("Surface elevation",
+                          "",
+                          Anything(),
+                          "eta(x): water below y = eta(x) at the start (an expression of x; "
+                          "empty: none).");
+        prm.declare_entry("Water boxes",
+                          "",
+                          Anything(),
+                          "Rectangles of water 'x0, y0, x1, y1; ...' (with the surface "
+                          "elevation, the water is their union).");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Phase field");
+      {
+        prm.declare_entry("Model",
+                          "conservative Allen-Cahn",
+                          Selection("conservative Allen-Cahn|Allen-Cahn"),
+                          "'conservative Allen-Cahn': d phi/dt + u.grad phi = div(gamma "
+                          "(epsilon grad phi - phi (1 - phi) n)), n = grad phi / |grad phi| "
+                          "(Chiu and Lin 2011), which keeps the water volume; 'Allen-Cahn': "
+                          "paper 002, Eq. 91, the double-well reaction term, which shrinks "
+                          "curved surfaces (doc/free-surface-flow.md measures both).");
+        prm.declare_entry("Interface thickness",
+                          "1",
+                          Double(0.25, 8.),
+                          "epsilon of the phase-field profile phi = 1 / (1 + exp(-d / "
+                          "epsilon)), in units of 'Cell size'.");
+        prm.declare_entry("Mobility factor",
+                          "1",
+                          Double(0.),
+                          "gamma = factor x max(largest speed, sqrt(|g| h)) [m/s], the "
+                          "velocity at which the profile is restored.");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Time stepping");
+      {
+        prm.declare_entry("Theta",
+                          "0.5",
+                          Double(0.5, 1.),
+                          "theta of the theta-scheme for velocity, advection and viscosity "
+                          "(0.5: Crank-Nicolson, as paper 002; 1: backward Euler); the "
+                          "pressure and the continuity are implicit.");
+        prm.declare_entry("Courant number",
+                          "0.5",
+                          Double(0.),
+                          "dt = Courant number x h / max(largest speed, gamma).");
+        prm.declare_entry("Maximum time step", "0.01", Double(0.), "[s].");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Stabilization");
+      prm.declare_entry("Grad-div",
+                        "true",
+                        Bool(),
+                        "The continuity (LSIC) stabilization tau_cont rho (div w)(div u) of "
+                        "paper 002 besides SUPG and PSPG.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Linear solver");
+      {
+        prm.declare_entry("Preconditioner",
+                          "ilu",
+                          Selection("ilu|amg"),
+                          "Of GMRES for the flow (Trilinos ILU(1) per rank or ML's AMG); "
+                          "the phase field always uses ILU.");
+        prm.declare_entry("Tolerance",
+                          "1e-8",
+                          Double(0.),
+                          "Residual reduction of GMRES (relative to the right-hand side).");
+        prm.declare_entry("Maximum iterations", "1000", Integer(1), "Of GMRES per solve.");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Guards");
+      {
+        prm.declare_entry("Maximum volume drift",
+                          "0.05",
+                          Double(0.),
+                          "The run stops (exit status 2) when the water volume (the "
+                          "integral of phi) differs from the initial one by more than this "
+                          "fraction (0: never).");
+        prm.declare_entry("Maximum speed",
+                          "1000",
+                          Double(0.),
+                          "The run stops when a speed exceeds this [m/s].");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Gauges");
+      prm.declare_entry("Positions",
+                        "",
+                        Anything(),
+                        "x of the gauges: the water surface elevation there is written every "
+                        "step to free_surface/gauges.csv (the format of the shallow water's "
+                        "gauges).");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Output");
+      prm.declare_entry("Surface polylines",
+                        "true",
+                        Bool(),
+                        "Write the phi = 0.5 contour at every output time as segments in "
+                        "free_surface/surface_NNNNN.csv.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Verification");
+      {
+        prm.declare_entry("Exact solution",
+                          "none",
+                          Selection("none|hydrostatic|poiseuille"),
+                          "'hydrostatic': water at rest under its surface eta: the pressure "
+                          "at every node deeper than 3 epsilon against rho_l |g| (eta - y), "
+                          "relative to rho_l |g| max depth, and the largest speed (the "
+                          "spurious currents). 'poiseuille': a channel full of water between "
+                          "no-slip bottom and top, open ends, gravity along x: u_x at every "
+                          "node against g_x y (H - y) / (2 nu), relative to its largest "
+                          "value, at the end.");
+        prm.declare_entry("Tolerance",
+                          "0",
+                          Double(0.),
+                          "If > 0, the run fails (exit status 3) when the error exceeds it.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    FreeSurfaceParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Grid");
+      {
+        grid::GridExtent extent;
+        extent.parse_parameters(prm, section + "/Grid");
+        lower_left  = extent.lower_left;
+        upper_right = extent.upper_right;
+        cell_size   = extent.cell_size;
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Adaptive grid");
+      {
+        adaptive             = prm.get_bool("Enable");
+        adaptive_levels      = prm.get_integer("Levels");
+        buffer_cells         = prm.get_integer("Buffer cells");
+        adaptivity_interval  = prm.get_integer("Interval");
+        refinement_threshold = prm.get_double("Refinement threshold");
+        if (adaptive)
+          {
+            const double base = cell_size * (1u << adaptive_levels);
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                const double n = (upper_right[d] - lower_left[d]) / base;
+                if (std::abs(n - std::round(n)) > 1e-6 * n || std::round(n) < 1)
+                  throw InputError(section + "/Adaptive grid/Levels",
+                                   std::to_string(adaptive_levels),
+                                   "a number of levels such that the coarsest cells (Cell "
+                                   "size x 2^Levels = "
+                                     + to_string(base) + " m) divide the domain sides");
+              }
+          }
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Load balancing");
+      {
+        grid::LoadBalancingParameters balancing;
+        balancing.parse_parameters(prm);
+        imbalance_threshold = balancing.imbalance_threshold;
+        balance_interval    = balancing.interval;
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Fluids");
+      {
+        fluid.water_density   = prm.get_double("Water density");
+        fluid.air_density     = prm.get_double("Air density");
+        fluid.water_viscosity = prm.get_double("Water viscosity");
+        fluid.air_viscosity   = prm.get_double("Air viscosity");
+        require_positive(section + "/Fluids/Water density", fluid.water_density);
+        require_positive(section + "/Fluids/Air density", fluid.air_density);
+        require_positive(section + "/Fluids/Water viscosity", fluid.water_viscosity);
+        require_positive(section + "/Fluids/Air viscosity", fluid.air_viscosity);
+        const auto g  = parse_number_list(section + "/Fluids/Gravity",
+                                         prm.get("Gravity"),
+                                         "two numbers g_x, g_y [m/s^2]",
+                                         2);
+        fluid.gravity = dealii::Tensor<1, 2>({g[0], g[1]});
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Boundary conditions");
+      {
+        boundaries    = {{flow_boundary(prm.get("Left")),
+                          flow_boundary(prm.get("Right")),
+                          flow_boundary(prm.get("Bottom")),
+                          flow_boundary(prm.get("Top"))}};
+        bool any_open = false;
+        for (const auto b : boundaries)
+          any_open = any_open || b == FlowBoundary::open;
+        if (!any_open)
+          throw InputError(section + "/Boundary conditions/Top",
+                           prm.get("Top"),
+                           "'open' on at least one side (Left, Right, Bottom or Top): a tank "
+                           "closed on all sides leaves the pressure level undetermined");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Initial water");
+      {
+        surface_elevation = prm.get("Surface elevation");
+        if (!surface_elevation.empty())
+          ParsedExpression(section + "/Initial water/Surface elevation", surface_elevation);
+        water_boxes = parse_boxes(prm.get("Water boxes"));
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Phase field");
+      {
+        phase_field_model  = prm.get("Model") == "Allen-Cahn" ?
+                               PhaseFieldModel::allen_cahn :
+                               PhaseFieldModel::conservative_allen_cahn;
+        thickness_in_cells = prm.get_double("Interface thickness");
+        mobility_factor    = prm.get_double("Mobility factor");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Time stepping");
+      {
+        theta             = prm.get_double("Theta");
+        courant_number    = prm.get_double("Courant number");
+        maximum_time_step = prm.get_double("Maximum time step");
+        require_positive(section + "/Time stepping/Courant number", courant_number);
+        require_positive(section + "/Time stepping/Maximum time step", maximum_time_step);
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Stabilization");
+      grad_div = prm.get_bool("Grad-div");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Linear solver");
+      {
+        preconditioner   = prm.get("Preconditioner");
+        linear_tolerance = prm.get_double("Tolerance");
+        max_iterations   = prm.get_integer("Maximum iterations");
+        require_in_range(
+          section + "/Linear solver/Tolerance", linear_tolerance, 0., false, 0.1, true);
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Guards");
+      max_volume_drift = prm.get_double("Maximum volume drift");
+      max_speed        = prm.get_double("Maximum speed");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Gauges");
+      {
+        const std::string text = prm.get("Positions");
+        gauges                 = text.find_first_not_of(" \t") == std::string::npos ?
+                                   std::vector<double>() :
+                                   parse_number_list(section + "/Gauges/Positions", text, "numbers x [m]");
+        for (const double x : gauges)
+          if (x < lower_left[0] || x > upper_right[0])
+            throw InputError(section + "/Gauges/Positions",
+                             to_string(x),
+                             "positions inside the grid, [" + to_string(lower_left[0]) + ", "
+                               + to_string(upper_right[0]) + "]");
+      }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Output");
+      write_surface = prm.get_bool("Surface polylines");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Verification");
+      {
+        const std::string type = prm.get("Exact solution");
+        exact_solution         = type == "hydrostatic" ? FlowExactSolution::hydrostatic :
+                                 type == "poiseuille"  ? FlowExactSolution::poiseuille :
+                                                         FlowExactSolution::none;
+        tolerance              = prm.get_double("Tolerance");
+        if (exact_solution == FlowExactSolution::poiseuille
+            && (boundaries[2] != FlowBoundary::no_slip || boundaries[3] != FlowBoundary::no_slip))
+          throw InputError(section + "/Verification/Exact solution",
+                           type,
+                           "'poiseuille' with 'no slip' at Bottom and Top");
+        if (exact_solution == FlowExactSolution::hydrostatic && surface_elevation.empty())
+          throw InputError(section + "/Verification/Exact solution",
+                           type,
+                           "'hydrostatic' with an 'Initial water/Surface elevation'");
+      }
+      prm.leave_subsection();
+
+      if (surface_elevation.empty() && water_boxes.empty())
+        throw InputError(section + "/Initial water/Water boxes",
+                         "",
+                         "some water: a 'Surface elevation' or at least one box");
+    }
+
+
+
+    grid::GridChanges
+    FreeSurfaceParameters::grid_changes() const
+    {
+      grid::GridChanges changes;
+      changes.adaptive_levels     = adaptive ? adaptive_levels : 0;
+      changes.adaptivity_interval = adaptivity_interval;
+      changes.buffer_cells        = buffer_cells;
+      changes.imbalance_threshold = imbalance_threshold;
+      changes.balance_interval    = balance_interval;
+      return changes;
+    }
+  } // namespace fluid
+} // namespace slidewave

@@ -1,0 +1,313 @@
+#include <cmath>
+#include <cstdio>
+#include <deal.II/base/mpi.h>
+#include <iostream>
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/run_control.h>
+#include <slidewave/core/timed_run.h>
+#include <slidewave/fluid/free_surface_diagnostics.h>
+#include <slidewave/fluid/free_surface_scene.h>
+#include <sstream>
+
+namespace slidewave
+{
+  namespace fluid
+  {
+    namespace
+    {
+      const std::string section = "Free surface flow";
+    }
+
+
+
+    void
+    FreeSurfaceScene::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection(section);
+      FreeSurfaceParameters::declare_parameters(prm);
+      prm.leave_subsection();
+    }
+
+
+
+    FreeSurfaceScene::FreeSurfaceScene(const SceneParameters    &scene_parameters,
+                                       dealii::ParameterHandler &prm)
+      : scene(scene_parameters)
+      , output(scene_parameters.output_directory, {})
+    {
+      prm.enter_subsection(section);
+      parameters.parse_parameters(prm);
+      prm.leave_subsection();
+      output = FreeSurfaceOutput(scene.output_directory, parameters.gauges);
+    }
+
+
+
+    bool
+    FreeSurfaceScene::run()
+    {
+      return run_with_timer(scene.test_mode, [this](dealii::TimerOutput &timer) {
+        return RunControl(scene).run(*this, timer);
+      });
+    }
+
+
+
+    void
+    FreeSurfaceScene::create_output_directories() const
+    {
+      output.create_directories();
+    }
+
+
+
+    void
+    FreeSurfaceScene::create_solver()
+    {
+      grid   = FreeSurfaceSolver::make_grid(parameters);
+      solver = std::make_unique<FreeSurfaceSolver>(parameters, *grid);
+    }
+
+
+
+    void
+    FreeSurfaceScene::set_up(const double start_time, dealii::TimerOutput &timer_output)
+    {
+      timer = &timer_output;
+      dealii::TimerOutput::Scope scope(timer_output, "fluid: setup");
+      create_solver();
+      solver->setup(start_time);
+      initial_volume = solver->water_volume();
+      output.open_gauges(false);
+    }
+
+
+
+    std::string
+    FreeSurfaceScene::description() const
+    {
+      return "Free surface flow: " + std::to_string(grid->triangulation().n_global_active_cells())
+             + " cells, " + std::to_string(solver->flow_field().dof_handler().n_dofs())
+             + " flow and " + std::to_string(solver->phase_field().dof_handler().n_dofs())
+             + " phase-field unknowns; output in " + scene.output_directory;
+    }
+
+
+
+    void
+    FreeSurfaceScene::start(const StepInfo &info)
+    {
+      output.record_gauges(*solver, info.time);
+    }
+
+
+
+    double
+    FreeSurfaceScene::stable_time_step()
+    {
+      return solver->stable_time_step();
+    }
+
+
+
+    void
+    FreeSurfaceScene::advance(const StepInfo &info)
+    {
+      dealii::TimerOutput::Scope scope(*timer, "fluid: advance");
+      last_report = solver->advance(info.dt);
+    }
+
+
+
+    void
+    FreeSurfaceScene::check_state(const StepInfo &info) const
+    {
+      const std::string where
+        = "at step " + std::to_string(info.step) + ", t = " + to_string(info.time) + " s: ";
+      if (!solver->state_is_finite())
+        throw RunFailure(where
+                         + "the velocity, pressure or phase field is not finite (reduce "
+                           "'Time stepping/Courant number' or 'Maximum time step')");
+      const double speed = solver->max_speed();
+      if (parameters.max_speed > 0. && speed > parameters.max_speed)
+        throw RunFailure(where + "the largest speed, " + to_string(speed)
+                         + " m/s, exceeds 'Guards/Maximum speed' = "
+                         + to_string(parameters.max_speed) + " m/s");
+      const double drift = std::abs(solver->water_volume() - initial_volume) / initial_volume;
+      if (parameters.max_volume_drift > 0. && drift > parameters.max_volume_drift)
+        throw RunFailure(where + "the water volume drifted by " + to_string(100. * drift)
+                         + " % from its initial " + to_string(initial_volume)
+                         + " m^2, beyond 'Guards/Maximum volume drift' = "
+                         + to_string(100. * parameters.max_volume_drift) + " %");
+    }
+
+
+
+    void
+    FreeSurfaceScene::after_step(const StepInfo &info)
+    {
+      dealii::TimerOutput::Scope scope(*timer, "fluid: checks and gauges");
+      check_state(info);
+      max_drift
+        = std::max(max_drift, std::abs(solver->water_volume() - initial_volume) / initial_volume);
+      output.record_gauges(*solver, info.time);
+    }
+
+
+
+    void
+    FreeSurfaceScene::write_output(const unsigned int index, const double time)
+    {
+      if (scene.test_mode)
+        return;
+      dealii::TimerOutput::Scope scope(*timer, "fluid: output");
+      output.write(*solver, parameters.write_surface, index, time);
+    }
+
+
+
+    void
+    FreeSurfaceScene::add_statistics(Statistics &statistics, const StepInfo &info) const
+    {
+      const double volume = solver->water_volume();
+      statistics.add_value("time", info.time);
+      statistics.add_value("step", info.step);
+      statistics.add_value("dt", info.dt);
+      statistics.add_value("water_volume", volume);
+      statistics.add_value("volume_drift", (volume - initial_volume) / initial_volume);
+      statistics.add_value("kinetic_energy",
+                           diagnostics::kinetic_energy(solver->flow_field(),
+                                                       solver->phase_field(),
+                                                       parameters.fluid));
+      statistics.add_value("max_speed", solver->max_speed());
+      statistics.add_value("front", diagnostics::front_position(solver->phase_field()));
+      statistics.add_value("flow_iterations", last_report.flow.iterations);
+      statistics.add_value("phase_iterations", last_report.phase.iterations);
+      statistics.add_value("cells",
+                           static_cast<double>(grid->triangulation().n_global_active_cells()));
+    }
+
+
+
+    bool
+    FreeSurfaceScene::finish(const StepInfo &)
+    {
+      const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      double     error     = 0.;
+      char       line[200];
+      line[0] = '\0';
+      if (parameters.exact_solution == FlowExactSolution::hydrostatic)
+        {
+          const auto errors = diagnostics::hydrostatic_errors(solver->flow_field(), parameters);
+          error             = errors[0];
+          std::snprintf(line,
+                        sizeof(line),
+                        "Hydrostatic pressure: largest relative error = %.3e; largest speed "
+                        "(spurious currents) = %.3e m/s",
+                        errors[0],
+                        errors[1]);
+        }
+      else if (parameters.exact_solution == FlowExactSolution::poiseuille)
+        {
+          error = diagnostics::poiseuille_error(solver->flow_field(), parameters);
+          std::snprintf(line,
+                        sizeof(line),
+                        "Poiseuille flow: largest nodal error of u_x relative to the peak = "
+                        "%.3e",
+                        error);
+        }
+      if (is_writer)
+        {
+          std::printf("Water volume: largest drift %.3e of the initial %.6g m^2\n",
+                      max_drift,
+                      initial_volume);
+          if (line[0] != '\0')
+            {
+              std::printf("%s", line);
+              if (parameters.tolerance > 0.)
+                std::printf(" <= %g: %s",
+                            parameters.tolerance,
+                            error <= parameters.tolerance ? "yes" : "no");
+              std::printf("\n");
+            }
+          std::fflush(stdout);
+        }
+      return !(parameters.tolerance > 0.) || error <= parameters.tolerance;
+    }
+
+
+
+    std::string
+    FreeSurfaceScene::checkpoint_signature() const
+    {
+      std::ostringstream out;
+      out.precision(12);
+      out << "free surface flow; grid " << parameters.lower_left << " to " << parameters.upper_right
+          << ", cell size " << parameters.cell_size << ", adaptive levels "
+          << (parameters.adaptive ? parameters.adaptive_levels : 0) << "; fluids "
+          << parameters.fluid.water_density << ' ' << parameters.fluid.air_density;
+      return out.str();
+    }
+
+
+
+    std::vector<std::string>
+    FreeSurfaceScene::growing_files() const
+    {
+      if (parameters.gauges.empty())
+        return {};
+      return {FreeSurfaceOutput::gauge_file()};
+    }
+
+
+
+    void
+    FreeSurfaceScene::save(io::CheckpointRecord &record)
+    {
+      record.put("fluid/time", solver->time);
+      record.put("fluid/last_dt", solver->last_dt);
+      record.put("fluid/steps", solver->n_steps);
+      record.put("fluid/initial_volume", initial_volume);
+      record.put("fluid/max_drift", max_drift);
+      record.put("fluid/last_iterations",
+                 std::vector<double>{static_cast<double>(last_report.flow.iterations),
+                                     static_cast<double>(last_report.phase.iterations)});
+      record.put_files("fluid/field_files", output.files);
+    }
+
+
+
+    void
+    FreeSurfaceScene::save_data(const std::string &prefix)
+    {
+      solver->save(prefix);
+    }
+
+
+
+    void
+    FreeSurfaceScene::resume(const io::CheckpointRecord &record,
+                             const std::string          &prefix,
+                             dealii::TimerOutput        &timer_output)
+    {
+      timer = &timer_output;
+      dealii::TimerOutput::Scope scope(timer_output, "fluid: setup");
+      create_solver();
+      solver->load(prefix);
+      solver->time    = record.get("fluid/time");
+      solver->last_dt = record.get("fluid/last_dt");
+      solver->n_steps = record.get_unsigned("fluid/steps");
+      initial_volume  = record.get("fluid/initial_volume");
+      max_drift       = record.get("fluid/max_drift");
+      const auto &its = record.get_vector("fluid/last_iterations");
+      if (its.size() != 2)
+        throw InputError("Checkpoint/Resume",
+                         "fluid/last_iterations",
+                         "two counts (damaged checkpoint)");
+      last_report.flow.iterations  = static_cast<unsigned int>(its[0]);
+      last_report.phase.iterations = static_cast<unsigned int>(its[1]);
+      output.files                 = record.get_files("fluid/field_files");
+      output.open_gauges(true);
+    }
+  } // namespace fluid
+} // namespace slidewave

@@ -1,0 +1,278 @@
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/vector.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <slidewave/core/input_error.h>
+#include <slidewave/fluid/navier_stokes_system.h>
+
+namespace slidewave
+{
+  namespace fluid
+  {
+    NavierStokesSystem::NavierStokesSystem(grid::BackgroundGrid           &grid,
+                                           grid::FiniteElementField       &flow,
+                                           const grid::FiniteElementField &phase,
+                                           const FreeSurfaceParameters    &parameters)
+      : grid(grid)
+      , flow(flow)
+      , phase(phase)
+      , parameters(parameters)
+    {
+      grid.attach(*this);
+    }
+
+
+
+    void
+    NavierStokesSystem::grid_ready()
+    {
+      setup_system();
+    }
+
+
+
+    void
+    NavierStokesSystem::grid_changed()
+    {
+      setup_system();
+    }
+
+
+
+    void
+    NavierStokesSystem::setup_system()
+    {
+      const auto &dofs = flow.dof_handler();
+      flow_constraints.clear();
+      flow_constraints.reinit(flow.locally_relevant_dofs());
+      dealii::DoFTools::make_hanging_node_constraints(dofs, flow_constraints);
+      // The walls: the grid's sides are colourized left 0, right 1, bottom 2, top 3; the
+      // normal of the left and right sides is x (component 0), of bottom and top y.
+      for (unsigned int side = 0; side < 4; ++side)
+        {
+          if (parameters.boundaries[side] == FlowBoundary::open)
+            continue;
+          const unsigned int normal = side < 2 ? 0 : 1;
+          std::vector<bool>  mask{false, false, false};
+          mask[normal] = true;
+          if (parameters.boundaries[side] == FlowBoundary::no_slip)
+            mask[1 - normal] = true;
+          dealii::VectorTools::interpolate_boundary_values(dofs,
+                                                           side,
+                                                           dealii::Functions::ZeroFunction<2>(3),
+                                                           flow_constraints,
+                                                           dealii::ComponentMask(mask));
+        }
+      flow_constraints.close();
+
+      const MPI_Comm                 communicator = grid.communicator();
+      dealii::DynamicSparsityPattern pattern(flow.locally_relevant_dofs());
+      dealii::DoFTools::make_sparsity_pattern(dofs, pattern, flow_constraints, false);
+      dealii::SparsityTools::distribute_sparsity_pattern(pattern,
+                                                         flow.locally_owned_dofs(),
+                                                         communicator,
+                                                         flow.locally_relevant_dofs());
+      matrix.reinit(flow.locally_owned_dofs(), flow.locally_owned_dofs(), pattern, communicator);
+      rhs.reinit(flow.locally_owned_dofs(), communicator);
+      solution.reinit(flow.locally_owned_dofs(), communicator);
+    }
+
+
+
+    void
+    NavierStokesSystem::assemble(const VectorType &phase_old, const StepLengths &lengths)
+    {
+      const auto             &fe = flow.finite_element();
+      const dealii::QGauss<2> quadrature(2);
+      const unsigned int      n_q = quadrature.size(), n_dofs = fe.n_dofs_per_cell();
+      dealii::FEValues<2>     fv(fe,
+                             quadrature,
+                             dealii::update_values | dealii::update_gradients
+                               | dealii::update_JxW_values);
+      dealii::FEValues<2>     fv_phase(phase.finite_element(), quadrature, dealii::update_values);
+      const dealii::FEValuesExtractors::Vector velocity(0);
+      const dealii::FEValuesExtractors::Scalar pressure(2);
+
+      const double theta = parameters.theta, dt = lengths.dt;
+      const double w     = extrapolation_weight(lengths, theta);
+      const auto  &fluid = parameters.fluid;
+
+      std::vector<dealii::Tensor<1, 2>> u_n(n_q), u_old(n_q);
+      std::vector<dealii::Tensor<2, 2>> grad_u_n(n_q);
+      std::vector<double>               phi_new(n_q), phi_old(n_q);
+      std::vector<dealii::Tensor<1, 2>> value_u(n_dofs), grad_p(n_dofs), advect_u(n_dofs);
+      std::vector<dealii::Tensor<2, 2>> sym_grad_u(n_dofs);
+      std::vector<double>               div_u(n_dofs), value_p(n_dofs);
+      dealii::FullMatrix<double>        local_matrix(n_dofs, n_dofs);
+      dealii::Vector<double>            local_rhs(n_dofs);
+      std::vector<dealii::types::global_dof_index> indices(n_dofs);
+
+      matrix = 0.;
+      rhs    = 0.;
+      for (const auto &cell : flow.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fv.reinit(cell);
+            const dealii::DoFHandler<2>::active_cell_iterator phase_cell(&grid.triangulation(),
+                                                                         cell->level(),
+                                                                         cell->index(),
+                                                                         &phase.dof_handler());
+            fv_phase.reinit(phase_cell);
+            fv[velocity].get_function_values(flow.values(0), u_n);
+            fv[velocity].get_function_values(flow.values(1), u_old);
+            fv[velocity].get_function_gradients(flow.values(0), grad_u_n);
+            fv_phase.get_function_values(phase.values(0), phi_new);
+            fv_phase.get_function_values(phase_old, phi_old);
+            const double h = cell->extent_in_direction(0);
+
+            local_matrix = 0.;
+            local_rhs    = 0.;
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const double               phi = theta * phi_new[q] + (1. - theta) * phi_old[q];
+                const double               rho = fluid.density(phi), mu = fluid.viscosity(phi);
+                const double               nu    = mu / rho;
+                const dealii::Tensor<1, 2> u_bar = u_n[q] + w * (u_n[q] - u_old[q]);
+                const double               speed = u_bar.norm();
+                // Tezduyar's parameters (paper 002, Eqs. 28-29): tau_m from the time step,
+                // the advection and the viscosity; tau_cont from the element Reynolds
+                // number.
+                const double tau_m = 1.
+                                     / std::sqrt(4. / (dt * dt) + 4. * speed * speed / (h * h)
+                                                 + 16. * nu * nu / (h * h * h * h));
+                const double reynolds = speed * h / (2. * nu);
+                const double tau_cont
+                  = parameters.grad_div ? 0.5 * h * speed * std::min(reynolds / 3., 1.) : 0.;
+                const double JxW = fv.JxW(q);
+
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  {
+                    value_u[i]    = fv[velocity].value(i, q);
+                    sym_grad_u[i] = fv[velocity].symmetric_gradient(i, q);
+                    div_u[i]      = fv[velocity].divergence(i, q);
+                    advect_u[i]   = fv[velocity].gradient(i, q) * u_bar;
+                    value_p[i]    = fv[pressure].value(i, q);
+                    grad_p[i]     = fv[pressure].gradient(i, q);
+                  }
+                // The explicit part of the momentum residual: rho u^n / dt minus the
+                // (1 - theta) share of the advection, plus gravity.
+                const dealii::Tensor<1, 2> advect_n = grad_u_n[q] * u_bar;
+                const dealii::Tensor<2, 2> sym_grad_n
+                  = 0.5 * (grad_u_n[q] + dealii::transpose(grad_u_n[q]));
+                const dealii::Tensor<1, 2> explicit_residual
+                  = rho * u_n[q] / dt - (1. - theta) * rho * advect_n + rho * fluid.gravity;
+
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  {
+                    // SUPG and PSPG share the residual: the test function tau_m (u_bar .
+                    // grad) w + tau_m / rho grad q.
+                    const dealii::Tensor<1, 2> stabilized_test
+                      = tau_m * advect_u[i] + (tau_m / rho) * grad_p[i];
+                    for (unsigned int j = 0; j < n_dofs; ++j)
+                      {
+                        const dealii::Tensor<1, 2> implicit_residual
+                          = rho * value_u[j] / dt + theta * rho * advect_u[j] + grad_p[j];
+                        local_matrix(i, j)
+                          += (rho / dt * value_u[i] * value_u[j]
+                              + theta * rho * value_u[i] * advect_u[j]
+                              + theta * 2. * mu
+                                  * dealii::scalar_product(sym_grad_u[i], sym_grad_u[j])
+                              - div_u[i] * value_p[j] + value_p[i] * div_u[j]
+                              + tau_cont * rho * div_u[i] * div_u[j]
+                              + stabilized_test * implicit_residual)
+                             * JxW;
+                      }
+                    local_rhs(i) += (value_u[i] * explicit_residual
+                                     - (1. - theta) * 2. * mu
+                                         * dealii::scalar_product(sym_grad_u[i], sym_grad_n)
+                                     + stabilized_test * explicit_residual)
+                                    * JxW;
+                  }
+              }
+            cell->get_dof_indices(indices);
+            flow_constraints.distribute_local_to_global(
+              local_matrix, local_rhs, indices, matrix, rhs);
+          }
+      matrix.compress(dealii::VectorOperation::add);
+      rhs.compress(dealii::VectorOperation::add);
+    }
+
+
+
+    SolveReport
+    NavierStokesSystem::step(const VectorType &phase_old, const StepLengths &lengths)
+    {
+      assemble(phase_old, lengths);
+
+      solution                     = flow.locally_owned_values(0); // the last step: the first guess
+      const double          target = parameters.linear_tolerance * rhs.l2_norm();
+      dealii::SolverControl control(parameters.max_iterations, std::max(target, 1e-300));
+      dealii::TrilinosWrappers::SolverGMRES gmres(
+        control, dealii::TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
+      try
+        {
+          if (parameters.preconditioner == "amg")
+            {
+              dealii::TrilinosWrappers::PreconditionAMG                 amg;
+              dealii::TrilinosWrappers::PreconditionAMG::AdditionalData data;
+              data.elliptic              = false;
+              data.higher_order_elements = false;
+              data.smoother_sweeps       = 2;
+              data.aggregation_threshold = 0.02;
+              amg.initialize(matrix, data);
+              gmres.solve(matrix, solution, rhs, amg);
+            }
+          else
+            {
+              dealii::TrilinosWrappers::PreconditionILU ilu;
+              ilu.initialize(matrix, dealii::TrilinosWrappers::PreconditionILU::AdditionalData(1));
+              gmres.solve(matrix, solution, rhs, ilu);
+            }
+        }
+      catch (const dealii::SolverControl::NoConvergence &failure)
+        {
+          throw RunFailure("the flow's linear solver (GMRES) did not converge: residual "
+                           + to_string(failure.last_residual) + " after "
+                           + std::to_string(failure.last_step) + " iterations, target "
+                           + to_string(target)
+                           + " (reduce 'Time stepping/Courant number' or 'Maximum time "
+                             "step', or raise 'Linear solver/Maximum iterations')");
+        }
+      flow_constraints.distribute(solution);
+
+      flow.locally_owned_values(1) = flow.locally_owned_values(0);
+      flow.values_changed(1);
+      flow.locally_owned_values(0) = solution;
+      flow.values_changed(0);
+      return {control.last_step(), control.last_value()};
+    }
+
+
+
+    double
+    NavierStokesSystem::max_speed() const
+    {
+      double      fastest = 0.;
+      const auto &u       = flow.values(0);
+      for (const auto &cell : flow.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const double ux = u[cell->vertex_dof_index(v, 0)];
+              const double uy = u[cell->vertex_dof_index(v, 1)];
+              fastest         = std::max(fastest, std::sqrt(ux * ux + uy * uy));
+            }
+      return dealii::Utilities::MPI::max(fastest, grid.communicator());
+    }
+  } // namespace fluid
+} // namespace slidewave

@@ -1,0 +1,206 @@
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/vector.h>
+#include <slidewave/core/input_error.h>
+#include <slidewave/fluid/phase_field_system.h>
+
+namespace slidewave
+{
+  namespace fluid
+  {
+    PhaseFieldSystem::PhaseFieldSystem(grid::BackgroundGrid           &grid,
+                                       const grid::FiniteElementField &flow,
+                                       grid::FiniteElementField       &phase,
+                                       const FreeSurfaceParameters    &parameters)
+      : grid(grid)
+      , flow(flow)
+      , phase(phase)
+      , parameters(parameters)
+    {
+      grid.attach(*this);
+    }
+
+
+
+    void
+    PhaseFieldSystem::grid_ready()
+    {
+      setup_system();
+    }
+
+
+
+    void
+    PhaseFieldSystem::grid_changed()
+    {
+      setup_system();
+    }
+
+
+
+    void
+    PhaseFieldSystem::setup_system()
+    {
+      const MPI_Comm                 communicator = grid.communicator();
+      dealii::DynamicSparsityPattern pattern(phase.locally_relevant_dofs());
+      dealii::DoFTools::make_sparsity_pattern(phase.dof_handler(),
+                                              pattern,
+                                              phase.constraints(),
+                                              false);
+      dealii::SparsityTools::distribute_sparsity_pattern(pattern,
+                                                         phase.locally_owned_dofs(),
+                                                         communicator,
+                                                         phase.locally_relevant_dofs());
+      matrix.reinit(phase.locally_owned_dofs(), phase.locally_owned_dofs(), pattern, communicator);
+      rhs.reinit(phase.locally_owned_dofs(), communicator);
+      solution.reinit(phase.locally_owned_dofs(), communicator);
+      phase_old.reinit(phase.locally_owned_dofs(), phase.locally_relevant_dofs(), communicator);
+      phase_old = phase.values(0);
+    }
+
+
+
+    void
+    PhaseFieldSystem::assemble(const StepLengths &lengths, const double gamma)
+    {
+      const auto             &fe = phase.finite_element();
+      const dealii::QGauss<2> quadrature(2);
+      const unsigned int      n_q = quadrature.size(), n_dofs = fe.n_dofs_per_cell();
+      dealii::FEValues<2>     fv(fe,
+                             quadrature,
+                             dealii::update_values | dealii::update_gradients
+                               | dealii::update_JxW_values);
+      dealii::FEValues<2>     fv_flow(flow.finite_element(),
+                                  quadrature,
+                                  dealii::update_values | dealii::update_gradients);
+      const dealii::FEValuesExtractors::Vector velocity(0);
+
+      const double theta = parameters.theta, dt = lengths.dt;
+      const double w       = extrapolation_weight(lengths, theta);
+      const double epsilon = parameters.interface_thickness();
+      const double kappa   = gamma * epsilon; // the diffusivity of the profile
+      const bool   conservative
+        = parameters.phase_field_model == PhaseFieldModel::conservative_allen_cahn;
+
+      std::vector<dealii::Tensor<1, 2>>            u_n(n_q), u_old(n_q), grad_phi_n(n_q);
+      std::vector<double>                          phi_n(n_q), div_n(n_q), div_old(n_q);
+      std::vector<double>                          value(n_dofs), advect(n_dofs);
+      std::vector<dealii::Tensor<1, 2>>            gradient(n_dofs);
+      dealii::FullMatrix<double>                   local_matrix(n_dofs, n_dofs);
+      dealii::Vector<double>                       local_rhs(n_dofs);
+      std::vector<dealii::types::global_dof_index> indices(n_dofs);
+
+      matrix = 0.;
+      rhs    = 0.;
+      for (const auto &cell : phase.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fv.reinit(cell);
+            const dealii::DoFHandler<2>::active_cell_iterator flow_cell(&grid.triangulation(),
+                                                                        cell->level(),
+                                                                        cell->index(),
+                                                                        &flow.dof_handler());
+            fv_flow.reinit(flow_cell);
+            fv_flow[velocity].get_function_values(flow.values(0), u_n);
+            fv_flow[velocity].get_function_values(flow.values(1), u_old);
+            fv_flow[velocity].get_function_divergences(flow.values(0), div_n);
+            fv_flow[velocity].get_function_divergences(flow.values(1), div_old);
+            fv.get_function_values(phase_old, phi_n);
+            fv.get_function_gradients(phase_old, grad_phi_n);
+            const double h = cell->extent_in_direction(0);
+
+            local_matrix = 0.;
+            local_rhs    = 0.;
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const dealii::Tensor<1, 2> u_bar = u_n[q] + w * (u_n[q] - u_old[q]);
+                const double               speed = u_bar.norm();
+                // The advection in divergence form, div(u phi) = u . grad phi + phi div u:
+                // summed over the test functions it leaves only the flux through the
+                // sides, so the water volume is kept whatever the discrete divergence of
+                // the stabilized velocity.
+                const double div_bar = div_n[q] + w * (div_n[q] - div_old[q]);
+                // SUPG parameter of the interface equation (paper 002, Eq. 95).
+                const double tau = 1.
+                                   / std::sqrt(4. / (dt * dt) + 4. * speed * speed / (h * h)
+                                               + 16. * kappa * kappa / (h * h * h * h));
+                const double JxW = fv.JxW(q);
+                const double p   = phi_n[q];
+                // The explicit sharpening: the flux gamma phi (1 - phi) n of the
+                // conservative form, or the double-well reaction of Allen-Cahn.
+                const double               gradient_norm = grad_phi_n[q].norm();
+                const dealii::Tensor<1, 2> sharpening_flux
+                  = conservative && gradient_norm > 1e-8 / h ?
+                      gamma * p * (1. - p) * grad_phi_n[q] / gradient_norm :
+                      dealii::Tensor<1, 2>();
+                const double reaction
+                  = conservative ? 0. : -gamma * p * (1. - p) * (1. - 2. * p) / epsilon;
+                const double explicit_residual
+                  = p / dt - (1. - theta) * (u_bar * grad_phi_n[q] + p * div_bar);
+
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  {
+                    value[i]    = fv.shape_value(i, q);
+                    gradient[i] = fv.shape_grad(i, q);
+                    advect[i]   = u_bar * gradient[i] + value[i] * div_bar;
+                  }
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  {
+                    const double test = value[i] + tau * u_bar * gradient[i];
+                    for (unsigned int j = 0; j < n_dofs; ++j)
+                      local_matrix(i, j) += (test * (value[j] / dt + theta * advect[j])
+                                             + theta * kappa * gradient[i] * gradient[j])
+                                            * JxW;
+                    local_rhs(i) += (test * explicit_residual
+                                     - (1. - theta) * kappa * gradient[i] * grad_phi_n[q]
+                                     + gradient[i] * sharpening_flux + value[i] * reaction)
+                                    * JxW;
+                  }
+              }
+            cell->get_dof_indices(indices);
+            phase.constraints().distribute_local_to_global(
+              local_matrix, local_rhs, indices, matrix, rhs);
+          }
+      matrix.compress(dealii::VectorOperation::add);
+      rhs.compress(dealii::VectorOperation::add);
+    }
+
+
+
+    SolveReport
+    PhaseFieldSystem::step(const StepLengths &lengths, const double gamma)
+    {
+      phase_old = phase.values(0);
+      assemble(lengths, gamma);
+      solution                     = phase.locally_owned_values(0);
+      const double          target = parameters.linear_tolerance * rhs.l2_norm();
+      dealii::SolverControl control(parameters.max_iterations, std::max(target, 1e-300));
+      dealii::TrilinosWrappers::SolverGMRES     gmres(control);
+      dealii::TrilinosWrappers::PreconditionILU ilu;
+      ilu.initialize(matrix);
+      try
+        {
+          gmres.solve(matrix, solution, rhs, ilu);
+        }
+      catch (const dealii::SolverControl::NoConvergence &failure)
+        {
+          throw RunFailure("the phase field's linear solver (GMRES) did not converge: "
+                           "residual "
+                           + to_string(failure.last_residual) + " after "
+                           + std::to_string(failure.last_step) + " iterations");
+        }
+      phase.locally_owned_values(0) = solution;
+      phase.values_changed(0);
+      return {control.last_step(), control.last_value()};
+    }
+  } // namespace fluid
+} // namespace slidewave

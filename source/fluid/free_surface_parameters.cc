@@ -220,14 +220,18 @@ namespace slidewave
       {
         prm.declare_entry("Exact solution",
                           "none",
-                          Selection("none|hydrostatic|poiseuille"),
+                          Selection("none|hydrostatic|poiseuille|martin moyce"),
                           "'hydrostatic': water at rest under its surface eta: the pressure "
                           "at every node deeper than 3 epsilon against rho_l |g| (eta - y), "
                           "relative to rho_l |g| max depth, and the largest speed (the "
                           "spurious currents). 'poiseuille': a channel full of water between "
                           "no-slip bottom and top, open ends, gravity along x: u_x at every "
                           "node against g_x y (H - y) / (2 nu), relative to its largest "
-                          "value, at the end.");
+                          "value, at the end. 'martin moyce': the collapse of one water box "
+                          "of width a and height 2 a against the back (left) wall: the "
+                          "surge front x / a against the measurements of Martin and Moyce "
+                          "(1952) at their times T = t sqrt(2 g / a); the tolerance applies "
+                          "to the largest difference in x / a (no time shift).");
         prm.declare_entry("Tolerance",
                           "0",
                           Double(0.),
@@ -389,15 +393,30 @@ namespace slidewave
       prm.enter_subsection("Verification");
       {
         const std::string type = prm.get("Exact solution");
-        exact_solution         = type == "hydrostatic" ? FlowExactSolution::hydrostatic :
-                                 type == "poiseuille"  ? FlowExactSolution::poiseuille :
-                                                         FlowExactSolution::none;
+        exact_solution         = type == "hydrostatic"  ? FlowExactSolution::hydrostatic :
+                                 type == "poiseuille"   ? FlowExactSolution::poiseuille :
+                                 type == "martin moyce" ? FlowExactSolution::martin_moyce :
+                                                          FlowExactSolution::none;
         tolerance              = prm.get_double("Tolerance");
         if (exact_solution == FlowExactSolution::poiseuille
             && (boundaries[2] != FlowBoundary::no_slip || boundaries[3] != FlowBoundary::no_slip))
           throw InputError(section + "/Verification/Exact solution",
                            type,
                            "'poiseuille' with 'no slip' at Bottom and Top");
+        if (exact_solution == FlowExactSolution::martin_moyce)
+          {
+            const bool one_box = surface_elevation.empty() && water_boxes.size() == 1;
+            const auto width   = one_box ? water_boxes[0].upper[0] - water_boxes[0].lower[0] : 0.;
+            const auto height  = one_box ? water_boxes[0].upper[1] - water_boxes[0].lower[1] : 0.;
+            if (!one_box || std::abs(water_boxes[0].lower[0] - lower_left[0]) > 1e-9 * width
+                || std::abs(water_boxes[0].lower[1] - lower_left[1]) > 1e-9 * width
+                || std::abs(height - 2. * width) > 1e-6 * width)
+              throw InputError(section + "/Verification/Exact solution",
+                               type,
+                               "'martin moyce' with one water box (and no surface elevation) "
+                               "in the lower left corner, its height twice its width (the "
+                               "experiment's column)");
+          }
         if (exact_solution == FlowExactSolution::hydrostatic && surface_elevation.empty())
           throw InputError(section + "/Verification/Exact solution",
                            type,

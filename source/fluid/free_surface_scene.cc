@@ -7,6 +7,7 @@
 #include <slidewave/core/timed_run.h>
 #include <slidewave/fluid/free_surface_diagnostics.h>
 #include <slidewave/fluid/free_surface_scene.h>
+#include <slidewave/fluid/martin_moyce.h>
 #include <sstream>
 
 namespace slidewave
@@ -98,6 +99,10 @@ namespace slidewave
     FreeSurfaceScene::start(const StepInfo &info)
     {
       output.record_gauges(*solver, info.time);
+      if (parameters.exact_solution == FlowExactSolution::martin_moyce)
+        front_history.emplace_back(info.time,
+                                   diagnostics::front_position(solver->phase_field())
+                                     - parameters.lower_left[0]);
     }
 
 
@@ -151,6 +156,10 @@ namespace slidewave
       max_drift
         = std::max(max_drift, std::abs(solver->water_volume() - initial_volume) / initial_volume);
       output.record_gauges(*solver, info.time);
+      if (parameters.exact_solution == FlowExactSolution::martin_moyce)
+        front_history.emplace_back(info.time,
+                                   diagnostics::front_position(solver->phase_field())
+                                     - parameters.lower_left[0]);
     }
 
 
@@ -216,6 +225,22 @@ namespace slidewave
                         "%.3e",
                         error);
         }
+      else if (parameters.exact_solution == FlowExactSolution::martin_moyce)
+        {
+          const double a = parameters.water_boxes[0].upper[0] - parameters.water_boxes[0].lower[0];
+          const auto   c
+            = compare_with_martin_moyce(front_history, a, parameters.fluid.gravity.norm());
+          error = c.max_error;
+          std::snprintf(line,
+                        sizeof(line),
+                        "Martin and Moyce: %u points, front x/a largest difference %.3f, "
+                        "RMS %.3f; with the time shifted by %.3f, RMS %.3f",
+                        c.n_points,
+                        c.max_error,
+                        c.rms_error,
+                        c.best_shift,
+                        c.rms_error_shifted);
+        }
       if (is_writer)
         {
           std::printf("Water volume: largest drift %.3e of the initial %.6g m^2\n",
@@ -273,6 +298,13 @@ namespace slidewave
                  std::vector<double>{static_cast<double>(last_report.flow.iterations),
                                      static_cast<double>(last_report.phase.iterations)});
       record.put_files("fluid/field_files", output.files);
+      std::vector<double> history;
+      for (const auto &[t, x] : front_history)
+        {
+          history.push_back(t);
+          history.push_back(x);
+        }
+      record.put("fluid/front_history", history);
     }
 
 
@@ -307,6 +339,14 @@ namespace slidewave
       last_report.flow.iterations  = static_cast<unsigned int>(its[0]);
       last_report.phase.iterations = static_cast<unsigned int>(its[1]);
       output.files                 = record.get_files("fluid/field_files");
+      const auto &history          = record.get_vector("fluid/front_history");
+      if (history.size() % 2 != 0)
+        throw InputError("Checkpoint/Resume",
+                         "fluid/front_history",
+                         "pairs of time and front (damaged checkpoint)");
+      front_history.clear();
+      for (std::size_t k = 0; k < history.size(); k += 2)
+        front_history.emplace_back(history[k], history[k + 1]);
       output.open_gauges(true);
     }
   } // namespace fluid

@@ -100,6 +100,15 @@ namespace slidewave
                              dealii::update_values | dealii::update_gradients
                                | dealii::update_JxW_values);
       dealii::FEValues<2>     fv_phase(phase.finite_element(), quadrature, dealii::update_values);
+      const dealii::QGauss<1> face_quadrature(2);
+      dealii::FEFaceValues<2> fv_face(fe,
+                                      face_quadrature,
+                                      dealii::update_values | dealii::update_gradients
+                                        | dealii::update_normal_vectors
+                                        | dealii::update_JxW_values);
+      dealii::FEFaceValues<2> fv_face_phase(phase.finite_element(),
+                                            face_quadrature,
+                                            dealii::update_values);
       const dealii::FEValuesExtractors::Vector velocity(0);
       const dealii::FEValuesExtractors::Scalar pressure(2);
 
@@ -199,12 +208,65 @@ namespace slidewave
                                     * JxW;
                   }
               }
+            add_open_boundary_terms(
+              cell, phase_cell, fv_face, fv_face_phase, local_matrix, local_rhs);
             cell->get_dof_indices(indices);
             flow_constraints.distribute_local_to_global(
               local_matrix, local_rhs, indices, matrix, rhs);
           }
       matrix.compress(dealii::VectorOperation::add);
       rhs.compress(dealii::VectorOperation::add);
+    }
+
+
+
+    template <class FlowCell, class PhaseCell>
+    void
+    NavierStokesSystem::add_open_boundary_terms(const FlowCell             &cell,
+                                                const PhaseCell            &phase_cell,
+                                                dealii::FEFaceValues<2>    &fv_face,
+                                                dealii::FEFaceValues<2>    &fv_face_phase,
+                                                dealii::FullMatrix<double> &local_matrix,
+                                                dealii::Vector<double>     &local_rhs) const
+    {
+      // On an open side the symmetric viscous stress would hold the whole traction
+      // (2 mu eps(u) - p I) n at zero, which a fully developed outflow (Poiseuille) does
+      // not satisfy. The term - mu (grad u)^T n turns the natural condition into
+      // (mu grad u - p I) n = 0: the pressure is the ambient 0 and the velocity leaves
+      // without a normal gradient, as an outflow of water or air does.
+      const dealii::FEValuesExtractors::Vector velocity(0);
+      const double                             theta = parameters.theta;
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (!cell->at_boundary(f)
+              || parameters.boundaries[cell->face(f)->boundary_id()] != FlowBoundary::open)
+            continue;
+          fv_face.reinit(cell, f);
+          fv_face_phase.reinit(phase_cell, f);
+          const unsigned int                n_q = fv_face.n_quadrature_points;
+          std::vector<double>               phi(n_q);
+          std::vector<dealii::Tensor<2, 2>> grad_u_n(n_q);
+          fv_face_phase.get_function_values(phase.values(0), phi);
+          fv_face[velocity].get_function_gradients(flow.values(0), grad_u_n);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const double                mu           = parameters.fluid.viscosity(phi[q]);
+              const dealii::Tensor<1, 2> &normal       = fv_face.normal_vector(q);
+              const double                JxW          = fv_face.JxW(q);
+              const dealii::Tensor<1, 2>  old_traction = dealii::transpose(grad_u_n[q]) * normal;
+              for (unsigned int i = 0; i < local_rhs.size(); ++i)
+                {
+                  const dealii::Tensor<1, 2> w = fv_face[velocity].value(i, q);
+                  if (w.norm_square() == 0.)
+                    continue;
+                  for (unsigned int j = 0; j < local_rhs.size(); ++j)
+                    local_matrix(i, j)
+                      -= theta * mu * w
+                         * (dealii::transpose(fv_face[velocity].gradient(j, q)) * normal) * JxW;
+                  local_rhs(i) += (1. - theta) * mu * w * old_traction * JxW;
+                }
+            }
+        }
     }
 
 

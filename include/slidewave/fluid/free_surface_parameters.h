@@ -33,7 +33,8 @@ namespace slidewave
     {
       none,
       hydrostatic, ///< water at rest: p = rho_w g (eta - y), u = 0
-      poiseuille   ///< channel between no-slip bottom and top, driven by gravity along x
+      poiseuille,  ///< channel between no-slip bottom and top, driven by gravity along x
+      martin_moyce ///< collapse of a column of width a, height 2a: front against experiment
     };
 
     /** The two fluids and how density and viscosity go across the interface (paper 002,

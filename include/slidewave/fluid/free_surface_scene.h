@@ -103,6 +103,8 @@ namespace slidewave
       FluidStepReport                       last_report;
       /** The water volume at the start and the largest relative drift since. */
       double initial_volume = 0., max_drift = 0.;
+      /** (time, surge front) of every step (Martin and Moyce's verification). */
+      std::vector<std::pair<double, double>> front_history;
     };
   } // namespace fluid
 } // namespace slidewave

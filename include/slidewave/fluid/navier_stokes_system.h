@@ -2,9 +2,12 @@
 #define slidewave_fluid_navier_stokes_system_h
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 #include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/grid/finite_element_field.h>
 #include <slidewave/grid/grid_follower.h>
@@ -95,6 +98,17 @@ namespace slidewave
       /** Constraints, sparsity, matrix and vectors for the current cells. */
       void
       setup_system();
+
+      /** The open sides' share of a cell's matrix and right-hand side: the viscous
+       *  traction's transposed part, so that (mu grad u - p I) n = 0 there. */
+      template <class FlowCell, class PhaseCell>
+      void
+      add_open_boundary_terms(const FlowCell             &cell,
+                              const PhaseCell            &phase_cell,
+                              dealii::FEFaceValues<2>    &fv_face,
+                              dealii::FEFaceValues<2>    &fv_face_phase,
+                              dealii::FullMatrix<double> &local_matrix,
+                              dealii::Vector<double>     &local_rhs) const;
 
       /** The matrix and right-hand side of one step. */
       void

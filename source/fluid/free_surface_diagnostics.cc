@@ -7,6 +7,7 @@
 #include <limits>
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/fluid/free_surface_diagnostics.h>
+#include <slidewave/grid/tree_order.h>
 
 namespace slidewave
 {
@@ -161,17 +162,15 @@ namespace slidewave
         std::vector<dealii::Tensor<1, 2>>        u(quadrature.size());
         std::vector<double>                      phi(quadrature.size());
         double                                   energy = 0.;
-        for (const auto &cell : flow.dof_handler().active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              fv.reinit(cell);
-              fv_phase.reinit(dealii::DoFHandler<2>::active_cell_iterator(
-                &cell->get_triangulation(), cell->level(), cell->index(), &phase.dof_handler()));
-              fv[velocity].get_function_values(flow.values(0), u);
-              fv_phase.get_function_values(phase.values(0), phi);
-              for (unsigned int q = 0; q < quadrature.size(); ++q)
-                energy += 0.5 * fluid.density(phi[q]) * u[q].norm_square() * fv.JxW(q);
-            }
+        grid::for_each_owned_cell_in_tree_order(flow.dof_handler(), [&](const auto &cell) {
+          fv.reinit(cell);
+          fv_phase.reinit(dealii::DoFHandler<2>::active_cell_iterator(
+            &cell->get_triangulation(), cell->level(), cell->index(), &phase.dof_handler()));
+          fv[velocity].get_function_values(flow.values(0), u);
+          fv_phase.get_function_values(phase.values(0), phi);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            energy += 0.5 * fluid.density(phi[q]) * u[q].norm_square() * fv.JxW(q);
+        });
         return dealii::Utilities::MPI::sum(energy, flow.dof_handler().get_communicator());
       }
 

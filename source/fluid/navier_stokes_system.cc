@@ -14,6 +14,7 @@
 #include <deal.II/numerics/vector_tools.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/fluid/navier_stokes_system.h>
+#include <slidewave/grid/tree_order.h>
 
 namespace slidewave
 {
@@ -128,92 +129,87 @@ namespace slidewave
 
       matrix = 0.;
       rhs    = 0.;
-      for (const auto &cell : flow.dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned())
+      grid::for_each_owned_cell_in_tree_order(flow.dof_handler(), [&](const auto &cell) {
+        fv.reinit(cell);
+        const dealii::DoFHandler<2>::active_cell_iterator phase_cell(&grid.triangulation(),
+                                                                     cell->level(),
+                                                                     cell->index(),
+                                                                     &phase.dof_handler());
+        fv_phase.reinit(phase_cell);
+        fv[velocity].get_function_values(flow.values(0), u_n);
+        fv[velocity].get_function_values(flow.values(1), u_old);
+        fv[velocity].get_function_gradients(flow.values(0), grad_u_n);
+        fv_phase.get_function_values(phase.values(0), phi_new);
+        fv_phase.get_function_values(phase_old, phi_old);
+        const double h = cell->extent_in_direction(0);
+
+        local_matrix = 0.;
+        local_rhs    = 0.;
+        for (unsigned int q = 0; q < n_q; ++q)
           {
-            fv.reinit(cell);
-            const dealii::DoFHandler<2>::active_cell_iterator phase_cell(&grid.triangulation(),
-                                                                         cell->level(),
-                                                                         cell->index(),
-                                                                         &phase.dof_handler());
-            fv_phase.reinit(phase_cell);
-            fv[velocity].get_function_values(flow.values(0), u_n);
-            fv[velocity].get_function_values(flow.values(1), u_old);
-            fv[velocity].get_function_gradients(flow.values(0), grad_u_n);
-            fv_phase.get_function_values(phase.values(0), phi_new);
-            fv_phase.get_function_values(phase_old, phi_old);
-            const double h = cell->extent_in_direction(0);
+            const double               phi = theta * phi_new[q] + (1. - theta) * phi_old[q];
+            const double               rho = fluid.density(phi), mu = fluid.viscosity(phi);
+            const double               nu    = mu / rho;
+            const dealii::Tensor<1, 2> u_bar = u_n[q] + w * (u_n[q] - u_old[q]);
+            const double               speed = u_bar.norm();
+            // Tezduyar's parameters (paper 002, Eqs. 28-29): tau_m from the time step,
+            // the advection and the viscosity; tau_cont from the element Reynolds
+            // number.
+            const double tau_m = 1.
+                                 / std::sqrt(4. / (dt * dt) + 4. * speed * speed / (h * h)
+                                             + 16. * nu * nu / (h * h * h * h));
+            const double reynolds = speed * h / (2. * nu);
+            const double tau_cont
+              = parameters.grad_div ? 0.5 * h * speed * std::min(reynolds / 3., 1.) : 0.;
+            const double JxW = fv.JxW(q);
 
-            local_matrix = 0.;
-            local_rhs    = 0.;
-            for (unsigned int q = 0; q < n_q; ++q)
+            for (unsigned int i = 0; i < n_dofs; ++i)
               {
-                const double               phi = theta * phi_new[q] + (1. - theta) * phi_old[q];
-                const double               rho = fluid.density(phi), mu = fluid.viscosity(phi);
-                const double               nu    = mu / rho;
-                const dealii::Tensor<1, 2> u_bar = u_n[q] + w * (u_n[q] - u_old[q]);
-                const double               speed = u_bar.norm();
-                // Tezduyar's parameters (paper 002, Eqs. 28-29): tau_m from the time step,
-                // the advection and the viscosity; tau_cont from the element Reynolds
-                // number.
-                const double tau_m = 1.
-                                     / std::sqrt(4. / (dt * dt) + 4. * speed * speed / (h * h)
-                                                 + 16. * nu * nu / (h * h * h * h));
-                const double reynolds = speed * h / (2. * nu);
-                const double tau_cont
-                  = parameters.grad_div ? 0.5 * h * speed * std::min(reynolds / 3., 1.) : 0.;
-                const double JxW = fv.JxW(q);
-
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  {
-                    value_u[i]    = fv[velocity].value(i, q);
-                    sym_grad_u[i] = fv[velocity].symmetric_gradient(i, q);
-                    div_u[i]      = fv[velocity].divergence(i, q);
-                    advect_u[i]   = fv[velocity].gradient(i, q) * u_bar;
-                    value_p[i]    = fv[pressure].value(i, q);
-                    grad_p[i]     = fv[pressure].gradient(i, q);
-                  }
-                // The explicit part of the momentum residual: rho u^n / dt minus the
-                // (1 - theta) share of the advection, plus gravity.
-                const dealii::Tensor<1, 2> advect_n = grad_u_n[q] * u_bar;
-                const dealii::Tensor<2, 2> sym_grad_n
-                  = 0.5 * (grad_u_n[q] + dealii::transpose(grad_u_n[q]));
-                const dealii::Tensor<1, 2> explicit_residual
-                  = rho * u_n[q] / dt - (1. - theta) * rho * advect_n + rho * fluid.gravity;
-
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  {
-                    // SUPG and PSPG share the residual: the test function tau_m (u_bar .
-                    // grad) w + tau_m / rho grad q.
-                    const dealii::Tensor<1, 2> stabilized_test
-                      = tau_m * advect_u[i] + (tau_m / rho) * grad_p[i];
-                    for (unsigned int j = 0; j < n_dofs; ++j)
-                      {
-                        const dealii::Tensor<1, 2> implicit_residual
-                          = rho * value_u[j] / dt + theta * rho * advect_u[j] + grad_p[j];
-                        local_matrix(i, j)
-                          += (rho / dt * value_u[i] * value_u[j]
-                              + theta * rho * value_u[i] * advect_u[j]
-                              + theta * 2. * mu
-                                  * dealii::scalar_product(sym_grad_u[i], sym_grad_u[j])
-                              - div_u[i] * value_p[j] + value_p[i] * div_u[j]
-                              + tau_cont * rho * div_u[i] * div_u[j]
-                              + stabilized_test * implicit_residual)
-                             * JxW;
-                      }
-                    local_rhs(i) += (value_u[i] * explicit_residual
-                                     - (1. - theta) * 2. * mu
-                                         * dealii::scalar_product(sym_grad_u[i], sym_grad_n)
-                                     + stabilized_test * explicit_residual)
-                                    * JxW;
-                  }
+                value_u[i]    = fv[velocity].value(i, q);
+                sym_grad_u[i] = fv[velocity].symmetric_gradient(i, q);
+                div_u[i]      = fv[velocity].divergence(i, q);
+                advect_u[i]   = fv[velocity].gradient(i, q) * u_bar;
+                value_p[i]    = fv[pressure].value(i, q);
+                grad_p[i]     = fv[pressure].gradient(i, q);
               }
-            add_open_boundary_terms(
-              cell, phase_cell, fv_face, fv_face_phase, local_matrix, local_rhs);
-            cell->get_dof_indices(indices);
-            flow_constraints.distribute_local_to_global(
-              local_matrix, local_rhs, indices, matrix, rhs);
+            // The explicit part of the momentum residual: rho u^n / dt minus the
+            // (1 - theta) share of the advection, plus gravity.
+            const dealii::Tensor<1, 2> advect_n = grad_u_n[q] * u_bar;
+            const dealii::Tensor<2, 2> sym_grad_n
+              = 0.5 * (grad_u_n[q] + dealii::transpose(grad_u_n[q]));
+            const dealii::Tensor<1, 2> explicit_residual
+              = rho * u_n[q] / dt - (1. - theta) * rho * advect_n + rho * fluid.gravity;
+
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                // SUPG and PSPG share the residual: the test function tau_m (u_bar .
+                // grad) w + tau_m / rho grad q.
+                const dealii::Tensor<1, 2> stabilized_test
+                  = tau_m * advect_u[i] + (tau_m / rho) * grad_p[i];
+                for (unsigned int j = 0; j < n_dofs; ++j)
+                  {
+                    const dealii::Tensor<1, 2> implicit_residual
+                      = rho * value_u[j] / dt + theta * rho * advect_u[j] + grad_p[j];
+                    local_matrix(i, j)
+                      += (rho / dt * value_u[i] * value_u[j]
+                          + theta * rho * value_u[i] * advect_u[j]
+                          + theta * 2. * mu * dealii::scalar_product(sym_grad_u[i], sym_grad_u[j])
+                          - div_u[i] * value_p[j] + value_p[i] * div_u[j]
+                          + tau_cont * rho * div_u[i] * div_u[j]
+                          + stabilized_test * implicit_residual)
+                         * JxW;
+                  }
+                local_rhs(i)
+                  += (value_u[i] * explicit_residual
+                      - (1. - theta) * 2. * mu * dealii::scalar_product(sym_grad_u[i], sym_grad_n)
+                      + stabilized_test * explicit_residual)
+                     * JxW;
+              }
           }
+        add_open_boundary_terms(cell, phase_cell, fv_face, fv_face_phase, local_matrix, local_rhs);
+        cell->get_dof_indices(indices);
+        flow_constraints.distribute_local_to_global(local_matrix, local_rhs, indices, matrix, rhs);
+      });
       matrix.compress(dealii::VectorOperation::add);
       rhs.compress(dealii::VectorOperation::add);
     }

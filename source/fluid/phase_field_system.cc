@@ -12,6 +12,7 @@
 #include <deal.II/lac/vector.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/fluid/phase_field_system.h>
+#include <slidewave/grid/tree_order.h>
 
 namespace slidewave
 {
@@ -101,75 +102,73 @@ namespace slidewave
 
       matrix = 0.;
       rhs    = 0.;
-      for (const auto &cell : phase.dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned())
+      grid::for_each_owned_cell_in_tree_order(phase.dof_handler(), [&](const auto &cell) {
+        fv.reinit(cell);
+        const dealii::DoFHandler<2>::active_cell_iterator flow_cell(&grid.triangulation(),
+                                                                    cell->level(),
+                                                                    cell->index(),
+                                                                    &flow.dof_handler());
+        fv_flow.reinit(flow_cell);
+        fv_flow[velocity].get_function_values(flow.values(0), u_n);
+        fv_flow[velocity].get_function_values(flow.values(1), u_old);
+        fv_flow[velocity].get_function_divergences(flow.values(0), div_n);
+        fv_flow[velocity].get_function_divergences(flow.values(1), div_old);
+        fv.get_function_values(phase_old, phi_n);
+        fv.get_function_gradients(phase_old, grad_phi_n);
+        const double h = cell->extent_in_direction(0);
+
+        local_matrix = 0.;
+        local_rhs    = 0.;
+        for (unsigned int q = 0; q < n_q; ++q)
           {
-            fv.reinit(cell);
-            const dealii::DoFHandler<2>::active_cell_iterator flow_cell(&grid.triangulation(),
-                                                                        cell->level(),
-                                                                        cell->index(),
-                                                                        &flow.dof_handler());
-            fv_flow.reinit(flow_cell);
-            fv_flow[velocity].get_function_values(flow.values(0), u_n);
-            fv_flow[velocity].get_function_values(flow.values(1), u_old);
-            fv_flow[velocity].get_function_divergences(flow.values(0), div_n);
-            fv_flow[velocity].get_function_divergences(flow.values(1), div_old);
-            fv.get_function_values(phase_old, phi_n);
-            fv.get_function_gradients(phase_old, grad_phi_n);
-            const double h = cell->extent_in_direction(0);
+            const dealii::Tensor<1, 2> u_bar = u_n[q] + w * (u_n[q] - u_old[q]);
+            const double               speed = u_bar.norm();
+            // The advection in divergence form, div(u phi) = u . grad phi + phi div u:
+            // summed over the test functions it leaves only the flux through the
+            // sides, so the water volume is kept whatever the discrete divergence of
+            // the stabilized velocity.
+            const double div_bar = div_n[q] + w * (div_n[q] - div_old[q]);
+            // SUPG parameter of the interface equation (paper 002, Eq. 95).
+            const double tau = 1.
+                               / std::sqrt(4. / (dt * dt) + 4. * speed * speed / (h * h)
+                                           + 16. * kappa * kappa / (h * h * h * h));
+            const double JxW = fv.JxW(q);
+            const double p   = phi_n[q];
+            // The explicit sharpening: the flux gamma phi (1 - phi) n of the
+            // conservative form, or the double-well reaction of Allen-Cahn.
+            const double               gradient_norm = grad_phi_n[q].norm();
+            const dealii::Tensor<1, 2> sharpening_flux
+              = conservative && gradient_norm > 1e-8 / h ?
+                  gamma * p * (1. - p) * grad_phi_n[q] / gradient_norm :
+                  dealii::Tensor<1, 2>();
+            const double reaction
+              = conservative ? 0. : -gamma * p * (1. - p) * (1. - 2. * p) / epsilon;
+            const double explicit_residual
+              = p / dt - (1. - theta) * (u_bar * grad_phi_n[q] + p * div_bar);
 
-            local_matrix = 0.;
-            local_rhs    = 0.;
-            for (unsigned int q = 0; q < n_q; ++q)
+            for (unsigned int i = 0; i < n_dofs; ++i)
               {
-                const dealii::Tensor<1, 2> u_bar = u_n[q] + w * (u_n[q] - u_old[q]);
-                const double               speed = u_bar.norm();
-                // The advection in divergence form, div(u phi) = u . grad phi + phi div u:
-                // summed over the test functions it leaves only the flux through the
-                // sides, so the water volume is kept whatever the discrete divergence of
-                // the stabilized velocity.
-                const double div_bar = div_n[q] + w * (div_n[q] - div_old[q]);
-                // SUPG parameter of the interface equation (paper 002, Eq. 95).
-                const double tau = 1.
-                                   / std::sqrt(4. / (dt * dt) + 4. * speed * speed / (h * h)
-                                               + 16. * kappa * kappa / (h * h * h * h));
-                const double JxW = fv.JxW(q);
-                const double p   = phi_n[q];
-                // The explicit sharpening: the flux gamma phi (1 - phi) n of the
-                // conservative form, or the double-well reaction of Allen-Cahn.
-                const double               gradient_norm = grad_phi_n[q].norm();
-                const dealii::Tensor<1, 2> sharpening_flux
-                  = conservative && gradient_norm > 1e-8 / h ?
-                      gamma * p * (1. - p) * grad_phi_n[q] / gradient_norm :
-                      dealii::Tensor<1, 2>();
-                const double reaction
-                  = conservative ? 0. : -gamma * p * (1. - p) * (1. - 2. * p) / epsilon;
-                const double explicit_residual
-                  = p / dt - (1. - theta) * (u_bar * grad_phi_n[q] + p * div_bar);
-
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  {
-                    value[i]    = fv.shape_value(i, q);
-                    gradient[i] = fv.shape_grad(i, q);
-                    advect[i]   = u_bar * gradient[i] + value[i] * div_bar;
-                  }
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  {
-                    const double test = value[i] + tau * u_bar * gradient[i];
-                    for (unsigned int j = 0; j < n_dofs; ++j)
-                      local_matrix(i, j) += (test * (value[j] / dt + theta * advect[j])
-                                             + theta * kappa * gradient[i] * gradient[j])
-                                            * JxW;
-                    local_rhs(i) += (test * explicit_residual
-                                     - (1. - theta) * kappa * gradient[i] * grad_phi_n[q]
-                                     + gradient[i] * sharpening_flux + value[i] * reaction)
-                                    * JxW;
-                  }
+                value[i]    = fv.shape_value(i, q);
+                gradient[i] = fv.shape_grad(i, q);
+                advect[i]   = u_bar * gradient[i] + value[i] * div_bar;
               }
-            cell->get_dof_indices(indices);
-            phase.constraints().distribute_local_to_global(
-              local_matrix, local_rhs, indices, matrix, rhs);
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                const double test = value[i] + tau * u_bar * gradient[i];
+                for (unsigned int j = 0; j < n_dofs; ++j)
+                  local_matrix(i, j) += (test * (value[j] / dt + theta * advect[j])
+                                         + theta * kappa * gradient[i] * gradient[j])
+                                        * JxW;
+                local_rhs(i)
+                  += (test * explicit_residual - (1. - theta) * kappa * gradient[i] * grad_phi_n[q]
+                      + gradient[i] * sharpening_flux + value[i] * reaction)
+                     * JxW;
+              }
           }
+        cell->get_dof_indices(indices);
+        phase.constraints().distribute_local_to_global(
+          local_matrix, local_rhs, indices, matrix, rhs);
+      });
       matrix.compress(dealii::VectorOperation::add);
       rhs.compress(dealii::VectorOperation::add);
     }

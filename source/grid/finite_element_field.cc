@@ -1,10 +1,12 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <slidewave/grid/finite_element_field.h>
+#include <slidewave/grid/tree_order.h>
 
 namespace slidewave
 {
@@ -57,6 +59,11 @@ namespace slidewave
     FiniteElementField::setup_dofs()
     {
       dofs.distribute_dofs(*fe);
+      // Numbered along the cells' tree (p4est's space-filling curve), not in the order in
+      // which refinement happened to create the cells: a grid read from a checkpoint has
+      // the same numbers as the grid of the run that wrote it, so that an order-dependent
+      // preconditioner (ILU) and every sum over dofs repeat the uninterrupted run exactly.
+      dealii::DoFRenumbering::hierarchical(dofs);
       owned_dofs = dofs.locally_owned_dofs();
       dealii::DoFTools::extract_locally_relevant_dofs(dofs, relevant_dofs);
 
@@ -134,14 +141,12 @@ namespace slidewave
                                     dealii::update_values | dealii::update_JxW_values);
       std::vector<double>     u(quadrature.size());
       double                  sum = 0.;
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            fe_values.reinit(cell);
-            fe_values.get_function_values(ghosted_values[state], u);
-            for (unsigned int q = 0; q < quadrature.size(); ++q)
-              sum += u[q] * fe_values.JxW(q);
-          }
+      for_each_owned_cell_in_tree_order(dofs, [&](const auto &cell) {
+        fe_values.reinit(cell);
+        fe_values.get_function_values(ghosted_values[state], u);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          sum += u[q] * fe_values.JxW(q);
+      });
       return dealii::Utilities::MPI::sum(sum, grid.communicator());
     }
 

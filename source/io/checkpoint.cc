@@ -167,31 +167,38 @@ namespace slidewave
       // none has read anything of a damaged one. The verdict: the folder to read (empty:
       // none), what to print and, when there is none, why.
       std::vector<std::string> verdict(3);
+      // Rank 0 must reach the broadcast whatever happens, or the others wait forever.
       if (is_writer())
-        {
-          const std::string newest = problem_of(latest, check_record);
-          if (newest.empty())
-            verdict[0] = latest.string();
-          else if (!fs::exists(latest) && !fs::exists(previous))
-            verdict[2] = "a checkpoint in '" + latest.string()
-                         + "' (there is none: run the scene with checkpoints first)";
-          else
-            {
-              const std::string older = problem_of(previous, check_record);
-              if (!older.empty())
-                verdict[2] = "an intact checkpoint; '" + latest.string() + "': " + newest + "; '"
-                             + previous.string() + "': " + older;
-              else
-                {
-                  // A missing newest one is what a run killed between the two renames
-                  // leaves: the previous one is taken silently.
-                  verdict[0] = previous.string();
-                  if (fs::exists(latest))
-                    verdict[1] = "slidewave: the checkpoint '" + latest.string() + "' is damaged: "
-                                 + newest + "; resuming from '" + previous.string() + "'";
-                }
-            }
-        }
+        try
+          {
+            const std::string newest = problem_of(latest, check_record);
+            if (newest.empty())
+              verdict[0] = latest.string();
+            else if (!fs::exists(latest) && !fs::exists(previous))
+              verdict[2] = "a checkpoint in '" + latest.string()
+                           + "' (there is none: run the scene with checkpoints first)";
+            else
+              {
+                const std::string older = problem_of(previous, check_record);
+                if (!older.empty())
+                  verdict[2] = "an intact checkpoint; '" + latest.string() + "': " + newest + "; '"
+                               + previous.string() + "': " + older;
+                else
+                  {
+                    // A missing newest one is what a run killed between the two renames
+                    // leaves: the previous one is taken silently.
+                    verdict[0] = previous.string();
+                    if (fs::exists(latest))
+                      verdict[1] = "slidewave: the checkpoint '" + latest.string()
+                                   + "' is damaged: " + newest + "; resuming from '"
+                                   + previous.string() + "'";
+                  }
+              }
+          }
+        catch (const std::exception &error)
+          {
+            verdict = {"", "", std::string("a checkpoint that can be checked: ") + error.what()};
+          }
       verdict = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, verdict, 0);
       if (!verdict[2].empty())
         throw InputError(resume_parameter, "true", verdict[2]);

@@ -69,6 +69,8 @@ namespace slidewave
           text << "file " << name << ' ' << fs::file_size(path) << ' '
                << hexadecimal(checksum(path.string())) << '\n';
         }
+      // The end, so that a manifest cut short at a line's end is seen.
+      text << "end " << names.size() << '\n';
       std::ofstream out(fs::path(folder) / file_name);
       out << text.str();
       out.close();
@@ -91,9 +93,12 @@ namespace slidewave
       if (!std::getline(in, line) || line != header)
         return file_name + " is damaged (its first line is not '" + header + "')";
       unsigned int line_number = 1, n_files = 0;
-      bool         has_ranks = false;
+      bool         has_ranks = false, has_end = false;
       while (std::getline(in, line))
         {
+          if (has_end)
+            return file_name + " is damaged (line " + std::to_string(line_number + 1)
+                   + " follows its end)";
           ++line_number;
           std::istringstream words(line);
           std::string        kind, name, crc_text, rest;
@@ -108,6 +113,14 @@ namespace slidewave
               if (!(words >> ranks) || ranks == 0 || (words >> rest))
                 return where + " is not 'ranks N')";
               has_ranks = true;
+              continue;
+            }
+          if (kind == "end")
+            {
+              unsigned int n = 0;
+              if (!(words >> n) || n != n_files || (words >> rest))
+                return where + " is not 'end " + std::to_string(n_files) + "')";
+              has_end = true;
               continue;
             }
           if (kind != "file" || !(words >> name >> size >> crc_text) || (words >> rest)
@@ -130,6 +143,8 @@ namespace slidewave
                    + " says " + crc_text + ": its content has changed";
           ++n_files;
         }
+      if (!has_end)
+        return file_name + " is damaged (it has no 'end' line: it was cut short)";
       if (!has_ranks || n_files == 0)
         return file_name + " is damaged (it lists no files or no number of ranks)";
       return "";

@@ -18,6 +18,10 @@ of that output:
   - both damaged: --resume must exit 1 with a message naming both folders and what is
     wrong with each.
 
+Then FUZZ_CASES seeded random damages (a random file of the newest checkpoint truncated at
+a random length, a random byte changed, deleted, emptied or grown by garbage) must each be
+caught the same way.
+
 The messages (folder paths replaced by OUTPUT, the scene's by its name, byte counts and checksums by N and CRC,
 which depend on the number of ranks) and the verdicts make a report that must equal
 EXPECTED. Without the checks each case fails: the damaged newest checkpoint would be read
@@ -28,6 +32,7 @@ Usage: checkpoint_damage.py EXECUTABLE MPIEXEC RANKS SCENE DIRECTORY EXPECTED
 
 import difflib
 import os
+import random
 import re
 import shutil
 import subprocess
@@ -42,6 +47,7 @@ OUTPUT_FILES = ["statistics.csv", "maps/summary.csv", "maps/peak_flow_thickness.
                 "maps/deposit_thickness.tif"]
 
 
+FUZZ_CASES = 10
 ROUND_OFF = r" (load_imbalance|momentum_y|nodal_mass_error|nodal_momentum_error)=[^ ]*"
 
 
@@ -99,6 +105,15 @@ def flip_byte(name):
     return damage
 
 
+def cut_manifest(n_files):
+    """The manifest ends at a line's end, listing only the first files (all intact)."""
+    def damage(folder):
+        path = os.path.join(folder, "manifest.txt")
+        lines = open(path).read().splitlines()
+        open(path, "w").write("\n".join(lines[:2 + n_files]) + "\n")
+    return damage
+
+
 def edit_record(pattern, replacement):
     def damage(folder):
         path = os.path.join(folder, "record.txt")
@@ -117,6 +132,7 @@ DAMAGES = [
     ("state_hazard_maps.data truncated", truncate("state_hazard_maps.data")),
     ("a byte of state_variable.data flipped", flip_byte("state_variable.data")),
     ("manifest.txt deleted", delete("manifest.txt")),
+    ("manifest.txt cut short after its third file", cut_manifest(3)),
     ("record.txt: run/step without its count", edit_record(r"^run/step 1 ", "run/step ")),
     ("record.txt: run/step with an absurd count",
      edit_record(r"^run/step 1 ", "run/step 1000000000000000 ")),
@@ -184,6 +200,36 @@ def main():
         damage(os.path.join(both, "checkpoint.previous"))
         status, rows, err = run(both, True)
         report.append("  both damaged: exit %d, %s" % (status, normalized(err, both)))
+
+    # Seeded random damage of a random file of the newest checkpoint: each must be caught.
+    generator = random.Random(29)
+    names = sorted(os.listdir(os.path.join(pristine, "checkpoint")))
+    for index in range(FUZZ_CASES):
+        name = generator.choice(names)
+        kind = generator.choice(["truncated", "a byte flipped", "deleted", "emptied",
+                                 "grown by garbage"])
+        case = fresh("fuzz%02d" % index)
+        path = os.path.join(case, "checkpoint", name)
+        data = read(path)
+        if kind == "truncated":
+            data = data[:generator.randrange(len(data))]
+        elif kind == "a byte flipped":
+            at = generator.randrange(len(data))
+            data = data[:at] + bytes([data[at] ^ (1 + generator.randrange(255))]) + data[at + 1:]
+        elif kind == "emptied":
+            data = b""
+        elif kind == "grown by garbage":
+            data += bytes(generator.randrange(256) for _ in range(1 + generator.randrange(64)))
+        if kind == "deleted":
+            os.remove(path)
+        else:
+            open(path, "wb").write(data)
+        status, rows, err = run(case, True)
+        caught = (status == 0 and rows == reference_rows and same_files(case, reference)
+                  and normalized(err, case).startswith(
+                      "slidewave: the checkpoint 'OUTPUT/checkpoint' is damaged: "))
+        report.append("fuzz %d: %s %s: resumed from the previous checkpoint with a message: %s"
+                      % (index, name, kind, "yes" if caught else "no"))
 
     text = "\n".join(report) + "\n"
     open(os.path.join(directory, "report.txt"), "w").write(text)

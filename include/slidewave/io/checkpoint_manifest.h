@@ -18,6 +18,7 @@ namespace slidewave
      *     file record.txt 1534 9f3c12ab
      *     file state 3196 0c1d2e3f
      *     ...
+     *     end 8
      *
      * A checkpoint whose files do not match its manifest (missing, truncated, emptied,
      * changed) is damaged and is never handed to deal.II or p4est.

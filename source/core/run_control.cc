@@ -118,12 +118,40 @@ namespace slidewave
 
 
 
+  std::string
+  RunControl::check_record(const io::CheckpointRecord &record) const
+  {
+    // Every number of a record is finite (CheckpointRecord::read); get_unsigned() refuses
+    // what is not a whole number an unsigned int holds.
+    const double time     = record.get("run/time");
+    const double next     = record.get("run/next_output");
+    const double interval = record.get("run/output_interval");
+    record.get_unsigned("run/step");
+    record.get_unsigned("run/output_index");
+    const std::string in_record = "'record.txt' is damaged: ";
+    if (time < scene.start_time)
+      return in_record + "'run/time' is " + to_string(time) + " s, before the start time "
+             + to_string(scene.start_time) + " s";
+    if (next < time)
+      return in_record + "'run/next_output' is " + to_string(next) + " s, before 'run/time' "
+             + to_string(time) + " s";
+    if (interval < 0.)
+      return in_record + "'run/output_interval' is " + to_string(interval) + " s";
+    return "";
+  }
+
+
+
   void
   RunControl::resume(TimeSteppedScene &body, dealii::TimerOutput &timer)
   {
     io::CheckpointRecord record;
-    const std::string    prefix = io::CheckpointDirectory(scene.output_directory)
-                                 .read(body.checkpoint_signature(), record, growing_files(body));
+    const std::string    prefix
+      = io::CheckpointDirectory(scene.output_directory)
+          .read(body.checkpoint_signature(),
+                record,
+                growing_files(body),
+                [this](const io::CheckpointRecord &r) { return check_record(r); });
     state.time         = record.get("run/time");
     state.step         = record.get_unsigned("run/step");
     state.output_index = record.get_unsigned("run/output_index");

@@ -443,6 +443,7 @@ namespace slidewave
                  std::vector<double>{release_centre[0], release_centre[1]});
       record.put_files("depth_averaged/particle_files", particle_output.files);
       record.put_files("depth_averaged/grid_files", grid_output.files);
+      record.put("depth_averaged/hazard_maps", maps ? 1. : 0.);
     }
 
 
@@ -451,6 +452,8 @@ namespace slidewave
     DepthAveragedScene::save_data(const std::string &prefix)
     {
       solver->save(prefix);
+      if (maps)
+        maps->save(prefix + "_hazard_maps.data");
     }
 
 
@@ -475,6 +478,14 @@ namespace slidewave
       create_solver(timer_output);
       solver->load(prefix);
       io::restore_state(record, "depth_averaged", *solver);
+      // The maps go on from the checkpoint's (peaks, arrival times since the start); a
+      // checkpoint of a run without maps leaves them to cover the resumed part only.
+      if (maps && record.get("depth_averaged/hazard_maps") != 0.)
+        maps->load(prefix + "_hazard_maps.data");
+      else if (maps && dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::cerr << "slidewave: the checkpoint was written without hazard maps: the maps "
+                     "cover only the run from t = "
+                  << to_string(record.get("run/time")) << " s" << std::endl;
     }
   } // namespace depth_averaged
 } // namespace slidewave

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <deal.II/base/mpi.h>
 #include <fstream>
@@ -8,6 +9,7 @@
 #include <limits>
 #include <ogr_api.h>
 #include <ogr_srs_api.h>
+#include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/hazard_maps.h>
 #include <slidewave/terrain/elevation_grid.h>
 #include <slidewave/terrain/vector_polygons.h>
@@ -285,6 +287,68 @@ namespace slidewave
 
 
 
+    std::vector<std::vector<double>>
+    HazardMaps::combined() const
+    {
+      // Every node is owned by one rank: maxima, minima and sums over the ranks give the
+      // maps.
+      std::vector<std::vector<double>> maps{
+        peak_depth, peak_speed, peak_dynamic, peak_static, arrival, last_depth};
+      for (unsigned int m = 0; m < 4; ++m)
+        dealii::Utilities::MPI::max(maps[m], MPI_COMM_WORLD, maps[m]);
+      dealii::Utilities::MPI::min(maps[4], MPI_COMM_WORLD, maps[4]);
+      dealii::Utilities::MPI::sum(maps[5], MPI_COMM_WORLD, maps[5]);
+      return maps;
+    }
+
+
+
+    void
+    HazardMaps::save(const std::string &file) const
+    {
+      const auto maps = combined();
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      std::ofstream      out(file, std::ios::binary);
+      const std::int64_t nodes[2] = {nx + 1, ny + 1};
+      out.write(reinterpret_cast<const char *>(nodes), sizeof(nodes));
+      for (const auto &map : maps)
+        out.write(reinterpret_cast<const char *>(map.data()),
+                  static_cast<std::streamsize>(map.size() * sizeof(double)));
+      out.close();
+      if (!out)
+        throw std::runtime_error("cannot write " + file);
+    }
+
+
+
+    void
+    HazardMaps::load(const std::string &file)
+    {
+      std::ifstream in(file, std::ios::binary);
+      std::int64_t  nodes[2] = {0, 0};
+      in.read(reinterpret_cast<char *>(nodes), sizeof(nodes));
+      if (!in || nodes[0] != nx + 1 || nodes[1] != ny + 1)
+        throw InputError("Checkpoint/Resume",
+                         "true",
+                         "a readable checkpoint ('" + file + "' is not of " + std::to_string(nx + 1)
+                           + " x " + std::to_string(ny + 1) + " nodes)");
+      for (auto *map :
+           {&peak_depth, &peak_speed, &peak_dynamic, &peak_static, &arrival, &last_depth})
+        in.read(reinterpret_cast<char *>(map->data()),
+                static_cast<std::streamsize>(map->size() * sizeof(double)));
+      if (!in || in.peek() != std::char_traits<char>::eof())
+        throw InputError("Checkpoint/Resume",
+                         "true",
+                         "a readable checkpoint ('" + file + "' does not hold six maps of "
+                           + std::to_string(nx + 1) + " x " + std::to_string(ny + 1) + " nodes)");
+      // The last thickness is combined by a sum: one rank holds it.
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        std::fill(last_depth.begin(), last_depth.end(), 0.);
+    }
+
+
+
     void
     HazardMaps::write(const std::string         &directory,
                       const DepthAveragedSolver &solver,
@@ -292,24 +356,15 @@ namespace slidewave
                       const dealii::Point<2>    &release_centre,
                       const double               start_time) const
     {
-      // Every node is owned by one rank: maxima, minima and sums over the ranks give the
-      // maps.
-      std::vector<std::vector<double>> maps{peak_depth, peak_speed, peak_dynamic, peak_static};
-      for (auto &map : maps)
-        dealii::Utilities::MPI::max(map, MPI_COMM_WORLD, map);
-      std::vector<double> first = arrival, final_depth = last_depth;
-      dealii::Utilities::MPI::min(first, MPI_COMM_WORLD, first);
-      dealii::Utilities::MPI::sum(final_depth, MPI_COMM_WORLD, final_depth);
+      std::vector<std::vector<double>> maps = combined();
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
         return;
-      for (auto &t : first)
+      for (auto &t : maps[4])
         if (!std::isfinite(t))
           t = no_data;
-      for (auto &h : final_depth)
+      for (auto &h : maps[5])
         if (!(h > threshold))
           h = 0.;
-      maps.push_back(first);
-      maps.push_back(final_depth);
 
       // One pixel per node: the pixels' centres are the nodes.
       const double c = prm.cell_size;

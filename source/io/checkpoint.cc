@@ -3,8 +3,10 @@
 #include <deal.II/base/mpi.h>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <slidewave/core/input_error.h>
 #include <slidewave/io/checkpoint.h>
+#include <slidewave/io/checkpoint_manifest.h>
 #include <sstream>
 
 namespace slidewave
@@ -32,195 +34,53 @@ namespace slidewave
             c = '_';
         return relative;
       }
+
+      /** The damage an InputError of a CheckpointRecord describes, with the folder's path
+       *  taken out of the file names: "'record.txt' is damaged: ...". */
+      std::string
+      damage(const InputError &error, const fs::path &folder)
+      {
+        std::string       text   = error.allowed;
+        const std::string opener = "a readable checkpoint (";
+        if (text.compare(0, opener.size(), opener) == 0 && text.back() == ')')
+          text = text.substr(opener.size(), text.size() - opener.size() - 1);
+        const std::string prefix = (folder / "").string();
+        for (auto at = text.find(prefix); at != std::string::npos; at = text.find(prefix))
+          text.erase(at, prefix.size());
+        return text;
+      }
+
+      /** What is wrong with the checkpoint in @p folder (empty: it can be used): its files
+       *  against its manifest, then its record (readable, and what @p check_record says).
+       *  Nothing of it has been read by deal.II or p4est yet (one process). */
+      std::string
+      problem_of(const fs::path                                             &folder,
+                 const std::function<std::string(const CheckpointRecord &)> &check_record)
+      {
+        if (!fs::is_directory(folder))
+          return "it does not exist";
+        try
+          {
+            std::string problem = CheckpointManifest::check(folder.string());
+            if (!problem.empty())
+              return problem;
+            for (const std::string name : {"scene.txt", "record.txt"})
+              if (!fs::is_regular_file(folder / name))
+                return "'" + name + "' is missing";
+            CheckpointRecord record;
+            record.read((folder / "record.txt").string());
+            return check_record(record);
+          }
+        catch (const InputError &error)
+          {
+            return damage(error, folder);
+          }
+        catch (const std::exception &error)
+          {
+            return error.what();
+          }
+      }
     } // namespace
-
-
-
-    template <typename Value>
-    const Value &
-    CheckpointRecord::find_entry(const std::map<std::string, Value> &entries,
-                                 const std::string                  &name) const
-    {
-      const auto entry = entries.find(name);
-      if (entry == entries.end())
-        throw InputError(resume_parameter,
-                         "true",
-                         "a readable checkpoint ('" + file_name + "' is damaged: it has no '" + name
-                           + "')");
-      return entry->second;
-    }
-
-
-
-    void
-    CheckpointRecord::put(const std::string &name, const double value)
-    {
-      numbers[name] = {value};
-    }
-
-
-
-    void
-    CheckpointRecord::put(const std::string &name, const std::vector<double> &values)
-    {
-      numbers[name] = values;
-    }
-
-
-
-    void
-    CheckpointRecord::put_text(const std::string &name, const std::string &text)
-    {
-      texts[name] = text;
-    }
-
-
-
-    const std::vector<double> &
-    CheckpointRecord::get_vector(const std::string &name) const
-    {
-      return find_entry(numbers, name);
-    }
-
-
-
-    void
-    CheckpointRecord::put_files(const std::string                                 &name,
-                                const std::vector<std::pair<double, std::string>> &files)
-    {
-      std::vector<double> times;
-      std::string         names;
-      for (const auto &[time, file] : files)
-        {
-          times.push_back(time);
-          names += (names.empty() ? "" : "|") + file;
-        }
-      put(name + "/times", times);
-      put_text(name + "/names", names);
-    }
-
-
-
-    std::vector<std::pair<double, std::string>>
-    CheckpointRecord::get_files(const std::string &name) const
-    {
-      const auto                                 &times = get_vector(name + "/times");
-      const std::string                          &names = get_text(name + "/names");
-      std::vector<std::pair<double, std::string>> files;
-      std::size_t                                 begin = 0;
-      for (const double time : times)
-        {
-          const std::size_t end = std::min(names.find('|', begin), names.size());
-          if (begin > names.size())
-            throw InputError(resume_parameter,
-                             "true",
-                             "a readable checkpoint ('" + file_name + "' is damaged: '" + name
-                               + "' has fewer names than times)");
-          files.emplace_back(time, names.substr(begin, end - begin));
-          begin = end + 1;
-        }
-      return files;
-    }
-
-
-
-    double
-    CheckpointRecord::get(const std::string &name) const
-    {
-      const auto &values = get_vector(name);
-      if (values.size() != 1)
-        throw InputError(resume_parameter,
-                         "true",
-                         "a readable checkpoint ('" + file_name + "' is damaged: '" + name
-                           + "' is not one number)");
-      return values[0];
-    }
-
-
-
-    unsigned int
-    CheckpointRecord::get_unsigned(const std::string &name) const
-    {
-      return static_cast<unsigned int>(get(name));
-    }
-
-
-
-    const std::string &
-    CheckpointRecord::get_text(const std::string &name) const
-    {
-      return find_entry(texts, name);
-    }
-
-
-
-    void
-    CheckpointRecord::write(const std::string &name) const
-    {
-      std::ofstream out(name);
-      char          number[32];
-      for (const auto &[key, values] : numbers)
-        {
-          out << key << ' ' << values.size();
-          for (const double v : values)
-            {
-              // %.17g gives back every double exactly (and inf, nan as words strtod reads).
-              std::snprintf(number, sizeof(number), " %.17g", v);
-              out << number;
-            }
-          out << '\n';
-        }
-      for (const auto &[key, text] : texts)
-        out << key << " = " << text << '\n';
-      if (!out)
-        throw std::runtime_error("cannot write " + name);
-    }
-
-
-
-    void
-    CheckpointRecord::read(const std::string &name)
-    {
-      file_name = name;
-      numbers.clear();
-      texts.clear();
-      std::ifstream in(name);
-      const auto    damaged = [&]() {
-        return InputError(resume_parameter,
-                          "true",
-                          "a readable checkpoint ('" + name + "' is damaged)");
-      };
-      for (std::string line; std::getline(in, line);)
-        {
-          if (line.empty())
-            continue;
-          const auto space = line.find(' ');
-          if (space == std::string::npos)
-            throw damaged();
-          const std::string key = line.substr(0, space);
-          if (line.compare(space, 3, " = ") == 0)
-            {
-              texts[key] = line.substr(space + 3);
-              continue;
-            }
-          std::istringstream values(line.substr(space + 1));
-          std::size_t        n = 0;
-          if (!(values >> n))
-            throw damaged();
-          std::vector<double> &entry = numbers[key];
-          entry.resize(n);
-          for (double &v : entry)
-            {
-              std::string word;
-              if (!(values >> word))
-                throw damaged();
-              char *end = nullptr;
-              v         = std::strtod(word.c_str(), &end);
-              if (end == word.c_str() || *end != '\0')
-                throw damaged();
-            }
-        }
-    }
 
 
 
@@ -265,6 +125,8 @@ namespace slidewave
                                       const CheckpointRecord         &record,
                                       const std::vector<std::string> &growing_files) const
     {
+      // Every rank has written its part of the binary data before rank 0 lists the files.
+      MPI_Barrier(MPI_COMM_WORLD);
       if (is_writer())
         {
           const fs::path directory = output_directory, tmp = temporary_path(),
@@ -280,6 +142,9 @@ namespace slidewave
               fs::copy_file(directory / name,
                             tmp / copy_name(name),
                             fs::copy_options::overwrite_existing);
+          // Last, when every file is complete: their sizes and checksums.
+          CheckpointManifest::write(tmp.string(),
+                                    dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
           if (fs::exists(latest))
             {
               fs::remove_all(previous);
@@ -293,21 +158,68 @@ namespace slidewave
 
 
     std::string
-    CheckpointDirectory::read(const std::string              &signature,
-                              CheckpointRecord               &record,
-                              const std::vector<std::string> &growing_files) const
+    CheckpointDirectory::choose(
+      const std::function<std::string(const CheckpointRecord &)> &check_record) const
+    {
+      const fs::path directory = output_directory, latest = directory / "checkpoint",
+                     previous = directory / "checkpoint.previous";
+      // Rank 0 checks, every rank takes its verdict: all read the same checkpoint, and
+      // none has read anything of a damaged one. The verdict: the folder to read (empty:
+      // none), what to print and, when there is none, why.
+      std::vector<std::string> verdict(3);
+      // Rank 0 must reach the broadcast whatever happens, or the others wait forever.
+      if (is_writer())
+        try
+          {
+            const std::string newest = problem_of(latest, check_record);
+            if (newest.empty())
+              verdict[0] = latest.string();
+            else if (!fs::exists(latest) && !fs::exists(previous))
+              verdict[2] = "a checkpoint in '" + latest.string()
+                           + "' (there is none: run the scene with checkpoints first)";
+            else
+              {
+                const std::string older = problem_of(previous, check_record);
+                if (!older.empty())
+                  verdict[2] = "an intact checkpoint; '" + latest.string() + "': " + newest + "; '"
+                               + previous.string() + "': " + older;
+                else
+                  {
+                    // A missing newest one is what a run killed between the two renames
+                    // leaves: the previous one is taken silently.
+                    verdict[0] = previous.string();
+                    if (fs::exists(latest))
+                      verdict[1] = "slidewave: the checkpoint '" + latest.string()
+                                   + "' is damaged: " + newest + "; resuming from '"
+                                   + previous.string() + "'";
+                  }
+              }
+          }
+        catch (const std::exception &error)
+          {
+            verdict = {"", "", std::string("a checkpoint that can be checked: ") + error.what()};
+          }
+      verdict = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, verdict, 0);
+      if (!verdict[2].empty())
+        throw InputError(resume_parameter, "true", verdict[2]);
+      if (is_writer() && !verdict[1].empty())
+        std::cerr << verdict[1] << std::endl;
+      return verdict[0];
+    }
+
+
+
+    std::string
+    CheckpointDirectory::read(
+      const std::string                                          &signature,
+      CheckpointRecord                                           &record,
+      const std::vector<std::string>                             &growing_files,
+      const std::function<std::string(const CheckpointRecord &)> &check_record) const
     {
       const fs::path directory = output_directory;
-      fs::path       source    = directory / "checkpoint";
-      if (!fs::exists(source / "record.txt"))
-        source = directory / "checkpoint.previous";
-      if (!fs::exists(source / "record.txt"))
-        throw InputError(resume_parameter,
-                         "true",
-                         "a checkpoint in '" + (directory / "checkpoint").string()
-                           + "' (there is none: run the scene with checkpoints first)");
-      std::ifstream in(source / "scene.txt");
-      std::string   written_by;
+      const fs::path source    = choose(check_record);
+      std::ifstream  in(source / "scene.txt");
+      std::string    written_by;
       std::getline(in, written_by);
       if (written_by != signature)
         throw InputError(resume_parameter,

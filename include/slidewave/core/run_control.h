@@ -59,6 +59,12 @@ namespace slidewave
     void
     resume(TimeSteppedScene &body, dealii::TimerOutput &timer);
 
+    /** What is wrong with the run's entries (run/) of a checkpoint's @p record, empty when
+     *  they can be resumed: a time at or after the start time, whole step and output
+     *  counts, a next output time not before the time, an output interval not negative. */
+    std::string
+    check_record(const io::CheckpointRecord &record) const;
+
     std::vector<std::string>
     growing_files(const TimeSteppedScene &body) const;
 

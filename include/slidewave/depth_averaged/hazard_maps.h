@@ -46,11 +46,29 @@ namespace slidewave
             const dealii::Point<2>    &release_centre,
             double                     start_time) const;
 
+      /** The maps so far into @p file, for a checkpoint (collective: combined over the
+       *  ranks as write() does; rank 0 writes): the numbers of nodes along x and y, then
+       *  the six arrays of doubles (peaks, arrival, last thickness), in this machine's byte
+       *  order. */
+      void
+      save(const std::string &file) const;
+
+      /** What save() wrote (collective, every rank reads): the maps of a resumed run go on
+       *  from those of the run that wrote the checkpoint. Throws InputError when the file
+       *  cannot be read or is not of this grid. */
+      void
+      load(const std::string &file);
+
       /** The maps' names, in the order of the files. */
       static const std::vector<std::string> &
       names();
 
     private:
+      /** The six arrays combined over the ranks (max of the peaks, min of the arrival,
+       *  sum of the last thickness; collective), in the order of names(). */
+      std::vector<std::vector<double>>
+      combined() const;
+
       unsigned int
       node_index(const dealii::Point<2> &x) const;
 

@@ -1,9 +1,9 @@
 #ifndef slidewave_io_checkpoint_h
 #define slidewave_io_checkpoint_h
 
-#include <map>
+#include <functional>
+#include <slidewave/io/checkpoint_record.h>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace slidewave
@@ -11,69 +11,10 @@ namespace slidewave
   namespace io
   {
     /**
-     * The text part of a checkpoint: named numbers, lists of numbers and words, written with
-     * 17 significant digits so that every double comes back bit for bit. Each component of a
-     * scene puts what decides its future under names of its own ("water/depth", "run/time");
-     * a missing or malformed entry on reading is a damaged checkpoint.
-     */
-    class CheckpointRecord
-    {
-    public:
-      void
-      put(const std::string &name, double value);
-
-      void
-      put(const std::string &name, const std::vector<double> &values);
-
-      void
-      put_text(const std::string &name, const std::string &text);
-
-      /** A list of (time, file name) pairs, as a .pvd record keeps them (names without
-       *  '|' and line breaks). */
-      void
-      put_files(const std::string &name, const std::vector<std::pair<double, std::string>> &files);
-
-      double
-      get(const std::string &name) const;
-
-      unsigned int
-      get_unsigned(const std::string &name) const;
-
-      const std::vector<double> &
-      get_vector(const std::string &name) const;
-
-      const std::string &
-      get_text(const std::string &name) const;
-
-      std::vector<std::pair<double, std::string>>
-      get_files(const std::string &name) const;
-
-      /** One entry per line: "name n v1 ... vn" or "name = text". */
-      void
-      write(const std::string &file_name) const;
-
-      /** Reads what write() wrote; throws InputError naming @p file_name if it is damaged. */
-      void
-      read(const std::string &file_name);
-
-    private:
-      /** The entry @p name; throws InputError (a damaged checkpoint) when there is none. */
-      template <typename Value>
-      const Value &
-      find_entry(const std::map<std::string, Value> &entries, const std::string &name) const;
-
-      std::string                                file_name;
-      std::map<std::string, std::vector<double>> numbers;
-      std::map<std::string, std::string>         texts;
-    };
-
-
-
-    /**
      * Checkpoints of every kind of scene, in one directory layout: OUTPUT/checkpoint holds
      * the newest, OUTPUT/checkpoint.previous the one before. A checkpoint is written into
-     * OUTPUT/checkpoint.tmp and renamed when complete, so a run killed while writing leaves
-     * both earlier ones intact; resuming takes the newest complete one.
+     * OUTPUT/checkpoint.tmp, its manifest last, and renamed when complete, so a run killed
+     * while writing leaves both earlier ones intact; resuming takes the newest intact one.
      *
      * Each checkpoint holds:
      * - `scene.txt`: the signature of the scene that wrote it (its physics and whatever a
@@ -81,7 +22,9 @@ namespace slidewave
      * - the binary files a component writes under data_prefix() (material points: deal.II's
      *   triangulation and particle archive, readable on any number of ranks);
      * - copies of the output files that grow during a run (statistics.csv, gauges), taken
-     *   back on resume so that they continue from the checkpoint's step.
+     *   back on resume so that they continue from the checkpoint's step;
+     * - `manifest.txt`, written last: every other file with its size and CRC-32
+     *   (CheckpointManifest).
      */
     class CheckpointDirectory
     {
@@ -92,7 +35,8 @@ namespace slidewave
        * Writes a checkpoint (collective): creates the temporary directory, calls
        * @p write_data(data prefix) on every rank for the binary parts, then on rank 0
        * writes @p signature and @p record, copies @p growing_files (paths relative to the
-       * output directory, those that exist) and renames the directory into place.
+       * output directory, those that exist), writes the manifest of it all and renames the
+       * directory into place.
        */
       template <typename Function>
       void
@@ -107,18 +51,31 @@ namespace slidewave
       }
 
       /**
-       * Finds the newest complete checkpoint, checks that @p signature is the one it was
+       * Finds the newest intact checkpoint, checks that @p signature is the one it was
        * written with, reads its record and puts its copies of @p growing_files back into
-       * the output directory (collective). Throws InputError (parameter Checkpoint/Resume)
-       * when there is none, when it belongs to another scene or when it is damaged.
-       * Returns the prefix of its binary data.
+       * the output directory (collective). Returns the prefix of its binary data.
+       *
+       * Before anything of it is read, rank 0 verifies the newest checkpoint: its files
+       * against its manifest (CheckpointManifest: present, sizes, CRC-32), its record
+       * readable (counts that match the numbers, every number finite) and what
+       * @p check_record says of the record (empty: acceptable; or what is wrong, or an
+       * InputError). A damaged newest one is reported on the error stream and the
+       * previous one is taken if intact; every rank takes rank 0's verdict. Throws
+       * InputError (parameter Checkpoint/Resume) when there is none, when both are
+       * damaged (naming both and what is wrong with each) and when the one taken belongs
+       * to another scene.
        */
       std::string
-      read(const std::string              &signature,
-           CheckpointRecord               &record,
-           const std::vector<std::string> &growing_files) const;
+      read(const std::string                                          &signature,
+           CheckpointRecord                                           &record,
+           const std::vector<std::string>                             &growing_files,
+           const std::function<std::string(const CheckpointRecord &)> &check_record) const;
 
     private:
+      /** The folder of the checkpoint to resume from (collective; rank 0 decides). */
+      std::string
+      choose(const std::function<std::string(const CheckpointRecord &)> &check_record) const;
+
       std::string
       temporary_path() const;
 

@@ -220,7 +220,7 @@ namespace slidewave
       {
         prm.declare_entry("Exact solution",
                           "none",
-                          Selection("none|hydrostatic|poiseuille|martin moyce"),
+                          Selection("none|hydrostatic|poiseuille|martin moyce|standing wave"),
                           "'hydrostatic': water at rest under its surface eta: the pressure "
                           "at every node deeper than 3 epsilon against rho_l |g| (eta - y), "
                           "relative to rho_l |g| max depth, and the largest speed (the "
@@ -231,7 +231,12 @@ namespace slidewave
                           "of width a and height 2 a against the back (left) wall: the "
                           "surge front x / a against the measurements of Martin and Moyce "
                           "(1952) at their times T = t sqrt(2 g / a); the tolerance applies "
-                          "to the largest difference in x / a (no time shift).");
+                          "to the largest difference in x / a (no time shift). 'standing "
+                          "wave': a tank with free-slip sides started from 'Surface "
+                          "elevation' = d + A cos(pi (x - x0) / L): the period of the surface "
+                          "at the left wall against linear theory, omega^2 = g k tanh(k d), "
+                          "k = pi / L (d the mean of the surface elevation); the tolerance "
+                          "applies to the relative period error.");
         prm.declare_entry("Tolerance",
                           "0",
                           Double(0.),
@@ -393,10 +398,11 @@ namespace slidewave
       prm.enter_subsection("Verification");
       {
         const std::string type = prm.get("Exact solution");
-        exact_solution         = type == "hydrostatic"  ? FlowExactSolution::hydrostatic :
-                                 type == "poiseuille"   ? FlowExactSolution::poiseuille :
-                                 type == "martin moyce" ? FlowExactSolution::martin_moyce :
-                                                          FlowExactSolution::none;
+        exact_solution         = type == "hydrostatic"   ? FlowExactSolution::hydrostatic :
+                                 type == "poiseuille"    ? FlowExactSolution::poiseuille :
+                                 type == "martin moyce"  ? FlowExactSolution::martin_moyce :
+                                 type == "standing wave" ? FlowExactSolution::standing_wave :
+                                                           FlowExactSolution::none;
         tolerance              = prm.get_double("Tolerance");
         if (exact_solution == FlowExactSolution::poiseuille
             && (boundaries[2] != FlowBoundary::no_slip || boundaries[3] != FlowBoundary::no_slip))
@@ -417,6 +423,13 @@ namespace slidewave
                                "in the lower left corner, its height twice its width (the "
                                "experiment's column)");
           }
+        if (exact_solution == FlowExactSolution::standing_wave
+            && (surface_elevation.empty() || boundaries[0] != FlowBoundary::free_slip
+                || boundaries[1] != FlowBoundary::free_slip))
+          throw InputError(section + "/Verification/Exact solution",
+                           type,
+                           "'standing wave' with a 'Surface elevation' and 'free slip' at Left "
+                           "and Right");
         if (exact_solution == FlowExactSolution::hydrostatic && surface_elevation.empty())
           throw InputError(section + "/Verification/Exact solution",
                            type,

@@ -3,11 +3,13 @@
 #include <deal.II/base/mpi.h>
 #include <iostream>
 #include <slidewave/core/input_error.h>
+#include <slidewave/core/parsed_expression.h>
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/fluid/free_surface_diagnostics.h>
 #include <slidewave/fluid/free_surface_scene.h>
 #include <slidewave/fluid/martin_moyce.h>
+#include <slidewave/fluid/standing_wave.h>
 #include <sstream>
 
 namespace slidewave
@@ -99,10 +101,9 @@ namespace slidewave
     FreeSurfaceScene::start(const StepInfo &info)
     {
       output.record_gauges(*solver, info.time);
-      if (parameters.exact_solution == FlowExactSolution::martin_moyce)
-        front_history.emplace_back(info.time,
-                                   diagnostics::front_position(solver->phase_field())
-                                     - parameters.lower_left[0]);
+      if (parameters.exact_solution == FlowExactSolution::martin_moyce
+          || parameters.exact_solution == FlowExactSolution::standing_wave)
+        verification_history.emplace_back(info.time, verification_value());
     }
 
 
@@ -156,10 +157,34 @@ namespace slidewave
       max_drift
         = std::max(max_drift, std::abs(solver->water_volume() - initial_volume) / initial_volume);
       output.record_gauges(*solver, info.time);
-      if (parameters.exact_solution == FlowExactSolution::martin_moyce)
-        front_history.emplace_back(info.time,
-                                   diagnostics::front_position(solver->phase_field())
-                                     - parameters.lower_left[0]);
+      if (parameters.exact_solution == FlowExactSolution::martin_moyce
+          || parameters.exact_solution == FlowExactSolution::standing_wave)
+        verification_history.emplace_back(info.time, verification_value());
+    }
+
+
+
+    double
+    FreeSurfaceScene::verification_value() const
+    {
+      if (parameters.exact_solution == FlowExactSolution::standing_wave)
+        return diagnostics::surface_elevation(solver->phase_field(), parameters.lower_left[0]);
+      return diagnostics::front_position(solver->phase_field()) - parameters.lower_left[0];
+    }
+
+
+
+    double
+    FreeSurfaceScene::mean_surface_elevation() const
+    {
+      const ParsedExpression eta(section + "/Initial water/Surface elevation",
+                                 parameters.surface_elevation);
+      const unsigned int     n     = 1000;
+      const double           width = parameters.upper_right[0] - parameters.lower_left[0];
+      double                 sum   = 0.;
+      for (unsigned int i = 0; i < n; ++i)
+        sum += eta.value(parameters.lower_left[0] + (i + 0.5) * width / n);
+      return sum / n - parameters.lower_left[1];
     }
 
 
@@ -229,7 +254,7 @@ namespace slidewave
         {
           const double a = parameters.water_boxes[0].upper[0] - parameters.water_boxes[0].lower[0];
           const auto   c
-            = compare_with_martin_moyce(front_history, a, parameters.fluid.gravity.norm());
+            = compare_with_martin_moyce(verification_history, a, parameters.fluid.gravity.norm());
           error = c.max_error;
           std::snprintf(line,
                         sizeof(line),
@@ -240,6 +265,27 @@ namespace slidewave
                         c.rms_error,
                         c.best_shift,
                         c.rms_error_shifted);
+        }
+      else if (parameters.exact_solution == FlowExactSolution::standing_wave)
+        {
+          const double                           depth = mean_surface_elevation();
+          std::vector<std::pair<double, double>> eta;
+          for (const auto &[t, y] : verification_history)
+            eta.emplace_back(t, y - parameters.lower_left[1]);
+          const auto r = analyse_standing_wave(eta,
+                                               depth,
+                                               parameters.upper_right[0] - parameters.lower_left[0],
+                                               parameters.fluid.gravity.norm());
+          error        = r.n_crossings >= 3 ? std::abs(r.period_error) : 1.;
+          std::snprintf(line,
+                        sizeof(line),
+                        "Standing wave: %u zero crossings, period %.5f s against %.5f s "
+                        "(linear theory): relative error %.3e; amplitude after/before %.4f",
+                        r.n_crossings,
+                        r.period,
+                        r.exact_period,
+                        r.period_error,
+                        r.amplitude_ratio);
         }
       if (is_writer)
         {
@@ -299,12 +345,12 @@ namespace slidewave
                                      static_cast<double>(last_report.phase.iterations)});
       record.put_files("fluid/field_files", output.files);
       std::vector<double> history;
-      for (const auto &[t, x] : front_history)
+      for (const auto &[t, x] : verification_history)
         {
           history.push_back(t);
           history.push_back(x);
         }
-      record.put("fluid/front_history", history);
+      record.put("fluid/verification_history", history);
     }
 
 
@@ -339,14 +385,14 @@ namespace slidewave
       last_report.flow.iterations  = static_cast<unsigned int>(its[0]);
       last_report.phase.iterations = static_cast<unsigned int>(its[1]);
       output.files                 = record.get_files("fluid/field_files");
-      const auto &history          = record.get_vector("fluid/front_history");
+      const auto &history          = record.get_vector("fluid/verification_history");
       if (history.size() % 2 != 0)
         throw InputError("Checkpoint/Resume",
-                         "fluid/front_history",
+                         "fluid/verification_history",
                          "pairs of time and front (damaged checkpoint)");
-      front_history.clear();
+      verification_history.clear();
       for (std::size_t k = 0; k < history.size(); k += 2)
-        front_history.emplace_back(history[k], history[k + 1]);
+        verification_history.emplace_back(history[k], history[k + 1]);
       output.open_gauges(true);
     }
   } // namespace fluid

@@ -32,9 +32,10 @@ namespace slidewave
     enum class FlowExactSolution
     {
       none,
-      hydrostatic, ///< water at rest: p = rho_w g (eta - y), u = 0
-      poiseuille,  ///< channel between no-slip bottom and top, driven by gravity along x
-      martin_moyce ///< collapse of a column of width a, height 2a: front against experiment
+      hydrostatic,  ///< water at rest: p = rho_w g (eta - y), u = 0
+      poiseuille,   ///< channel between no-slip bottom and top, driven by gravity along x
+      martin_moyce, ///< collapse of a column of width a, height 2a: front against experiment
+      standing_wave ///< first sloshing mode of the tank: period against linear theory
     };
 
     /** The two fluids and how density and viscosity go across the interface (paper 002,

@@ -103,8 +103,17 @@ namespace slidewave
       FluidStepReport                       last_report;
       /** The water volume at the start and the largest relative drift since. */
       double initial_volume = 0., max_drift = 0.;
-      /** (time, surge front) of every step (Martin and Moyce's verification). */
-      std::vector<std::pair<double, double>> front_history;
+      /** (time, value) of every step for the verification: the surge front (Martin and
+       *  Moyce), the surface at the left wall (standing wave). */
+      std::vector<std::pair<double, double>> verification_history;
+
+      /** The verification's value now (collective). */
+      double
+      verification_value() const;
+
+      /** The mean of the initial surface elevation over the grid's width. */
+      double
+      mean_surface_elevation() const;
     };
   } // namespace fluid
 } // namespace slidewave

@@ -127,6 +127,59 @@ namespace slidewave
       dealii::Vector<double>            local_rhs(n_dofs);
       std::vector<dealii::types::global_dof_index> indices(n_dofs);
 
+      // The porous solid's fields at the quadrature points (only when there is one).
+      struct
+      {
+        std::vector<double>               n, inverse_permeability, div_v_s;
+        std::vector<dealii::Tensor<1, 2>> grad_n, v_s;
+      } porous_values;
+      std::unique_ptr<dealii::FEValues<2>> fv_scalar, fv_solid;
+      if (porous.active())
+        {
+          porous_values.n.assign(n_q, 1.);
+          porous_values.inverse_permeability.assign(n_q, 0.);
+          porous_values.div_v_s.assign(n_q, 0.);
+          porous_values.grad_n.assign(n_q, dealii::Tensor<1, 2>());
+          porous_values.v_s.assign(n_q, dealii::Tensor<1, 2>());
+          fv_scalar = std::make_unique<dealii::FEValues<2>>(
+            phase.finite_element(), quadrature, dealii::update_values | dealii::update_gradients);
+          if (porous.solid_velocity != nullptr)
+            fv_solid
+              = std::make_unique<dealii::FEValues<2>>(porous.solid_velocity->finite_element(),
+                                                      quadrature,
+                                                      dealii::update_values
+                                                        | dealii::update_gradients);
+        }
+      const auto evaluate_porous = [&](const auto &cell) {
+        const auto on = [&](const grid::FiniteElementField &field) {
+          return dealii::DoFHandler<2>::active_cell_iterator(&grid.triangulation(),
+                                                             cell->level(),
+                                                             cell->index(),
+                                                             &field.dof_handler());
+        };
+        if (porous.fluid_fraction != nullptr)
+          {
+            fv_scalar->reinit(on(*porous.fluid_fraction));
+            fv_scalar->get_function_values(porous.fluid_fraction->values(0), porous_values.n);
+            fv_scalar->get_function_gradients(porous.fluid_fraction->values(0),
+                                              porous_values.grad_n);
+          }
+        if (porous.inverse_permeability != nullptr)
+          {
+            fv_scalar->reinit(on(*porous.inverse_permeability));
+            fv_scalar->get_function_values(porous.inverse_permeability->values(0),
+                                           porous_values.inverse_permeability);
+          }
+        if (porous.solid_velocity != nullptr)
+          {
+            fv_solid->reinit(on(*porous.solid_velocity));
+            (*fv_solid)[velocity].get_function_values(porous.solid_velocity->values(0),
+                                                      porous_values.v_s);
+            (*fv_solid)[velocity].get_function_divergences(porous.solid_velocity->values(0),
+                                                           porous_values.div_v_s);
+          }
+      };
+
       matrix = 0.;
       rhs    = 0.;
       grid::for_each_owned_cell_in_tree_order(flow.dof_handler(), [&](const auto &cell) {
@@ -142,22 +195,36 @@ namespace slidewave
         fv_phase.get_function_values(phase.values(0), phi_new);
         fv_phase.get_function_values(phase_old, phi_old);
         const double h = cell->extent_in_direction(0);
+        if (porous.active())
+          evaluate_porous(cell);
 
         local_matrix = 0.;
         local_rhs    = 0.;
         for (unsigned int q = 0; q < n_q; ++q)
           {
-            const double               phi = theta * phi_new[q] + (1. - theta) * phi_old[q];
-            const double               rho = fluid.density(phi), mu = fluid.viscosity(phi);
-            const double               nu    = mu / rho;
-            const dealii::Tensor<1, 2> u_bar = u_n[q] + w * (u_n[q] - u_old[q]);
-            const double               speed = u_bar.norm();
+            const double phi = theta * phi_new[q] + (1. - theta) * phi_old[q];
+            const double rho = fluid.density(phi), mu = fluid.viscosity(phi);
+            const double nu = mu / rho;
+            // The porous solid: fluid fraction n, its gradient, the Darcy drag C and the
+            // solid's velocity (1, 0, 0, 0 in open water: every term below is then the
+            // open water's, bit for bit).
+            const double               n = porous.active() ? porous_values.n[q] : 1.;
+            const dealii::Tensor<1, 2> grad_n
+              = porous.active() ? porous_values.grad_n[q] : dealii::Tensor<1, 2>();
+            const double drag
+              = porous.active() ? n * n * mu * porous_values.inverse_permeability[q] : 0.;
+            const dealii::Tensor<1, 2> v_s
+              = porous.active() ? porous_values.v_s[q] : dealii::Tensor<1, 2>();
+            const double               div_v_s = porous.active() ? porous_values.div_v_s[q] : 0.;
+            const dealii::Tensor<1, 2> u_bar   = u_n[q] + w * (u_n[q] - u_old[q]);
+            const double               speed   = u_bar.norm();
             // Tezduyar's parameters (paper 002, Eqs. 28-29): tau_m from the time step,
             // the advection and the viscosity; tau_cont from the element Reynolds
             // number.
-            const double tau_m = 1.
-                                 / std::sqrt(4. / (dt * dt) + 4. * speed * speed / (h * h)
-                                             + 16. * nu * nu / (h * h * h * h));
+            const double tau_m
+              = 1.
+                / std::sqrt(4. / (dt * dt) + 4. * speed * speed / (h * h)
+                            + 16. * nu * nu / (h * h * h * h) + drag * drag / (n * n * rho * rho));
             const double reynolds = speed * h / (2. * nu);
             const double tau_cont
               = parameters.grad_div ? 0.5 * h * speed * std::min(reynolds / 3., 1.) : 0.;
@@ -177,32 +244,40 @@ namespace slidewave
             const dealii::Tensor<1, 2> advect_n = grad_u_n[q] * u_bar;
             const dealii::Tensor<2, 2> sym_grad_n
               = 0.5 * (grad_u_n[q] + dealii::transpose(grad_u_n[q]));
-            const dealii::Tensor<1, 2> explicit_residual
-              = rho * u_n[q] / dt - (1. - theta) * rho * advect_n + rho * fluid.gravity;
+            const dealii::Tensor<1, 2> explicit_residual = rho * u_n[q] / dt
+                                                           - (1. - theta) * rho * advect_n
+                                                           + rho * fluid.gravity + (drag / n) * v_s;
+            // The solid's share of the continuity, div((1 - n) v_s), known.
+            const double solid_divergence = (1. - n) * div_v_s - v_s * grad_n;
 
             for (unsigned int i = 0; i < n_dofs; ++i)
               {
                 // SUPG and PSPG share the residual: the test function tau_m (u_bar .
                 // grad) w + tau_m / rho grad q.
                 const dealii::Tensor<1, 2> stabilized_test
-                  = tau_m * advect_u[i] + (tau_m / rho) * grad_p[i];
+                  = n * (tau_m * advect_u[i] + (tau_m / rho) * grad_p[i]);
                 for (unsigned int j = 0; j < n_dofs; ++j)
                   {
                     const dealii::Tensor<1, 2> implicit_residual
-                      = rho * value_u[j] / dt + theta * rho * advect_u[j] + grad_p[j];
+                      = rho * value_u[j] / dt + theta * rho * advect_u[j] + grad_p[j]
+                        + (drag / n) * value_u[j];
                     local_matrix(i, j)
-                      += (rho / dt * value_u[i] * value_u[j]
-                          + theta * rho * value_u[i] * advect_u[j]
-                          + theta * 2. * mu * dealii::scalar_product(sym_grad_u[i], sym_grad_u[j])
-                          - div_u[i] * value_p[j] + value_p[i] * div_u[j]
-                          + tau_cont * rho * div_u[i] * div_u[j]
+                      += (n * rho / dt * value_u[i] * value_u[j]
+                          + n * theta * rho * value_u[i] * advect_u[j]
+                          + n * theta * 2. * mu
+                              * dealii::scalar_product(sym_grad_u[i], sym_grad_u[j])
+                          + drag * value_u[i] * value_u[j]
+                          - (n * div_u[i] + value_u[i] * grad_n) * value_p[j]
+                          + value_p[i] * (n * div_u[j] + value_u[j] * grad_n)
+                          + n * tau_cont * rho * div_u[i] * div_u[j]
                           + stabilized_test * implicit_residual)
                          * JxW;
                   }
                 local_rhs(i)
-                  += (value_u[i] * explicit_residual
-                      - (1. - theta) * 2. * mu * dealii::scalar_product(sym_grad_u[i], sym_grad_n)
-                      + stabilized_test * explicit_residual)
+                  += (n * value_u[i] * explicit_residual
+                      - n * (1. - theta) * 2. * mu
+                          * dealii::scalar_product(sym_grad_u[i], sym_grad_n)
+                      - value_p[i] * solid_divergence + stabilized_test * explicit_residual)
                      * JxW;
               }
           }

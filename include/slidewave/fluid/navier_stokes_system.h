@@ -34,6 +34,35 @@ namespace slidewave
       return lengths.dt_old > 0. ? theta * lengths.dt / lengths.dt_old : 0.;
     }
 
+    /**
+     * A porous solid in the flow: what the granular skeleton of issue 27 (or a fixed porous
+     * structure) gives the fluid. Every field is optional (nullptr: none, and nothing of it
+     * is evaluated): the fluid fraction n (1 where there is no solid: the effective
+     * 1 - theta (1 - n_s) of paper 002 with the solid volume fraction theta), the inverse
+     * permeability 1/kappa [1/m^2] (0: no drag) and the solid's velocity v_s (Q1^2, zero
+     * when absent). With them the momentum and continuity equations read
+     *
+     *   n rho (du/dt + u_bar . grad u) = -n grad p + div(2 mu n eps(u)) + n rho g
+     *                                    - C (u - v_s),    C = n^2 mu / kappa,
+     *   div(n u) + div((1 - n) v_s) = 0,
+     *
+     * the Darcy drag C of a saturated porous medium (paper 002, Eq. 3 without its
+     * Forchheimer part); with n = 1 and no drag, the equations of the open water.
+     */
+    struct PorousMedium
+    {
+      const grid::FiniteElementField *fluid_fraction       = nullptr;
+      const grid::FiniteElementField *inverse_permeability = nullptr;
+      const grid::FiniteElementField *solid_velocity       = nullptr;
+
+      bool
+      active() const
+      {
+        return fluid_fraction != nullptr || inverse_permeability != nullptr
+               || solid_velocity != nullptr;
+      }
+    };
+
     /** What a linear solve did. */
     struct SolveReport
     {
@@ -77,6 +106,14 @@ namespace slidewave
       SolveReport
       step(const VectorType &phase_old, const StepLengths &lengths);
 
+      /** The porous solid in the flow (the fields must live on the same grid and outlive
+       *  this object); default: none. */
+      void
+      set_porous_medium(const PorousMedium &medium)
+      {
+        porous = medium;
+      }
+
       /** The largest nodal speed of the newest state (collective). */
       double
       max_speed() const;
@@ -118,6 +155,7 @@ namespace slidewave
       grid::FiniteElementField              &flow;
       const grid::FiniteElementField        &phase;
       const FreeSurfaceParameters           &parameters;
+      PorousMedium                           porous;
       dealii::AffineConstraints<double>      flow_constraints;
       dealii::TrilinosWrappers::SparseMatrix matrix;
       VectorType                             rhs, solution;

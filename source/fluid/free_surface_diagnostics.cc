@@ -253,6 +253,27 @@ namespace slidewave
         error = dealii::Utilities::MPI::max(error, flow.dof_handler().get_communicator());
         return peak > 0. ? error / peak : error;
       }
+
+
+
+      double
+      darcy_error(const grid::FiniteElementField &flow, const FreeSurfaceParameters &parameters)
+      {
+        const dealii::Point<2> centre = 0.5 * (parameters.lower_left + parameters.upper_right);
+        const double           n      = evaluate_xy("Porosity", parameters.porosity, centre);
+        const double           kappa = evaluate_xy("Permeability", parameters.permeability, centre);
+        const auto            &fluid = parameters.fluid;
+        const double           exact
+          = fluid.water_density * fluid.gravity[0] * kappa / (n * fluid.water_viscosity);
+        const auto &values = flow.values(0);
+        double      error  = 0.;
+        for (const auto &cell : flow.dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int v : cell->vertex_indices())
+              error = std::max(error, std::abs(values[cell->vertex_dof_index(v, 0)] - exact));
+        error = dealii::Utilities::MPI::max(error, flow.dof_handler().get_communicator());
+        return exact != 0. ? error / std::abs(exact) : error;
+      }
     } // namespace diagnostics
   }   // namespace fluid
 } // namespace slidewave

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <deal.II/base/function_parser.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/fluid/free_surface_parameters.h>
@@ -10,6 +11,28 @@ namespace slidewave
 {
   namespace fluid
   {
+    double
+    evaluate_xy(const std::string      &parameter,
+                const std::string      &expression,
+                const dealii::Point<2> &p)
+    {
+      try
+        {
+          dealii::FunctionParser<2> function(1);
+          function.initialize("x,y", expression, {});
+          return function.value(p);
+        }
+      catch (const std::exception &error)
+        {
+          throw InputError(parameter,
+                           expression,
+                           "an expression of x and y in muparser syntax ("
+                             + std::string(error.what()).substr(0, 200) + ")");
+        }
+    }
+
+
+
     namespace
     {
       const std::string section = "Free surface flow";
@@ -122,6 +145,24 @@ namespace slidewave
       }
       prm.leave_subsection();
 
+      prm.enter_subsection("Porous structure");
+      {
+        prm.declare_entry("Porosity",
+                          "",
+                          Anything(),
+                          "n(x, y) of a fixed porous structure in the flow (an expression of "
+                          "x and y, values in (0, 1]; 1: open water; empty: no structure, "
+                          "and nothing of it is computed). Inside it the water feels the "
+                          "Darcy drag n^2 mu / kappa (u) and flows through the pores: "
+                          "doc/free-surface-flow.md.");
+        prm.declare_entry("Permeability",
+                          "1e-8",
+                          Anything(),
+                          "kappa(x, y) [m^2] of the structure where n < 1 (an expression of x "
+                          "and y, positive).");
+      }
+      prm.leave_subsection();
+
       prm.enter_subsection("Phase field");
       {
         prm.declare_entry("Model",
@@ -220,7 +261,7 @@ namespace slidewave
       {
         prm.declare_entry("Exact solution",
                           "none",
-                          Selection("none|hydrostatic|poiseuille|martin moyce|standing wave"),
+                          Selection("none|hydrostatic|poiseuille|martin moyce|standing wave|darcy"),
                           "'hydrostatic': water at rest under its surface eta: the pressure "
                           "at every node deeper than 3 epsilon against rho_l |g| (eta - y), "
                           "relative to rho_l |g| max depth, and the largest speed (the "
@@ -236,7 +277,10 @@ namespace slidewave
                           "elevation' = d + A cos(pi (x - x0) / L): the period of the surface "
                           "at the left wall against linear theory, omega^2 = g k tanh(k d), "
                           "k = pi / L (d the mean of the surface elevation); the tolerance "
-                          "applies to the relative period error.");
+                          "applies to the relative period error. 'darcy': a channel full of "
+                          "water and of a porous structure (n, kappa uniform), free-slip "
+                          "bottom and top, open ends, gravity along x: u_x at every node "
+                          "against rho_l g_x kappa / (n mu_l), relative, at the end.");
         prm.declare_entry("Tolerance",
                           "0",
                           Double(0.),
@@ -337,6 +381,30 @@ namespace slidewave
       }
       prm.leave_subsection();
 
+      prm.enter_subsection("Porous structure");
+      {
+        porosity     = prm.get("Porosity");
+        permeability = prm.get("Permeability");
+        if (porosity.find_first_not_of(" \t") == std::string::npos)
+          porosity.clear();
+        else
+          {
+            const dealii::Point<2> centre = 0.5 * (lower_left + upper_right);
+            const double n = evaluate_xy(section + "/Porous structure/Porosity", porosity, centre);
+            const double k
+              = evaluate_xy(section + "/Porous structure/Permeability", permeability, centre);
+            if (!(n > 0. && n <= 1.))
+              throw InputError(section + "/Porous structure/Porosity",
+                               porosity,
+                               "values in (0, 1] (it is " + to_string(n) + " at the centre)");
+            if (!(k > 0.))
+              throw InputError(section + "/Porous structure/Permeability",
+                               permeability,
+                               "positive values [m^2] (it is " + to_string(k) + " at the centre)");
+          }
+      }
+      prm.leave_subsection();
+
       prm.enter_subsection("Phase field");
       {
         phase_field_model  = prm.get("Model") == "Allen-Cahn" ?
@@ -402,6 +470,7 @@ namespace slidewave
                                  type == "poiseuille"    ? FlowExactSolution::poiseuille :
                                  type == "martin moyce"  ? FlowExactSolution::martin_moyce :
                                  type == "standing wave" ? FlowExactSolution::standing_wave :
+                                 type == "darcy"         ? FlowExactSolution::darcy :
                                                            FlowExactSolution::none;
         tolerance              = prm.get_double("Tolerance");
         if (exact_solution == FlowExactSolution::poiseuille
@@ -430,6 +499,10 @@ namespace slidewave
                            type,
                            "'standing wave' with a 'Surface elevation' and 'free slip' at Left "
                            "and Right");
+        if (exact_solution == FlowExactSolution::darcy && porosity.empty())
+          throw InputError(section + "/Verification/Exact solution",
+                           type,
+                           "'darcy' with a 'Porous structure/Porosity'");
         if (exact_solution == FlowExactSolution::hydrostatic && surface_elevation.empty())
           throw InputError(section + "/Verification/Exact solution",
                            type,

@@ -287,6 +287,15 @@ namespace slidewave
                         r.period_error,
                         r.amplitude_ratio);
         }
+      else if (parameters.exact_solution == FlowExactSolution::darcy)
+        {
+          error = diagnostics::darcy_error(solver->flow_field(), parameters);
+          std::snprintf(line,
+                        sizeof(line),
+                        "Darcy flow: largest nodal error of u_x relative to rho g kappa / "
+                        "(n mu) = %.3e",
+                        error);
+        }
       if (is_writer)
         {
           std::printf("Water volume: largest drift %.3e of the initial %.6g m^2\n",

@@ -1,8 +1,11 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/function.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_q.h>
 #include <limits>
+#include <slidewave/core/input_error.h>
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/fluid/free_surface_solver.h>
 
@@ -97,6 +100,16 @@ namespace slidewave
       // The work of a cell: its flow and phase dofs (12 + 4 of Q1) in the two solves.
       flow.set_weight_per_dof(100);
       phase.set_weight_per_dof(100);
+      // A scene without a porous structure allocates and evaluates nothing of it.
+      if (!parameters.porosity.empty())
+        {
+          fluid_fraction       = std::make_unique<grid::FiniteElementField>(grid);
+          inverse_permeability = std::make_unique<grid::FiniteElementField>(grid);
+          PorousMedium medium;
+          medium.fluid_fraction       = fluid_fraction.get();
+          medium.inverse_permeability = inverse_permeability.get();
+          flow_system.set_porous_medium(medium);
+        }
     }
 
 
@@ -105,6 +118,41 @@ namespace slidewave
     FreeSurfaceSolver::set_initial_state()
     {
       phase.interpolate(InitialPhase(parameters));
+      if (fluid_fraction)
+        {
+          // n in (0, 1] and kappa > 0 everywhere: values outside are refused, naming a
+          // point where they occur.
+          const std::string porosity_name     = "Free surface flow/Porous structure/Porosity";
+          const std::string permeability_name = "Free surface flow/Porous structure/Permeability";
+          dealii::FunctionParser<2> n(1), kappa(1);
+          n.initialize("x,y", parameters.porosity, {});
+          kappa.initialize("x,y", parameters.permeability, {});
+          std::string problem;
+          const auto  check
+            = [&](const bool ok, const std::string &what, const dealii::Point<2> &p) {
+                if (!ok && problem.empty())
+                  problem = what + " at (" + to_string(p[0]) + ", " + to_string(p[1]) + ")";
+              };
+          fluid_fraction->interpolate(
+            dealii::ScalarFunctionFromFunctionObject<2>([&](const dealii::Point<2> &p) {
+              const double value = n.value(p);
+              check(value > 0. && value <= 1., porosity_name + " = " + to_string(value), p);
+              return std::clamp(value, 1e-3, 1.);
+            }));
+          inverse_permeability->interpolate(
+            dealii::ScalarFunctionFromFunctionObject<2>([&](const dealii::Point<2> &p) {
+              const double k = kappa.value(p);
+              check(k > 0., permeability_name + " = " + to_string(k), p);
+              return n.value(p) < 1. && k > 0. ? 1. / k : 0.;
+            }));
+          const bool bad
+            = dealii::Utilities::MPI::max(problem.empty() ? 0 : 1, grid.communicator());
+          if (bad)
+            throw InputError(problem.empty() ? porosity_name :
+                                               problem.substr(0, problem.find(" = ")),
+                             problem.empty() ? "(on another rank)" : problem,
+                             "porosity in (0, 1] and permeability > 0 everywhere in the grid");
+        }
       for (unsigned int s = 0; s < flow.n_states(); ++s)
         {
           flow.locally_owned_values(s) = 0.;

@@ -54,6 +54,10 @@ namespace slidewave
       double
       poiseuille_error(const grid::FiniteElementField &flow,
                        const FreeSurfaceParameters    &parameters);
+      /** Darcy flow: the largest error of the nodal u_x against rho_l g_x kappa /
+       *  (n mu_l) (n, kappa of the porous structure at the grid's centre), relative. */
+      double
+      darcy_error(const grid::FiniteElementField &flow, const FreeSurfaceParameters &parameters);
     } // namespace diagnostics
   }   // namespace fluid
 } // namespace slidewave

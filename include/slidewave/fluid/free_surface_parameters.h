@@ -13,6 +13,13 @@ namespace slidewave
 {
   namespace fluid
   {
+    /** The value at @p p of the expression of x and y @p expression; a malformed one is
+     *  an InputError naming @p parameter. */
+    double
+    evaluate_xy(const std::string      &parameter,
+                const std::string      &expression,
+                const dealii::Point<2> &p);
+
     /** What a side of the tank does to the flow. */
     enum class FlowBoundary
     {
@@ -32,10 +39,11 @@ namespace slidewave
     enum class FlowExactSolution
     {
       none,
-      hydrostatic,  ///< water at rest: p = rho_w g (eta - y), u = 0
-      poiseuille,   ///< channel between no-slip bottom and top, driven by gravity along x
-      martin_moyce, ///< collapse of a column of width a, height 2a: front against experiment
-      standing_wave ///< first sloshing mode of the tank: period against linear theory
+      hydrostatic,   ///< water at rest: p = rho_w g (eta - y), u = 0
+      poiseuille,    ///< channel between no-slip bottom and top, driven by gravity along x
+      martin_moyce,  ///< collapse of a column of width a, height 2a: front against experiment
+      standing_wave, ///< first sloshing mode of the tank: period against linear theory
+      darcy          ///< uniform flow through a porous medium driven by gravity along x
     };
 
     /** The two fluids and how density and viscosity go across the interface (paper 002,
@@ -110,6 +118,10 @@ namespace slidewave
       /** The water surface y = eta(x) (empty: none) and rectangles of water. */
       std::string           surface_elevation;
       std::vector<WaterBox> water_boxes;
+
+      /** A fixed porous structure: porosity n(x, y) and permeability kappa(x, y) [m^2]
+       *  (empty porosity: none). */
+      std::string porosity, permeability = "1e-8";
 
       PhaseFieldModel phase_field_model  = PhaseFieldModel::conservative_allen_cahn;
       double          thickness_in_cells = 1.;

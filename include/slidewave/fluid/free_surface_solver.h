@@ -116,6 +116,8 @@ namespace slidewave
       grid::FiniteElementField     phase;
       NavierStokesSystem           flow_system;
       PhaseFieldSystem             phase_system;
+      /** The fixed porous structure's fields (only with 'Porous structure/Porosity'). */
+      std::unique_ptr<grid::FiniteElementField> fluid_fraction, inverse_permeability;
     };
   } // namespace fluid
 } // namespace slidewave

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cpl_conv.h>
 #include <cpl_error.h>
+#include <filesystem>
 #include <gdal.h>
 #include <gdal_utils.h>
 #include <gdalwarper.h>
@@ -278,10 +279,21 @@ namespace slidewave
       CPLSetThreadLocalConfigOption("AAIGRID_DATATYPE", "Float64");
       source = GDALOpen(filename.c_str(), GA_ReadOnly);
       if (source == nullptr)
-        throw InputError(parameter,
-                         filename,
-                         "a raster file GDAL can read (GeoTIFF, ESRI ASCII grid, ...): it "
-                         "does not exist or is not a raster");
+        {
+          // What GDAL says of a file that is there (a header it cannot parse, ...); of a
+          // missing one it would only repeat the path.
+          std::error_code error;
+          if (std::filesystem::exists(filename, error) && !diagnostics.text().empty())
+            throw InputError(parameter,
+                             filename,
+                             "a raster file GDAL can read (GeoTIFF, ESRI ASCII grid, ...; GDAL "
+                             "cannot read this one: "
+                               + diagnostics.text() + ")");
+          throw InputError(parameter,
+                           filename,
+                           "a raster file GDAL can read (GeoTIFF, ESRI ASCII grid, ...): it "
+                           "does not exist or is not a raster");
+        }
       ++n_opens;
       if (GDALGetRasterCount(source) < 1)
         throw InputError(parameter, filename, "a raster with at least one band");

@@ -362,6 +362,9 @@ namespace slidewave
       const int  field = numeric_field(*dataset, layer, attribute, parameter, filename);
 
       std::vector<VectorPolygon> polygons;
+      // What GDAL says while it reads the features (a coordinate that is not a number, a
+      // ring not closed) is kept for the message, not printed.
+      const GdalDiagnostics diagnostics;
       layer.ResetReading();
       for (const auto &feature : layer)
         {
@@ -375,7 +378,10 @@ namespace slidewave
           append_polygons(*linear, value, parameter, filename, fid, polygons);
         }
       if (polygons.empty())
-        throw InputError(parameter, filename, "a layer with at least one polygon (it has none)");
+        throw InputError(parameter,
+                         filename,
+                         "a layer with at least one polygon (it has none" + diagnostics.note()
+                           + ")");
       return polygons;
     }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cpl_conv.h>
 #include <cpl_error.h>
+#include <cpl_string.h>
 #include <filesystem>
 #include <gdal.h>
 #include <gdal_utils.h>
@@ -178,17 +179,33 @@ namespace slidewave
       /** Refuses a raster without a coordinate reference system (@p crs null) unless its
        *  coordinates are to be taken as metres. */
       void
-      require_crs(const OGRSpatialReferenceH crs,
+      require_crs(const GDALDatasetH         source,
+                  const OGRSpatialReferenceH crs,
                   const RasterOptions       &options,
                   const std::string         &parameter,
                   const std::string         &filename)
       {
-        if (crs == nullptr && !options.assume_metric)
-          throw InputError(parameter,
-                           filename,
-                           "a raster with a coordinate reference system (this one has none: "
-                           "set 'Raster without CRS = metric' to take its coordinates as "
-                           "metres)");
+        if (crs != nullptr || options.assume_metric)
+          return;
+        // A .prj next to the file that GDAL could not read says nothing is a mistake.
+        std::string prj;
+        char      **files = GDALGetFileList(source);
+        for (char **file = files; file != nullptr && *file != nullptr; ++file)
+          if (EQUAL(CPLGetExtension(*file), "prj"))
+            prj = std::filesystem::path(*file).filename().string();
+        CSLDestroy(files);
+        if (!prj.empty())
+          throw InputError(
+            parameter,
+            filename,
+            "a raster with a coordinate reference system GDAL can read (its " + prj
+              + " holds none GDAL reads: write it again, e.g. with gdalsrsinfo -o wkt_esri "
+                "EPSG:32616, or delete it and set 'Raster without CRS = metric')");
+        throw InputError(parameter,
+                         filename,
+                         "a raster with a coordinate reference system (this one has none: "
+                         "set 'Raster without CRS = metric' to take its coordinates as "
+                         "metres)");
       }
 
 
@@ -232,7 +249,7 @@ namespace slidewave
           double gt[6];
           read_geotransform(gt);
           const OGRSpatialReferenceH crs = GDALGetSpatialRef(source);
-          require_crs(crs, options, parameter, filename);
+          require_crs(source, crs, options, parameter, filename);
           to_metres   = band_to_metres(parameter, filename, source, crs);
           const int w = GDALGetRasterXSize(source), h = GDALGetRasterYSize(source);
           if (crs != nullptr && OSRIsGeographic(crs))

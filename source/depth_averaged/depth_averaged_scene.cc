@@ -12,6 +12,7 @@
 #include <slidewave/depth_averaged/depth_averaged_scene.h>
 #include <slidewave/grid/grid_extent.h>
 #include <slidewave/io/solver_checkpoints.h>
+#include <slidewave/terrain/earth_bounds.h>
 #include <slidewave/terrain/raster_source.h>
 #include <sstream>
 
@@ -22,6 +23,35 @@ namespace slidewave
     namespace
     {
       const std::string section = "Depth averaged";
+
+
+
+      /** Refuses a release (as @p solver has set it up) deeper than the Earth allows
+       *  (terrain::largest_release_depth) or whose mass or energy is not finite (issue 29:
+       *  depths of 1e300 ran and lost every column in the first step). Collective: every
+       *  rank refuses, or none. */
+      void
+      check_release(const DepthAveragedSolver &solver)
+      {
+        const auto integrals     = solver.model().integrals(solver.point_cloud());
+        const auto [name, value] = solver.release_area().depth_source();
+        if (!(integrals.max_depth <= terrain::largest_release_depth))
+          throw InputError(section + "/Release/" + name,
+                           value,
+                           "a release depth h (vertical) of at most "
+                             + to_string(terrain::largest_release_depth)
+                             + " m at every point of the release area (the deepest column is "
+                             + to_string(integrals.max_depth) + " m)");
+        const double energy = integrals.kinetic_energy + integrals.potential_energy;
+        if (!std::isfinite(energy) || !std::isfinite(integrals.mass))
+          throw InputError(section + "/Release/" + name,
+                           value,
+                           "a release whose mass and energy are finite numbers (mass "
+                             + to_string(integrals.mass) + " kg, kinetic energy "
+                             + to_string(integrals.kinetic_energy) + " J, potential energy "
+                             + to_string(integrals.potential_energy)
+                             + " J: check the density, the depth and the initial velocity)");
+      }
 
 
 
@@ -284,6 +314,7 @@ namespace slidewave
                            "a release with material: the depth is 0 or less at every point of "
                            "the release area");
         }
+      check_release(*solver);
     }
 
 

@@ -8,6 +8,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/depth_averaged_solver.h>
 #include <slidewave/terrain/crs.h>
+#include <slidewave/terrain/earth_bounds.h>
 #include <slidewave/terrain/elevation_table.h>
 #include <slidewave/terrain/raster_terrain.h>
 
@@ -60,8 +61,14 @@ namespace slidewave
                    std::ceil((prm.upper_right[d] - prm.lower_left[d]) / prm.terrain_spacing - 1e-9))
                  + 1;
         };
+        // Every rank samples the whole domain: a refusal is made by all of them.
         return terrain::ElevationGrid::from_function(
-          [&z](const double x, const double y) { return z.value(dealii::Point<2>(x, y)); },
+          [&z, &prm](const double x, const double y) {
+            const double value = z.value(dealii::Point<2>(x, y));
+            terrain::check_elevation(
+              "Depth averaged/Terrain/Elevation", prm.elevation, x, y, value);
+            return value;
+          },
           prm.lower_left,
           prm.upper_right,
           n(0),

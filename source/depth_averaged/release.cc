@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/release.h>
 #include <slidewave/terrain/crs.h>
@@ -112,6 +113,12 @@ namespace slidewave
           options.resampling             = "near";
           options.nodata_as_nan          = true;
           options.window_name            = "the release area";
+          // Values of 0 or less mean no material, whatever they are.
+          options.lowest_value   = -std::numeric_limits<double>::infinity();
+          options.highest_value  = terrain::largest_release_depth;
+          options.values_allowed = "release depths of at most "
+                                   + to_string(terrain::largest_release_depth)
+                                   + " m, 0 or less meaning no material";
           // One opening (and warp) for the extent and the values.
           const terrain::RasterSource raster(path + "/Depth raster", prm.depth_raster, options);
           const auto                  extent = raster.extent();

@@ -47,6 +47,20 @@ namespace slidewave
                            "a projected CRS in metres that GDAL knows (e.g. 'EPSG:32616'), or "
                            "empty");
         }
+      char        *unit_name = nullptr;
+      const double metres    = OSRGetLinearUnits(crs, &unit_name);
+      if (metres != 1.)
+        {
+          const std::string unit = unit_name != nullptr ? unit_name : "?";
+          OSRDestroySpatialReference(crs);
+          throw InputError(parameter,
+                           text,
+                           "a projected CRS in metres that GDAL knows (e.g. 'EPSG:32616'), or "
+                           "empty (this one's unit is the "
+                             + unit + ", " + to_string(metres)
+                             + " m: the model's coordinates are metres; use its metric twin, "
+                             + metric_twin(text) + ")");
+        }
       OSRAutoIdentifyEPSG(crs);
       char *wkt = nullptr;
       OSRExportToWkt(crs, &wkt);
@@ -89,6 +103,74 @@ namespace slidewave
       if (cb != nullptr)
         OSRDestroySpatialReference(cb);
       return same;
+    }
+
+
+
+    std::string
+    metric_twin(const std::string &text)
+    {
+      OGRSpatialReferenceH crs = from_wkt(text);
+      if (crs == nullptr)
+        return "none";
+      char *wkt = nullptr;
+      OSRExportToWkt(crs, &wkt);
+      const std::string own = wkt != nullptr ? wkt : "";
+      CPLFree(wkt);
+      OSRDestroySpatialReference(crs);
+      double metres = 1.;
+      return crs_name(in_metres(own, metres));
+    }
+
+
+
+    std::string
+    in_metres(const std::string &wkt, double &metres)
+    {
+      metres                   = 1.;
+      OGRSpatialReferenceH crs = from_wkt(wkt);
+      if (crs == nullptr || !OSRIsProjected(crs))
+        {
+          if (crs != nullptr)
+            OSRDestroySpatialReference(crs);
+          return wkt;
+        }
+      if (OSRIsCompound(crs))
+        OSRStripVertical(crs);
+      const double unit = OSRGetLinearUnits(crs, nullptr);
+      if (unit == 1. || !(unit > 0.))
+        {
+          OSRDestroySpatialReference(crs);
+          return wkt;
+        }
+      metres                 = unit;
+      const std::string name = OSRGetName(crs) != nullptr ? OSRGetName(crs) : "unnamed";
+      OSRSetLinearUnitsAndUpdateParameters(crs, SRS_UL_METER, 1.);
+      // Its EPSG twin in metres, if GDAL knows one (EPSG:26943 for EPSG:2227): maps then
+      // carry its code. The old name ("... (ftUS)") would lower GDAL's confidence in it.
+      OSRSetProjCS(crs, "unnamed");
+      int                   n_matches  = 0;
+      int                  *confidence = nullptr;
+      OGRSpatialReferenceH *matches    = OSRFindMatches(crs, nullptr, &n_matches, &confidence);
+      OGRSpatialReferenceH  twin       = nullptr;
+      for (int i = 0; i < n_matches && twin == nullptr; ++i)
+        if (confidence[i] >= 90 && OSRIsSame(matches[i], crs))
+          twin = OSRClone(matches[i]);
+      OSRFreeSRSArray(matches);
+      CPLFree(confidence);
+      if (twin != nullptr)
+        {
+          OSRDestroySpatialReference(crs);
+          crs = twin;
+        }
+      else
+        OSRSetProjCS(crs, (name + ", in metres").c_str());
+      char *text = nullptr;
+      OSRExportToWkt(crs, &text);
+      const std::string result = text;
+      CPLFree(text);
+      OSRDestroySpatialReference(crs);
+      return result;
     }
   } // namespace terrain
 } // namespace slidewave

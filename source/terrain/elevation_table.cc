@@ -2,6 +2,7 @@
 #include <cmath>
 #include <slidewave/core/csv_rows.h>
 #include <slidewave/core/input_error.h>
+#include <slidewave/terrain/earth_bounds.h>
 #include <slidewave/terrain/elevation_table.h>
 #include <vector>
 
@@ -93,6 +94,7 @@ namespace slidewave
                              filename,
                              "every node once (line " + std::to_string(row.line) + " repeats ("
                                + to_string(row.values[0]) + ", " + to_string(row.values[1]) + "))");
+          check_elevation(parameter, filename, row.values[0], row.values[1], row.values[2]);
           slot = row.values[2];
         }
       return ElevationGrid(dealii::Point<2>(x.front(), y.front()), dx, dy, nx, ny, std::move(z));

@@ -3,12 +3,16 @@
 #include <cmath>
 #include <cpl_conv.h>
 #include <cpl_error.h>
+#include <cpl_string.h>
+#include <filesystem>
 #include <gdal.h>
 #include <gdal_utils.h>
 #include <gdalwarper.h>
 #include <limits>
 #include <ogr_srs_api.h>
 #include <slidewave/core/input_error.h>
+#include <slidewave/terrain/crs.h>
+#include <slidewave/terrain/gdal_diagnostics.h>
 #include <slidewave/terrain/raster_source.h>
 #include <sstream>
 #include <vector>
@@ -24,13 +28,31 @@ namespace slidewave
 
 
 
+      /** The WKT of @p crs ("" for none). */
+      std::string
+      wkt_of(const OGRSpatialReferenceH crs)
+      {
+        if (crs == nullptr)
+          return "";
+        char *wkt = nullptr;
+        OSRExportToWkt(crs, &wkt);
+        const std::string result = wkt != nullptr ? wkt : "";
+        CPLFree(wkt);
+        return result;
+      }
+
+
+
       /**
        * The WKT of the CRS a raster in @p crs must be warped to, or "" when it is read as
-       * it is: options.match_crs when given and different; else, for a raster in degrees,
-       * options.target_crs or the UTM zone of its @p centre (longitude, latitude).
+       * it is (@p metric_wkt: @p crs in metres, crs.h in_metres()): options.match_crs when
+       * given and different from both; else, for a raster in degrees, options.target_crs
+       * or the UTM zone of its @p centre (longitude, latitude; a raster across the
+       * antimeridian may give a longitude beyond 180 degrees).
        */
       std::string
       target_crs(const OGRSpatialReferenceH crs,
+                 const std::string         &metric_wkt,
                  const dealii::Point<2>    &centre,
                  const RasterOptions       &options,
                  const std::string         &parameter,
@@ -44,7 +66,7 @@ namespace slidewave
         if (!options.match_crs.empty())
           {
             ok = OSRSetFromUserInput(target, options.match_crs.c_str()) == OGRERR_NONE;
-            if (ok && OSRIsSame(target, crs))
+            if (ok && (OSRIsSame(target, crs) || same_crs(options.match_crs, metric_wkt)))
               {
                 OSRDestroySpatialReference(target);
                 return "";
@@ -57,17 +79,35 @@ namespace slidewave
           }
         else if (options.target_crs.empty())
           {
-            // The UTM zone of the raster's centre.
+            // The UTM zone of the raster's centre, its longitude taken into [-180, 180).
+            const double longitude = centre[0] - 360. * std::floor((centre[0] + 180.) / 360.);
+            const int    zone
+              = std::min(static_cast<int>(std::floor((longitude + 180.) / 6.)) + 1, 60);
             OGRSpatialReferenceH geographic = OSRClone(crs);
             OSRSetAxisMappingStrategy(geographic, OAMS_TRADITIONAL_GIS_ORDER);
-            const int zone = static_cast<int>(std::floor((centre[0] + 180.) / 6.)) + 1;
-            ok             = OSRCopyGeogCSFrom(target, geographic) == OGRERR_NONE
+            ok = OSRCopyGeogCSFrom(target, geographic) == OGRERR_NONE
                  && OSRSetUTM(target, zone, centre[1] >= 0. ? 1 : 0) == OGRERR_NONE;
             OSRDestroySpatialReference(geographic);
           }
         else
-          ok = OSRSetFromUserInput(target, options.target_crs.c_str()) == OGRERR_NONE
-               && !OSRIsGeographic(target);
+          {
+            ok = OSRSetFromUserInput(target, options.target_crs.c_str()) == OGRERR_NONE
+                 && !OSRIsGeographic(target);
+            char        *unit   = nullptr;
+            const double metres = ok ? OSRGetLinearUnits(target, &unit) : 1.;
+            if (metres != 1.)
+              {
+                const std::string unit_name = unit != nullptr ? unit : "?";
+                OSRDestroySpatialReference(target);
+                throw InputError(parameter.substr(0, parameter.rfind('/')) + "/Target CRS",
+                                 options.target_crs,
+                                 "a projected CRS in metres (this one's unit is the " + unit_name
+                                   + ", " + to_string(metres)
+                                   + " m: the model's coordinates are metres; use its metric "
+                                     "twin, "
+                                   + metric_twin(options.target_crs) + ")");
+              }
+          }
         if (!ok)
           {
             OSRDestroySpatialReference(target);
@@ -91,6 +131,36 @@ namespace slidewave
 
 
 
+      /** Refuses a raster in degrees (@p crs geographic) whose pixel centres (@p gt, @p w x
+       *  @p h pixels) are not longitudes and latitudes: coordinates in metres under a CRS
+       *  in degrees (a wrong .prj) would otherwise be reprojected into nonsense. */
+      void
+      require_degrees(const OGRSpatialReferenceH crs,
+                      const double               gt[6],
+                      const int                  w,
+                      const int                  h,
+                      const std::string         &parameter,
+                      const std::string         &filename)
+      {
+        const double x0 = gt[0] + 0.5 * gt[1], x1 = gt[0] + (w - 0.5) * gt[1];
+        const double y0 = gt[3] + 0.5 * gt[5], y1 = gt[3] + (h - 0.5) * gt[5];
+        const double west = std::min(x0, x1), east = std::max(x0, x1);
+        const double south = std::min(y0, y1), north = std::max(y0, y1);
+        if (west >= -360. && east <= 360. && east - west <= 360. && south >= -90. && north <= 90.)
+          return;
+        throw InputError(parameter,
+                         filename,
+                         "a raster in degrees (its CRS, " + crs_name(wkt_of(crs))
+                           + ", is geographic) whose pixel centres are longitudes in [-360, 360] "
+                             "and latitudes in [-90, 90] (this one's span ["
+                           + to_string(west) + ", " + to_string(east) + "] x [" + to_string(south)
+                           + ", " + to_string(north)
+                           + "]: metres under a wrong CRS? Fix its .prj or assign the right CRS, "
+                             "e.g. with gdal_translate -a_srs)");
+      }
+
+
+
       /** The first and last pixel (rows or columns) whose centres bracket [a, b] along one
        *  axis of origin @p o and pixel size @p d (negative for rows north to south). */
       std::pair<long, long>
@@ -109,17 +179,33 @@ namespace slidewave
       /** Refuses a raster without a coordinate reference system (@p crs null) unless its
        *  coordinates are to be taken as metres. */
       void
-      require_crs(const OGRSpatialReferenceH crs,
+      require_crs(const GDALDatasetH         source,
+                  const OGRSpatialReferenceH crs,
                   const RasterOptions       &options,
                   const std::string         &parameter,
                   const std::string         &filename)
       {
-        if (crs == nullptr && !options.assume_metric)
-          throw InputError(parameter,
-                           filename,
-                           "a raster with a coordinate reference system (this one has none: "
-                           "set 'Raster without CRS = metric' to take its coordinates as "
-                           "metres)");
+        if (crs != nullptr || options.assume_metric)
+          return;
+        // A .prj next to the file that GDAL could not read says nothing is a mistake.
+        std::string prj;
+        char      **files = GDALGetFileList(source);
+        for (char **file = files; file != nullptr && *file != nullptr; ++file)
+          if (EQUAL(CPLGetExtension(*file), "prj"))
+            prj = std::filesystem::path(*file).filename().string();
+        CSLDestroy(files);
+        if (!prj.empty())
+          throw InputError(
+            parameter,
+            filename,
+            "a raster with a coordinate reference system GDAL can read (its " + prj
+              + " holds none GDAL reads: write it again, e.g. with gdalsrsinfo -o wkt_esri "
+                "EPSG:32616, or delete it and set 'Raster without CRS = metric')");
+        throw InputError(parameter,
+                         filename,
+                         "a raster with a coordinate reference system (this one has none: "
+                         "set 'Raster without CRS = metric' to take its coordinates as "
+                         "metres)");
       }
 
 
@@ -135,7 +221,7 @@ namespace slidewave
                       const OGRSpatialReferenceH crs,
                       const dealii::Point<2>    &centre)
       {
-        double resolution = std::min(gt[1], std::abs(gt[5]));
+        double resolution = std::min(gt[1], std::abs(gt[5])) * OSRGetLinearUnits(crs, nullptr);
         if (OSRIsGeographic(crs))
           {
             const double metres_per_degree = M_PI / 180. * 6371000.;
@@ -159,17 +245,34 @@ namespace slidewave
       try
         {
           open();
+          check_ascii_grid(parameter, filename, source);
           double gt[6];
           read_geotransform(gt);
           const OGRSpatialReferenceH crs = GDALGetSpatialRef(source);
-          require_crs(crs, options, parameter, filename);
+          require_crs(source, crs, options, parameter, filename);
+          to_metres   = band_to_metres(parameter, filename, source, crs);
+          const int w = GDALGetRasterXSize(source), h = GDALGetRasterYSize(source);
+          if (crs != nullptr && OSRIsGeographic(crs))
+            require_degrees(crs, gt, w, h, parameter, filename);
           // x = longitude in GDAL's traditional order of a geotransform.
-          const dealii::Point<2> centre(gt[0] + 0.5 * gt[1] * GDALGetRasterXSize(source),
-                                        gt[3] + 0.5 * gt[5] * GDALGetRasterYSize(source));
-          const std::string      target_wkt = target_crs(crs, centre, options, parameter, filename);
+          const dealii::Point<2> centre(gt[0] + 0.5 * gt[1] * w, gt[3] + 0.5 * gt[5] * h);
+          // A projected CRS in feet: read in the same projection in metres.
+          double            metres     = 1.;
+          const std::string metric_wkt = in_metres(wkt_of(crs), metres);
+          const std::string target_wkt
+            = target_crs(crs, metric_wkt, centre, options, parameter, filename);
           if (!target_wkt.empty())
-            warp(target_wkt, warp_resolution(gt, crs, centre));
-          GDALGetGeoTransform(dataset(), transform);
+            {
+              warp(target_wkt, warp_resolution(gt, crs, centre));
+              GDALGetGeoTransform(warped, transform);
+              model_wkt = wkt_of(GDALGetSpatialRef(warped));
+            }
+          else
+            {
+              for (unsigned int i = 0; i < 6; ++i)
+                transform[i] = metres * gt[i];
+              model_wkt = metric_wkt;
+            }
         }
       catch (...)
         {
@@ -188,16 +291,26 @@ namespace slidewave
     {
       GDALAllRegister();
       // GDAL's own diagnosis goes to stderr otherwise; the InputError says what is wrong.
-      CPLPushErrorHandler(CPLQuietErrorHandler);
+      const GdalDiagnostics diagnostics;
       // ESRI ASCII grids are read as 32-bit floats unless asked otherwise.
       CPLSetThreadLocalConfigOption("AAIGRID_DATATYPE", "Float64");
       source = GDALOpen(filename.c_str(), GA_ReadOnly);
-      CPLPopErrorHandler();
       if (source == nullptr)
-        throw InputError(parameter,
-                         filename,
-                         "a raster file GDAL can read (GeoTIFF, ESRI ASCII grid, ...): it "
-                         "does not exist or is not a raster");
+        {
+          // What GDAL says of a file that is there (a header it cannot parse, ...); of a
+          // missing one it would only repeat the path.
+          std::error_code error;
+          if (std::filesystem::exists(filename, error) && !diagnostics.text().empty())
+            throw InputError(parameter,
+                             filename,
+                             "a raster file GDAL can read (GeoTIFF, ESRI ASCII grid, ...; GDAL "
+                             "cannot read this one: "
+                               + diagnostics.text() + ")");
+          throw InputError(parameter,
+                           filename,
+                           "a raster file GDAL can read (GeoTIFF, ESRI ASCII grid, ...): it "
+                           "does not exist or is not a raster");
+        }
       ++n_opens;
       if (GDALGetRasterCount(source) < 1)
         throw InputError(parameter, filename, "a raster with at least one band");
@@ -212,8 +325,7 @@ namespace slidewave
         throw InputError(parameter,
                          filename,
                          "a georeferenced raster (this one has no geotransform)");
-      if (gt[2] != 0. || gt[4] != 0. || !(gt[1] > 0.))
-        throw InputError(parameter, filename, "a north-up raster (this one is rotated or sheared)");
+      check_geotransform(parameter, filename, gt);
     }
 
 
@@ -241,16 +353,18 @@ namespace slidewave
                                              nullptr};
       GDALWarpAppOptions       *warp_options
         = GDALWarpAppOptionsNew(const_cast<char **>(arguments.data()), nullptr);
-      CPLPushErrorHandler(CPLQuietErrorHandler);
-      int error = 0;
-      warped    = GDALWarp("", nullptr, 1, &source, warp_options, &error);
-      CPLPopErrorHandler();
+      const GdalDiagnostics diagnostics;
+      int                   error = 0;
+      warped                      = GDALWarp("", nullptr, 1, &source, warp_options, &error);
       GDALWarpAppOptionsFree(warp_options);
       if (warped == nullptr || error != 0)
         throw InputError(parameter,
                          filename,
                          "a raster GDAL can reproject to a metric CRS (the warper "
-                         "refused this one)");
+                         "refused this one"
+                           + (diagnostics.text().empty() ? std::string() :
+                                                           ": " + diagnostics.text())
+                           + ")");
       ++n_warps;
     }
 
@@ -293,8 +407,7 @@ namespace slidewave
       block.upper   = dealii::Point<2>(std::max(x0, x1), std::max(y0, y1));
       block.pixel_x = std::abs(gt[1]);
       block.pixel_y = std::abs(gt[5]);
-      if (const char *wkt = GDALGetProjectionRef(dataset()))
-        block.crs_wkt = wkt;
+      block.crs_wkt = model_wkt;
       return block;
     }
 
@@ -385,18 +498,16 @@ namespace slidewave
       const int           w = static_cast<int>(i1 - i0 + 1), h = static_cast<int>(j1 - j0 + 1);
       std::vector<double> values(static_cast<std::size_t>(w) * h);
       GDALRasterBandH     band = GDALGetRasterBand(data, 1);
-      if (GDALRasterIO(band, GF_Read, i0, j0, w, h, values.data(), w, h, GDT_Float64, 0, 0)
-          != CE_None)
-        throw InputError(parameter, filename, "a raster whose band 1 GDAL can read");
+      {
+        const GdalDiagnostics diagnostics;
+        if (GDALRasterIO(band, GF_Read, i0, j0, w, h, values.data(), w, h, GDT_Float64, 0, 0)
+            != CE_None)
+          throw InputError(parameter,
+                           filename,
+                           "a raster whose band 1 GDAL can read" + diagnostics.note());
+      }
       int          has_nodata = 0;
       const double nodata     = GDALGetRasterNoDataValue(band, &has_nodata);
-      int          has_scale = 0, has_offset = 0;
-      double       scale  = GDALGetRasterScale(band, &has_scale);
-      double       offset = GDALGetRasterOffset(band, &has_offset);
-      if (!has_scale)
-        scale = 1.;
-      if (!has_offset)
-        offset = 0.;
       // Rows from south to north (ElevationGrid's y grows), no-data refused.
       const bool          north_up = gt[5] < 0.;
       std::vector<double> z(values.size());
@@ -421,8 +532,18 @@ namespace slidewave
                         << ") is no-data: crop the domain or fill the raster)";
                 throw InputError(parameter, filename, message.str());
               }
+            const double value = to_metres(v);
+            if (!(value >= options.lowest_value && value <= options.highest_value))
+              {
+                std::ostringstream message;
+                message.precision(12);
+                message << options.values_allowed << ": the pixel centred at ("
+                        << gt[0] + (i0 + c + 0.5) * gt[1] << ", " << gt[3] + (j0 + r + 0.5) * gt[5]
+                        << ") holds " << value << " m";
+                throw InputError(parameter, filename, message.str());
+              }
             const int row                            = north_up ? h - 1 - r : r;
-            z[static_cast<std::size_t>(row) * w + c] = scale * v + offset;
+            z[static_cast<std::size_t>(row) * w + c] = value;
           }
       const double x_first = gt[0] + (i0 + 0.5) * gt[1];
       const double y_south = north_up ? gt[3] + (j1 + 0.5) * gt[5] : gt[3] + (j0 + 0.5) * gt[5];

@@ -1,12 +1,15 @@
 #include <cmath>
 #include <cpl_conv.h>
 #include <cpl_error.h>
+#include <cpl_string.h>
+#include <filesystem>
 #include <gdal_priv.h>
 #include <memory>
 #include <ogr_geometry.h>
 #include <ogr_spatialref.h>
 #include <ogrsf_frmts.h>
 #include <slidewave/core/input_error.h>
+#include <slidewave/terrain/gdal_diagnostics.h>
 #include <slidewave/terrain/vector_polygons.h>
 
 namespace slidewave
@@ -56,6 +59,67 @@ namespace slidewave
 
 
 
+      /** The files GDAL reads for @p dataset, by name, comma-separated. */
+      std::string
+      files_of(GDALDataset &dataset)
+      {
+        std::string names;
+        char      **files = dataset.GetFileList();
+        for (char **file = files; file != nullptr && *file != nullptr; ++file)
+          names += (names.empty() ? "" : ", ") + std::filesystem::path(*file).filename().string();
+        CSLDestroy(files);
+        return names;
+      }
+
+
+
+      /** Whether @p dataset is a shapefile whose .dbf (its attributes) GDAL did not find. */
+      bool
+      missing_dbf(GDALDataset &dataset, const std::string &filename)
+      {
+        if (dataset.GetDriver() == nullptr
+            || !EQUAL(dataset.GetDriver()->GetDescription(), "ESRI Shapefile"))
+          return false;
+        char **files = dataset.GetFileList();
+        bool   found = false;
+        for (char **file = files; file != nullptr && *file != nullptr; ++file)
+          found = found || EQUAL(CPLGetExtension(*file), "dbf");
+        CSLDestroy(files);
+        return !found && !std::filesystem::is_directory(filename);
+      }
+
+
+
+      /** Refuses a @p layer whose CRS @p own is in degrees but whose coordinates cannot be
+       *  (outside longitudes [-360, 360] or latitudes [-90, 90]): metres in a file without
+       *  its CRS, such as a GeoJSON without a 'crs' member, which RFC 7946 makes WGS 84. */
+      void
+      require_degrees(OGRLayer                  &layer,
+                      const OGRSpatialReference &own,
+                      const std::string         &parameter,
+                      const std::string         &filename)
+      {
+        OGREnvelope box;
+        if (!own.IsGeographic() || layer.GetExtent(&box, TRUE) != OGRERR_NONE)
+          return;
+        // The axis order GDAL gives a file's geometries: x is the longitude.
+        if (box.MinX >= -360. && box.MaxX <= 360. && box.MinY >= -90. && box.MaxY <= 90.)
+          return;
+        const std::string name = own.GetName() != nullptr ? own.GetName() : "unnamed";
+        throw InputError(parameter,
+                         filename,
+                         "polygons in degrees, as the file's CRS (" + name
+                           + ") says (a GeoJSON without a 'crs' member is in WGS 84, RFC 7946): "
+                             "longitudes in [-360, 360] and latitudes in [-90, 90] (this file's "
+                             "coordinates span ["
+                           + to_string(box.MinX) + ", " + to_string(box.MaxX) + "] x ["
+                           + to_string(box.MinY) + ", " + to_string(box.MaxY)
+                           + "]: metres? Give the file its CRS, e.g. with ogr2ogr -a_srs "
+                             "EPSG:32616, or a 'crs' member)");
+      }
+
+
+
       /** The transformation from @p layer's CRS to the model's, or none (nullptr) when
        *  the coordinates are taken as they are. */
       std::unique_ptr<OGRCoordinateTransformation>
@@ -67,6 +131,7 @@ namespace slidewave
         const OGRSpatialReference *own = layer.GetSpatialRef();
         if (own == nullptr)
           return nullptr;
+        require_degrees(layer, *own, parameter, filename);
         if (model_crs_wkt.empty())
           {
             // Two sets of coordinates, one with a CRS and one without, cannot be matched:
@@ -108,15 +173,25 @@ namespace slidewave
       open_vector_file(const std::string &parameter, const std::string &filename)
       {
         GDALAllRegister();
-        CPLPushErrorHandler(CPLQuietErrorHandler);
-        GDALDatasetUniquePtr dataset(
+        const GdalDiagnostics diagnostics;
+        GDALDatasetUniquePtr  dataset(
           GDALDataset::Open(filename.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-        CPLPopErrorHandler();
         if (dataset == nullptr || dataset->GetLayerCount() == 0)
-          throw InputError(parameter,
-                           filename,
-                           "a vector file OGR reads (shapefile, GeoJSON, GeoPackage, ...): it "
-                           "does not exist or holds no vector layer");
+          {
+            // What GDAL says of a file that is there (a shapefile without its .shx, ...);
+            // of a missing one it would only repeat the path.
+            std::error_code error;
+            if (std::filesystem::exists(filename, error) && !diagnostics.text().empty())
+              throw InputError(parameter,
+                               filename,
+                               "a vector file OGR reads (shapefile, GeoJSON, GeoPackage, ...; "
+                               "GDAL cannot read this one: "
+                                 + diagnostics.text() + ")");
+            throw InputError(parameter,
+                             filename,
+                             "a vector file OGR reads (shapefile, GeoJSON, GeoPackage, ...): it "
+                             "does not exist or holds no vector layer");
+          }
         return dataset;
       }
 
@@ -150,7 +225,8 @@ namespace slidewave
       /** The index of the numeric field @p attribute of @p layer, -1 when @p attribute is
        *  empty; refuses a missing or non-numeric field. */
       int
-      numeric_field(OGRLayer          &layer,
+      numeric_field(GDALDataset       &dataset,
+                    OGRLayer          &layer,
                     const std::string &attribute,
                     const std::string &parameter,
                     const std::string &filename)
@@ -159,6 +235,14 @@ namespace slidewave
         if (!attribute.empty())
           {
             field = layer.GetLayerDefn()->GetFieldIndex(attribute.c_str());
+            if (field < 0 && layer.GetLayerDefn()->GetFieldCount() == 0
+                && missing_dbf(dataset, filename))
+              throw InputError(parameter,
+                               filename,
+                               "a shapefile with its attribute table, the .dbf next to it, "
+                               "holding the numeric field '"
+                                 + attribute + "' (GDAL finds no .dbf: only " + files_of(dataset)
+                                 + ")");
             if (field < 0)
               throw InputError(parameter,
                                filename,
@@ -210,11 +294,26 @@ namespace slidewave
                       const GIntBig                fid)
       {
         std::unique_ptr<OGRGeometry> linear(geometry.getLinearGeometry());
+        if (OGRGeometryFactory::haveGEOS())
+          {
+            // GEOS says why (self-intersection at or near a point, ...) through GDAL's
+            // error handler.
+            const GdalDiagnostics diagnostics;
+            if (!linear->IsValid())
+              throw InputError(parameter,
+                               filename,
+                               "valid polygons, as OGR's IsValid checks them (feature "
+                                 + std::to_string(fid) + " is not"
+                                 + (diagnostics.text().empty() ? "" : ": " + diagnostics.text())
+                                 + "; a self-intersecting ring, a bow tie, has no inside to "
+                                   "release: repair it, e.g. with ogr2ogr -makevalid)");
+          }
+        const GdalDiagnostics diagnostics;
         if (transformation != nullptr && linear->transform(transformation) != OGRERR_NONE)
           throw InputError(parameter,
                            filename,
                            "polygons OGR can transform to the terrain's CRS (feature "
-                             + std::to_string(fid) + " failed)");
+                             + std::to_string(fid) + " failed" + diagnostics.note() + ")");
         return linear;
       }
 
@@ -260,9 +359,12 @@ namespace slidewave
       const GDALDatasetUniquePtr dataset = open_vector_file(parameter, filename);
       OGRLayer                  &layer   = find_layer(*dataset, layer_name, parameter, filename);
       const auto transformation          = to_model(layer, model_crs_wkt, parameter, filename);
-      const int  field                   = numeric_field(layer, attribute, parameter, filename);
+      const int  field = numeric_field(*dataset, layer, attribute, parameter, filename);
 
       std::vector<VectorPolygon> polygons;
+      // What GDAL says while it reads the features (a coordinate that is not a number, a
+      // ring not closed) is kept for the message, not printed.
+      const GdalDiagnostics diagnostics;
       layer.ResetReading();
       for (const auto &feature : layer)
         {
@@ -276,7 +378,10 @@ namespace slidewave
           append_polygons(*linear, value, parameter, filename, fid, polygons);
         }
       if (polygons.empty())
-        throw InputError(parameter, filename, "a layer with at least one polygon (it has none)");
+        throw InputError(parameter,
+                         filename,
+                         "a layer with at least one polygon (it has none" + diagnostics.note()
+                           + ")");
       return polygons;
     }
 

@@ -23,6 +23,24 @@ namespace slidewave
     /** Whether @p a and @p b are the same CRS (both empty counts as the same). */
     bool
     same_crs(const std::string &a, const std::string &b);
+
+    /**
+     * The CRS @p wkt with the metre as its linear unit: for a projected CRS in another unit
+     * (US survey feet, e.g. EPSG:2227), the same projection in metres (OGR's
+     * SetLinearUnitsAndUpdateParameters: its false easting and northing converted; its
+     * EPSG twin, e.g. EPSG:26943, when GDAL finds one), and in @p metres the metres of its
+     * unit (OGR's GetLinearUnits), by which its coordinates are multiplied; any other
+     * @p wkt (empty, in degrees, already in metres) as it is, with @p metres = 1. The
+     * vertical part of a compound CRS is dropped: elevations are values, not coordinates.
+     */
+    std::string
+    in_metres(const std::string &wkt, double &metres);
+
+    /** The name (crs_name()) of the metric twin (in_metres()) of the CRS @p text names
+     *  (anything GDAL takes, "EPSG:2227"), for messages: "NAD83 / California zone 3
+     *  (EPSG:26943)". */
+    std::string
+    metric_twin(const std::string &text);
   } // namespace terrain
 } // namespace slidewave
 

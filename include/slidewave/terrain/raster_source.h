@@ -2,7 +2,10 @@
 #define slidewave_terrain_raster_source_h
 
 #include <deal.II/base/point.h>
+#include <limits>
+#include <slidewave/terrain/earth_bounds.h>
 #include <slidewave/terrain/elevation_grid.h>
+#include <slidewave/terrain/raster_checks.h>
 #include <string>
 
 namespace slidewave
@@ -31,6 +34,12 @@ namespace slidewave
       bool nodata_as_nan = false;
       /** What the window read is, in messages. */
       std::string window_name = "the domain";
+      /** The values accepted, in metres after the band's scale, offset and unit: by
+       *  default the elevations the Earth has; a value outside is refused, naming its
+       *  pixel (a 1e300 or an undeclared no-data value of -3.4e38 is not a terrain). */
+      double lowest_value = lowest_elevation, highest_value = highest_elevation;
+      /** What is allowed, in messages. */
+      std::string values_allowed = elevation_bounds_text();
     };
 
     /** A block of a raster's pixel centres [lower, upper] in the coordinates the model
@@ -59,10 +68,17 @@ namespace slidewave
      * (RasterOptions::resampling) onto pixels no larger than the source's smaller side in
      * metres.
      *
+     * A projected CRS in another unit than the metre (US survey feet) is read in the same
+     * projection in metres (the geotransform scaled by the unit, crs.h in_metres()); band 1's
+     * values are taken through its scale, offset and vertical unit (band_to_metres()).
+     *
      * Every failure is an InputError naming the parameter the raster was given by, the
-     * file and what is wrong: a missing file or one that is not a raster, a rotated
-     * raster, no CRS where one is needed, a warp GDAL refuses (on construction); a window
-     * outside the raster, no-data under it, no data at all (when asked).
+     * file and what is wrong: a missing file or one that is not a raster, an ESRI ASCII
+     * grid whose count of values is not ncols x nrows, a rotated or degenerate
+     * geotransform, a band scale or offset that is not finite, a vertical unit we do not
+     * know, no CRS where one is needed, a raster in degrees whose coordinates are not
+     * degrees, a warp GDAL refuses (on construction); a window outside the raster, no-data
+     * under it, a value outside RasterOptions' bounds, no data at all (when asked).
      */
     class RasterSource
     {
@@ -123,8 +139,8 @@ namespace slidewave
       void
       open();
 
-      /** The geotransform of the file into @p gt; refuses a raster without one and a
-       *  rotated or sheared raster. */
+      /** The geotransform of the file into @p gt; refuses a raster without one, a
+       *  rotated or sheared raster and a degenerate one (check_geotransform()). */
       void
       read_geotransform(double gt[6]) const;
 
@@ -151,8 +167,13 @@ namespace slidewave
       /** The file and its warped copy (GDALDatasetH, which GDAL's C API defines as void *:
        *  GDAL's headers, and their macros, stay out of the files that include this one). */
       void *source = nullptr, *warped = nullptr;
-      /** The geotransform of dataset(). */
+      /** The geotransform of dataset(), in metres (a raster in a projected CRS in feet is
+       *  read in the same projection in metres: its geotransform scaled, not warped). */
       double transform[6] = {0., 1., 0., 0., 0., -1.};
+      /** The CRS (WKT) of the coordinates of transform, "" for none. */
+      std::string model_wkt;
+      /** From band 1's values to metres: its scale, offset and vertical unit. */
+      BandToMetres to_metres;
     };
   } // namespace terrain
 } // namespace slidewave

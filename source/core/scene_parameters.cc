@@ -100,21 +100,22 @@ namespace slidewave
   {
     using dealii::Patterns::Selection;
 
-    prm.declare_entry("Physics",
-                      "none",
-                      Selection("none|shallow water|material points|coupled|depth averaged|free surface flow"),
-                      "The physics this scene switches on. 'shallow water': the 1D "
-                      "well-balanced finite-volume water column of paper 000 (subsection "
-                      "'Shallow water'). 'material points': the 2D plane-strain material "
-                      "point method for soil of paper 000 (subsection 'Material points'). "
-                      "'coupled': both, the soil moving the water's bed and the water "
-                      "loading the soil (paper 000, Algorithm 1; subsections 'Material "
-                      "points', 'Shallow water' and 'Coupling'). 'depth averaged': the "
-                      "depth-averaged material point method for flow-like landslides over "
-                      "a terrain of paper 001 (subsection 'Depth averaged'). 'free surface "
-                      "flow': water and air by stabilized finite elements with a phase-field "
-                      "surface on the background grid, paper 002's fluid (subsection 'Free "
-                      "surface flow'). A scene must choose one.");
+    prm.declare_entry(
+      "Physics",
+      "none",
+      Selection("none|shallow water|material points|coupled|depth averaged|free surface flow"),
+      "The physics this scene switches on. 'shallow water': the 1D "
+      "well-balanced finite-volume water column of paper 000 (subsection "
+      "'Shallow water'). 'material points': the 2D plane-strain material "
+      "point method for soil of paper 000 (subsection 'Material points'). "
+      "'coupled': both, the soil moving the water's bed and the water "
+      "loading the soil (paper 000, Algorithm 1; subsections 'Material "
+      "points', 'Shallow water' and 'Coupling'). 'depth averaged': the "
+      "depth-averaged material point method for flow-like landslides over "
+      "a terrain of paper 001 (subsection 'Depth averaged'). 'free surface "
+      "flow': water and air by stabilized finite elements with a phase-field "
+      "surface on the background grid, paper 002's fluid (subsection 'Free "
+      "surface flow'). A scene must choose one.");
     prm.declare_entry("Output directory",
                       "",
                       dealii::Patterns::Anything(),

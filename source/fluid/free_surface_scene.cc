@@ -86,6 +86,26 @@ namespace slidewave
 
 
 
+    void
+    FreeSurfaceScene::check_set_up() const
+    {
+      // The first step is the largest the flow will allow (the water starts at rest); a
+      // scene that would need more than 10^7 of them is a mistake in Courant number, time
+      // step or end time, not a run anyone waits for.
+      const double dt      = solver->stable_time_step();
+      const double n_steps = (scene.end_time - scene.start_time) / dt;
+      if (n_steps > 1e7)
+        throw InputError(section + "/Time stepping/Maximum time step",
+                         to_string(parameters.maximum_time_step),
+                         "a time step (with 'Courant number' = "
+                           + to_string(parameters.courant_number) + ", first step " + to_string(dt)
+                           + " s) that reaches the end time in at most 10^7 "
+                             "steps (it would take "
+                           + to_string(n_steps) + ")");
+    }
+
+
+
     std::string
     FreeSurfaceScene::description() const
     {

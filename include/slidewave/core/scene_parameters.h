@@ -15,7 +15,7 @@ namespace slidewave
     none,
     shallow_water,
     material_points,
-    coupled,       ///< material points under shallow water (paper 000, Algorithm 1)
+    coupled,          ///< material points under shallow water (paper 000, Algorithm 1)
     depth_averaged,   ///< depth-averaged material points over a terrain (paper 001)
     free_surface_flow ///< water and air by stabilized finite elements (paper 002's fluid)
   };

@@ -45,6 +45,11 @@ namespace slidewave
       void
       set_up(double start_time, dealii::TimerOutput &timer) override;
 
+      /** Refuses a scene whose steps would not end: more than 10^7 steps at its first
+       *  stable step. */
+      void
+      check_set_up() const override;
+
       std::string
       description() const override;
 

@@ -76,16 +76,9 @@ namespace slidewave
         }
       flow_constraints.close();
 
-      const MPI_Comm                 communicator = grid.communicator();
-      dealii::DynamicSparsityPattern pattern(flow.locally_relevant_dofs());
-      dealii::DoFTools::make_sparsity_pattern(dofs, pattern, flow_constraints, false);
-      dealii::SparsityTools::distribute_sparsity_pattern(pattern,
-                                                         flow.locally_owned_dofs(),
-                                                         communicator,
-                                                         flow.locally_relevant_dofs());
-      matrix.reinit(flow.locally_owned_dofs(), flow.locally_owned_dofs(), pattern, communicator);
-      rhs.reinit(flow.locally_owned_dofs(), communicator);
-      solution.reinit(flow.locally_owned_dofs(), communicator);
+      flow.reinit_matrix(matrix, flow_constraints);
+      rhs.reinit(flow.locally_owned_dofs(), grid.communicator());
+      solution.reinit(flow.locally_owned_dofs(), grid.communicator());
     }
 
 

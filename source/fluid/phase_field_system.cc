@@ -51,17 +51,8 @@ namespace slidewave
     void
     PhaseFieldSystem::setup_system()
     {
-      const MPI_Comm                 communicator = grid.communicator();
-      dealii::DynamicSparsityPattern pattern(phase.locally_relevant_dofs());
-      dealii::DoFTools::make_sparsity_pattern(phase.dof_handler(),
-                                              pattern,
-                                              phase.constraints(),
-                                              false);
-      dealii::SparsityTools::distribute_sparsity_pattern(pattern,
-                                                         phase.locally_owned_dofs(),
-                                                         communicator,
-                                                         phase.locally_relevant_dofs());
-      matrix.reinit(phase.locally_owned_dofs(), phase.locally_owned_dofs(), pattern, communicator);
+      const MPI_Comm communicator = grid.communicator();
+      phase.reinit_matrix(matrix, phase.constraints());
       rhs.reinit(phase.locally_owned_dofs(), communicator);
       solution.reinit(phase.locally_owned_dofs(), communicator);
       phase_old.reinit(phase.locally_owned_dofs(), phase.locally_relevant_dofs(), communicator);

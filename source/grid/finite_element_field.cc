@@ -4,6 +4,8 @@
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <slidewave/grid/finite_element_field.h>
 #include <slidewave/grid/tree_order.h>
@@ -77,6 +79,22 @@ namespace slidewave
         v.reinit(owned_dofs, communicator);
       for (auto &v : ghosted_values)
         v.reinit(owned_dofs, relevant_dofs, communicator);
+    }
+
+
+
+    void
+    FiniteElementField::reinit_matrix(dealii::TrilinosWrappers::SparseMatrix  &matrix,
+                                      const dealii::AffineConstraints<double> &constraints) const
+    {
+      const MPI_Comm                 communicator = grid.communicator();
+      dealii::DynamicSparsityPattern pattern(relevant_dofs);
+      dealii::DoFTools::make_sparsity_pattern(dofs, pattern, constraints, false);
+      dealii::SparsityTools::distribute_sparsity_pattern(pattern,
+                                                         owned_dofs,
+                                                         communicator,
+                                                         relevant_dofs);
+      matrix.reinit(owned_dofs, owned_dofs, pattern, communicator);
     }
 
 

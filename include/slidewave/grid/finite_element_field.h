@@ -8,6 +8,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <functional>
 #include <memory>
@@ -123,6 +124,13 @@ namespace slidewave
       {
         return *fe;
       }
+
+      /** Sizes @p matrix for a system on this field's dofs: the distributed sparsity of
+       *  the cells' couplings with @p constraints (the field's own, or a system's with
+       *  its walls added) condensed in (collective). */
+      void
+      reinit_matrix(dealii::TrilinosWrappers::SparseMatrix  &matrix,
+                    const dealii::AffineConstraints<double> &constraints) const;
 
       /** The hanging-node constraints of the current cells. */
       const dealii::AffineConstraints<double> &

@@ -29,6 +29,19 @@ namespace slidewave
           return phi;
         }
 
+        /** The domain's lower left corner, from the coarse cells every rank holds (no
+         *  pass over the active cells, no communication). */
+        dealii::Point<2>
+        lower_left(const dealii::Triangulation<2> &tria)
+        {
+          dealii::Point<2> corner(std::numeric_limits<double>::max(),
+                                  std::numeric_limits<double>::max());
+          for (auto cell = tria.begin(0); cell != tria.end(0); ++cell)
+            for (unsigned int d = 0; d < 2; ++d)
+              corner[d] = std::min(corner[d], cell->vertex(0)[d]);
+          return corner;
+        }
+
         /** Where the linear function from (a, fa) to (b, fb) crosses 0.5. */
         double
         crossing(const double a, const double fa, const double b, const double fb)
@@ -42,17 +55,13 @@ namespace slidewave
       double
       front_position(const grid::FiniteElementField &phase)
       {
-        const auto &tria  = phase.dof_handler().get_triangulation();
-        double      low   = std::numeric_limits<double>::max();
-        double      front = -std::numeric_limits<double>::max();
-        for (const auto &cell : tria.active_cell_iterators())
-          low = std::min(low, cell->vertex(0)[1]);
-        low         = dealii::Utilities::MPI::min(low, tria.get_communicator());
-        double left = std::numeric_limits<double>::max();
+        const auto            &tria   = phase.dof_handler().get_triangulation();
+        const dealii::Point<2> corner = lower_left(tria);
+        const double           low    = corner[1];
+        double                 front  = -std::numeric_limits<double>::max();
         for (const auto &cell : phase.dof_handler().active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              left = std::min(left, cell->vertex(0)[0]);
               if (std::abs(cell->vertex(0)[1] - low) > 1e-9 * cell->extent_in_direction(0))
                 continue;
               const auto   phi = corner_values(cell, phase);
@@ -65,8 +74,7 @@ namespace slidewave
                 front = std::max(front, x1);
             }
         front = dealii::Utilities::MPI::max(front, tria.get_communicator());
-        left  = dealii::Utilities::MPI::min(left, tria.get_communicator());
-        return front > -std::numeric_limits<double>::max() ? front : left;
+        return front > -std::numeric_limits<double>::max() ? front : corner[0];
       }
 
 
@@ -76,12 +84,10 @@ namespace slidewave
       {
         const auto &tria      = phase.dof_handler().get_triangulation();
         double      elevation = -std::numeric_limits<double>::max();
-        double      bottom    = std::numeric_limits<double>::max();
         for (const auto &cell : phase.dof_handler().active_cell_iterators())
           if (cell->is_locally_owned())
             {
               const double x0 = cell->vertex(0)[0], x1 = cell->vertex(1)[0];
-              bottom = std::min(bottom, cell->vertex(0)[1]);
               if (x < x0 || x > x1)
                 continue;
               // Along the vertical line x the bilinear phi is linear in y.
@@ -96,8 +102,7 @@ namespace slidewave
                 elevation = std::max(elevation, y1);
             }
         elevation = dealii::Utilities::MPI::max(elevation, tria.get_communicator());
-        bottom    = dealii::Utilities::MPI::min(bottom, tria.get_communicator());
-        return elevation > -std::numeric_limits<double>::max() ? elevation : bottom;
+        return elevation > -std::numeric_limits<double>::max() ? elevation : lower_left(tria)[1];
       }
 
 

@@ -19,7 +19,18 @@ namespace slidewave
     namespace
     {
       const std::string section = "Free surface flow";
-    }
+
+      /** The entries of subsection "Free surface flow", read and checked. */
+      FreeSurfaceParameters
+      parse(dealii::ParameterHandler &prm)
+      {
+        FreeSurfaceParameters parameters;
+        prm.enter_subsection(section);
+        parameters.parse_parameters(prm);
+        prm.leave_subsection();
+        return parameters;
+      }
+    } // namespace
 
 
 
@@ -36,12 +47,9 @@ namespace slidewave
     FreeSurfaceScene::FreeSurfaceScene(const SceneParameters    &scene_parameters,
                                        dealii::ParameterHandler &prm)
       : scene(scene_parameters)
-      , output(scene_parameters.output_directory, {})
+      , parameters(parse(prm))
+      , output(scene_parameters.output_directory, parameters.gauges)
     {
-      prm.enter_subsection(section);
-      parameters.parse_parameters(prm);
-      prm.leave_subsection();
-      output = FreeSurfaceOutput(scene.output_directory, parameters.gauges);
     }
 
 
@@ -145,7 +153,7 @@ namespace slidewave
 
 
 
-    void
+    double
     FreeSurfaceScene::check_state(const StepInfo &info) const
     {
       const std::string where
@@ -165,6 +173,7 @@ namespace slidewave
                          + " % from its initial " + to_string(initial_volume)
                          + " m^2, beyond 'Guards/Maximum volume drift' = "
                          + to_string(100. * parameters.max_volume_drift) + " %");
+      return drift;
     }
 
 
@@ -173,9 +182,7 @@ namespace slidewave
     FreeSurfaceScene::after_step(const StepInfo &info)
     {
       dealii::TimerOutput::Scope scope(*timer, "fluid: checks and gauges");
-      check_state(info);
-      max_drift
-        = std::max(max_drift, std::abs(solver->water_volume() - initial_volume) / initial_volume);
+      max_drift = std::max(max_drift, check_state(info));
       output.record_gauges(*solver, info.time);
       if (parameters.exact_solution == FlowExactSolution::martin_moyce
           || parameters.exact_solution == FlowExactSolution::standing_wave)

@@ -201,9 +201,17 @@ namespace slidewave
     double
     FreeSurfaceSolver::profile_velocity() const
     {
+      return profile_velocity(max_speed());
+    }
+
+
+
+    double
+    FreeSurfaceSolver::profile_velocity(const double fastest) const
+    {
       const double h = grid.cell_size();
       return parameters.mobility_factor
-             * std::max(max_speed(), std::sqrt(parameters.fluid.gravity.norm() * h));
+             * std::max(fastest, std::sqrt(parameters.fluid.gravity.norm() * h));
     }
 
 
@@ -213,8 +221,9 @@ namespace slidewave
     {
       // The advection velocity and the sharpening are explicit: a Courant number on
       // the finest cells with the faster of the two speeds.
-      const double speed = std::max(max_speed(), profile_velocity());
-      const double dt    = parameters.courant_number * grid.cell_size() / speed;
+      const double fastest = max_speed(); // one pass over the cells
+      const double speed   = std::max(fastest, profile_velocity(fastest));
+      const double dt      = parameters.courant_number * grid.cell_size() / speed;
       return std::min(dt, parameters.maximum_time_step);
     }
 

@@ -95,8 +95,9 @@ namespace slidewave
       void
       create_solver();
 
-      /** The guards: finite fields, the speed limit, the water volume (RunFailure). */
-      void
+      /** The guards: finite fields, the speed limit, the water volume (RunFailure).
+       *  Returns the volume's relative drift. */
+      double
       check_state(const StepInfo &info) const;
 
       const SceneParameters                &scene;

@@ -106,6 +106,10 @@ namespace slidewave
       /** @} */
 
     private:
+      /** gamma for the largest speed @p fastest. */
+      double
+      profile_velocity(double fastest) const;
+
       /** phi of the initial water. */
       void
       set_initial_state();

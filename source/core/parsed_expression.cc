@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/point.h>
 #include <deal.II/base/utilities.h>
@@ -8,6 +9,26 @@
 
 namespace slidewave
 {
+  namespace
+  {
+    /** muparser's reason in deal.II's diagnosis @p text, as " (muparser: ...)". */
+    std::string
+    muparser_reason(const std::string &text)
+    {
+      const auto at = text.find("Message:");
+      if (at == std::string::npos)
+        return "";
+      const auto open  = text.find('<', at);
+      const auto close = text.find('>', open);
+      if (open == std::string::npos || close == std::string::npos)
+        return "";
+      return " (muparser: " + text.substr(open + 1, std::min<std::size_t>(close - open - 1, 200))
+             + ")";
+    }
+  } // namespace
+
+
+
   std::map<std::string, double>
   parse_constants(const std::string &parameter, const std::string &constants)
   {
@@ -65,23 +86,59 @@ namespace slidewave
     catch (...)
       {
         std::cerr.rdbuf(cerr_buffer);
-        std::string       reason;
-        const std::string text = diagnosis.str();
-        const auto        at   = text.find("Message:");
-        if (at != std::string::npos)
-          {
-            const auto open  = text.find('<', at);
-            const auto close = text.find('>', open);
-            if (open != std::string::npos && close != std::string::npos)
-              reason = " (muparser: " + text.substr(open + 1, close - open - 1) + ")";
-          }
         throw InputError(parameter,
                          expression,
                          "a valid expression of x and t in muparser syntax, e.g. "
                          "'x < 0.5 ? 1.0 : 0.5', using only the declared constants"
-                           + reason);
+                           + muparser_reason(diagnosis.str()));
       }
   }
+
+
+
+  template <int dim>
+  void
+  initialize_parser(dealii::FunctionParser<dim> &function,
+                    const std::string           &variables,
+                    const std::string           &expression,
+                    const bool                   time_dependent,
+                    const std::string           &parameter,
+                    const std::string           &allowed)
+  {
+    if (static_cast<unsigned int>(std::count(expression.begin(), expression.end(), ';') + 1)
+        != function.n_components)
+      throw InputError(parameter, expression, allowed);
+    std::ostringstream diagnosis;
+    std::streambuf    *cerr_buffer = std::cerr.rdbuf(diagnosis.rdbuf());
+    try
+      {
+        function.initialize(variables, expression, {}, time_dependent);
+        // muparser compiles lazily: evaluate once so that syntax errors surface here.
+        for (unsigned int c = 0; c < function.n_components; ++c)
+          (void)function.value(dealii::Point<dim>(), c);
+        std::cerr.rdbuf(cerr_buffer);
+      }
+    catch (...)
+      {
+        std::cerr.rdbuf(cerr_buffer);
+        throw InputError(parameter, expression, allowed + muparser_reason(diagnosis.str()));
+      }
+  }
+
+  template void
+  initialize_parser(dealii::FunctionParser<1> &,
+                    const std::string &,
+                    const std::string &,
+                    bool,
+                    const std::string &,
+                    const std::string &);
+  template void
+  initialize_parser(dealii::FunctionParser<2> &,
+                    const std::string &,
+                    const std::string &,
+                    bool,
+                    const std::string &,
+                    const std::string &);
 
 
 

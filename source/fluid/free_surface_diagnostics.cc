@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -278,6 +279,50 @@ namespace slidewave
               error = std::max(error, std::abs(values[cell->vertex_dof_index(v, 0)] - exact));
         error = dealii::Utilities::MPI::max(error, flow.dof_handler().get_communicator());
         return exact != 0. ? error / std::abs(exact) : error;
+      }
+
+
+
+      double
+      taylor_green_error(const grid::FiniteElementField &flow,
+                         const FreeSurfaceParameters    &parameters,
+                         const double                    time)
+      {
+        // u = U (sin k x' cos k y', -cos k x' sin k y') exp(-2 nu k^2 t), x' = x - x0,
+        // k = pi / L: free slip on the four sides of the square holds it exactly (u . n
+        // and the shear vanish there). U from the initial field at (x0 + L/2, y0).
+        const dealii::Point<2> origin = parameters.lower_left;
+        const double           k      = M_PI / (parameters.upper_right[0] - origin[0]);
+        const double nu = parameters.fluid.water_viscosity / parameters.fluid.water_density;
+        dealii::FunctionParser<2> initial(2);
+        initial.initialize("x,y", parameters.initial_velocity, {});
+        const double U = initial.value(origin + dealii::Point<2>(0.5 * M_PI / k, 0.), 0)
+                         * std::exp(-2. * nu * k * k * time);
+
+        const dealii::QGauss<2>                  quadrature(3);
+        const dealii::FEValuesExtractors::Vector velocity(0);
+        dealii::FEValues<2>                      fv(flow.finite_element(),
+                               quadrature,
+                               dealii::update_values | dealii::update_quadrature_points
+                                 | dealii::update_JxW_values);
+        std::vector<dealii::Tensor<1, 2>>        u(quadrature.size());
+        double                                   error = 0., norm = 0.;
+        grid::for_each_owned_cell_in_tree_order(flow.dof_handler(), [&](const auto &cell) {
+          fv.reinit(cell);
+          fv[velocity].get_function_values(flow.values(0), u);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const dealii::Tensor<1, 2> p = fv.quadrature_point(q) - origin;
+              const dealii::Tensor<1, 2> exact({U * std::sin(k * p[0]) * std::cos(k * p[1]),
+                                                -U * std::cos(k * p[0]) * std::sin(k * p[1])});
+              error += (u[q] - exact).norm_square() * fv.JxW(q);
+              norm += exact.norm_square() * fv.JxW(q);
+            }
+        });
+        const MPI_Comm communicator = flow.dof_handler().get_communicator();
+        error                       = dealii::Utilities::MPI::sum(error, communicator);
+        norm                        = dealii::Utilities::MPI::sum(norm, communicator);
+        return norm > 0. ? std::sqrt(error / norm) : std::sqrt(error);
       }
     } // namespace diagnostics
   }   // namespace fluid

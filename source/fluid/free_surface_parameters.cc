@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/function_parser.h>
 #include <slidewave/core/input_error.h>
@@ -16,19 +17,14 @@ namespace slidewave
                 const std::string      &expression,
                 const dealii::Point<2> &p)
     {
-      try
-        {
-          dealii::FunctionParser<2> function(1);
-          function.initialize("x,y", expression, {});
-          return function.value(p);
-        }
-      catch (const std::exception &error)
-        {
-          throw InputError(parameter,
-                           expression,
-                           "an expression of x and y in muparser syntax ("
-                             + std::string(error.what()).substr(0, 200) + ")");
-        }
+      dealii::FunctionParser<2> function(1);
+      initialize_parser(function,
+                        "x,y",
+                        expression,
+                        false,
+                        parameter,
+                        "an expression of x and y in muparser syntax");
+      return function.value(p);
     }
 
 
@@ -36,14 +32,6 @@ namespace slidewave
     namespace
     {
       const std::string section = "Free surface flow";
-
-      FlowBoundary
-      flow_boundary(const std::string &name)
-      {
-        return name == "no slip" ? FlowBoundary::no_slip :
-               name == "open"    ? FlowBoundary::open :
-                                   FlowBoundary::free_slip;
-      }
 
       /** "x0, y0, x1, y1; x0, y0, x1, y1" into boxes inside the domain. */
       std::vector<WaterBox>
@@ -118,16 +106,7 @@ namespace slidewave
       prm.leave_subsection();
 
       prm.enter_subsection("Boundary conditions");
-      {
-        const std::string help = "'no slip' (u = 0), 'free slip' (no flow through the side, "
-                                 "no shear) or 'open' (traction free at the ambient pressure "
-                                 "0: water and air may leave and air may enter). At least "
-                                 "one side must be open: it sets the pressure level.";
-        prm.declare_entry("Left", "free slip", Selection("no slip|free slip|open"), help);
-        prm.declare_entry("Right", "free slip", Selection("no slip|free slip|open"), help);
-        prm.declare_entry("Bottom", "free slip", Selection("no slip|free slip|open"), help);
-        prm.declare_entry("Top", "open", Selection("no slip|free slip|open"), help);
-      }
+      FlowBoundaries::declare_parameters(prm);
       prm.leave_subsection();
 
       prm.enter_subsection("Initial water");
@@ -142,6 +121,11 @@ namespace slidewave
                           Anything(),
                           "Rectangles of water 'x0, y0, x1, y1; ...' (with the surface "
                           "elevation, the water is their union).");
+        prm.declare_entry("Velocity",
+                          "0; 0",
+                          Anything(),
+                          "u_x; u_y [m/s] of the water and the air at the start: expressions "
+                          "of x and y (muparser syntax).");
       }
       prm.leave_subsection();
 
@@ -259,28 +243,34 @@ namespace slidewave
 
       prm.enter_subsection("Verification");
       {
-        prm.declare_entry("Exact solution",
-                          "none",
-                          Selection("none|hydrostatic|poiseuille|martin moyce|standing wave|darcy"),
-                          "'hydrostatic': water at rest under its surface eta: the pressure "
-                          "at every node deeper than 3 epsilon against rho_l |g| (eta - y), "
-                          "relative to rho_l |g| max depth, and the largest speed (the "
-                          "spurious currents). 'poiseuille': a channel full of water between "
-                          "no-slip bottom and top, open ends, gravity along x: u_x at every "
-                          "node against g_x y (H - y) / (2 nu), relative to its largest "
-                          "value, at the end. 'martin moyce': the collapse of one water box "
-                          "of width a and height 2 a against the back (left) wall: the "
-                          "surge front x / a against the measurements of Martin and Moyce "
-                          "(1952) at their times T = t sqrt(2 g / a); the tolerance applies "
-                          "to the largest difference in x / a (no time shift). 'standing "
-                          "wave': a tank with free-slip sides started from 'Surface "
-                          "elevation' = d + A cos(pi (x - x0) / L): the period of the surface "
-                          "at the left wall against linear theory, omega^2 = g k tanh(k d), "
-                          "k = pi / L (d the mean of the surface elevation); the tolerance "
-                          "applies to the relative period error. 'darcy': a channel full of "
-                          "water and of a porous structure (n, kappa uniform), free-slip "
-                          "bottom and top, open ends, gravity along x: u_x at every node "
-                          "against rho_l g_x kappa / (n mu_l), relative, at the end.");
+        prm.declare_entry(
+          "Exact solution",
+          "none",
+          Selection("none|hydrostatic|poiseuille|martin moyce|standing wave|darcy|taylor green"),
+          "'hydrostatic': water at rest under its surface eta: the pressure "
+          "at every node deeper than 3 epsilon against rho_l |g| (eta - y), "
+          "relative to rho_l |g| max depth, and the largest speed (the "
+          "spurious currents). 'poiseuille': a channel full of water between "
+          "no-slip bottom and top, open ends, gravity along x: u_x at every "
+          "node against g_x y (H - y) / (2 nu), relative to its largest "
+          "value, at the end. 'martin moyce': the collapse of one water box "
+          "of width a and height 2 a against the back (left) wall: the "
+          "surge front x / a against the measurements of Martin and Moyce "
+          "(1952) at their times T = t sqrt(2 g / a); the tolerance applies "
+          "to the largest difference in x / a (no time shift). 'standing "
+          "wave': a tank with free-slip sides started from 'Surface "
+          "elevation' = d + A cos(pi (x - x0) / L): the period of the surface "
+          "at the left wall against linear theory, omega^2 = g k tanh(k d), "
+          "k = pi / L (d the mean of the surface elevation); the tolerance "
+          "applies to the relative period error. 'darcy': a channel full of "
+          "water and of a porous structure (n, kappa uniform), free-slip "
+          "bottom and top, open ends, gravity along x: u_x at every node "
+          "against rho_l g_x kappa / (n mu_l), relative, at the end. 'taylor "
+          "green': a square [x0, x0 + L]^2 of water with free-slip sides "
+          "started from 'Initial water/Velocity' = U (sin(k x) cos(k y), "
+          "-cos(k x) sin(k y)), k = pi / L: the L2 error of the velocity "
+          "against that field times exp(-2 nu k^2 t), relative to its L2 "
+          "norm, at the end.");
         prm.declare_entry("Tolerance",
                           "0",
                           Double(0.),
@@ -356,20 +346,7 @@ namespace slidewave
       prm.leave_subsection();
 
       prm.enter_subsection("Boundary conditions");
-      {
-        boundaries    = {{flow_boundary(prm.get("Left")),
-                          flow_boundary(prm.get("Right")),
-                          flow_boundary(prm.get("Bottom")),
-                          flow_boundary(prm.get("Top"))}};
-        bool any_open = false;
-        for (const auto b : boundaries)
-          any_open = any_open || b == FlowBoundary::open;
-        if (!any_open)
-          throw InputError(section + "/Boundary conditions/Top",
-                           prm.get("Top"),
-                           "'open' on at least one side (Left, Right, Bottom or Top): a tank "
-                           "closed on all sides leaves the pressure level undetermined");
-      }
+      boundaries.parse_parameters(prm, section);
       prm.leave_subsection();
 
       prm.enter_subsection("Initial water");
@@ -377,7 +354,15 @@ namespace slidewave
         surface_elevation = prm.get("Surface elevation");
         if (!surface_elevation.empty())
           ParsedExpression(section + "/Initial water/Surface elevation", surface_elevation);
-        water_boxes = parse_boxes(prm.get("Water boxes"));
+        water_boxes      = parse_boxes(prm.get("Water boxes"));
+        initial_velocity = prm.get("Velocity");
+        dealii::FunctionParser<2> function(2);
+        initialize_parser(function,
+                          "x,y",
+                          initial_velocity,
+                          false,
+                          section + "/Initial water/Velocity",
+                          "two expressions 'u_x; u_y' of x and y in muparser syntax");
       }
       prm.leave_subsection();
 
@@ -471,6 +456,7 @@ namespace slidewave
                                  type == "martin moyce"  ? FlowExactSolution::martin_moyce :
                                  type == "standing wave" ? FlowExactSolution::standing_wave :
                                  type == "darcy"         ? FlowExactSolution::darcy :
+                                 type == "taylor green"  ? FlowExactSolution::taylor_green :
                                                            FlowExactSolution::none;
         tolerance              = prm.get_double("Tolerance");
         if (exact_solution == FlowExactSolution::poiseuille
@@ -499,6 +485,16 @@ namespace slidewave
                            type,
                            "'standing wave' with a 'Surface elevation' and 'free slip' at Left "
                            "and Right");
+        if (exact_solution == FlowExactSolution::taylor_green
+            && (!boundaries.closed() || boundaries[0] != FlowBoundary::free_slip
+                || boundaries[1] != FlowBoundary::free_slip
+                || boundaries[2] != FlowBoundary::free_slip
+                || boundaries[3] != FlowBoundary::free_slip
+                || std::abs((upper_right[0] - lower_left[0]) - (upper_right[1] - lower_left[1]))
+                     > 1e-9 * (upper_right[0] - lower_left[0])))
+          throw InputError(section + "/Verification/Exact solution",
+                           type,
+                           "'taylor green' in a square grid with 'free slip' on all four sides");
         if (exact_solution == FlowExactSolution::darcy && porosity.empty())
           throw InputError(section + "/Verification/Exact solution",
                            type,
@@ -510,10 +506,11 @@ namespace slidewave
       }
       prm.leave_subsection();
 
-      if (surface_elevation.empty() && water_boxes.empty())
+      if (surface_elevation.empty() && water_boxes.empty() && !boundaries.any(FlowBoundary::inflow))
         throw InputError(section + "/Initial water/Water boxes",
                          "",
-                         "some water: a 'Surface elevation' or at least one box");
+                         "some water: a 'Surface elevation', at least one box, or an "
+                         "'inflow' side");
     }
 
 

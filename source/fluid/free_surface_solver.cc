@@ -153,10 +153,14 @@ namespace slidewave
                              problem.empty() ? "(on another rank)" : problem,
                              "porosity in (0, 1] and permeability > 0 everywhere in the grid");
         }
+      // The velocity at the start (zero unless 'Initial water/Velocity' says otherwise),
+      // the pressure 0: both states, so that the first extrapolation is the initial field.
+      dealii::FunctionParser<2> velocity(3);
+      velocity.initialize("x,y", parameters.initial_velocity + "; 0", {});
       for (unsigned int s = 0; s < flow.n_states(); ++s)
         {
-          flow.locally_owned_values(s) = 0.;
-          flow.values_changed(s);
+          flow.interpolate(velocity, s);
+          flow_system.impose_boundary_values(s, time);
         }
     }
 
@@ -166,6 +170,7 @@ namespace slidewave
     FreeSurfaceSolver::setup(const double start_time)
     {
       grid.create();
+      time = start_time;
       set_initial_state();
       // The adaptive levels follow the initial surface: refine where the exact initial
       // phi is steep, then set it again on the finer cells (no interpolation error).
@@ -175,9 +180,10 @@ namespace slidewave
             break;
           set_initial_state();
         }
-      time    = start_time;
-      last_dt = 0.;
-      n_steps = 0;
+      time          = start_time;
+      last_dt       = 0.;
+      n_steps       = 0;
+      water_outflow = 0.;
     }
 
 
@@ -237,7 +243,8 @@ namespace slidewave
       const StepLengths lengths{dt, last_dt};
       report.gamma = profile_velocity();
       report.phase = phase_system.step(lengths, report.gamma);
-      report.flow  = flow_system.step(phase_system.previous(), lengths);
+      report.flow  = flow_system.step(phase_system.previous(), lengths, time + dt);
+      water_outflow += phase_system.last_outflow();
       time += dt;
       last_dt = dt;
       ++n_steps;

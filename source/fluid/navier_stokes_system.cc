@@ -1,4 +1,5 @@
 #include <cmath>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -51,22 +52,23 @@ namespace slidewave
 
 
     void
-    NavierStokesSystem::setup_system()
+    NavierStokesSystem::make_constraints(const double time)
     {
       const auto &dofs = flow.dof_handler();
       flow_constraints.clear();
       flow_constraints.reinit(flow.locally_relevant_dofs());
       dealii::DoFTools::make_hanging_node_constraints(dofs, flow_constraints);
-      // The walls: the grid's sides are colourized left 0, right 1, bottom 2, top 3; the
+      // The sides: the grid's sides are colourized left 0, right 1, bottom 2, top 3; the
       // normal of the left and right sides is x (component 0), of bottom and top y.
+      const auto &sides = parameters.boundaries;
       for (unsigned int side = 0; side < 4; ++side)
         {
-          if (parameters.boundaries[side] == FlowBoundary::open)
+          if (sides[side] == FlowBoundary::open || sides[side] == FlowBoundary::inflow)
             continue;
           const unsigned int normal = side < 2 ? 0 : 1;
           std::vector<bool>  mask{false, false, false};
           mask[normal] = true;
-          if (parameters.boundaries[side] == FlowBoundary::no_slip)
+          if (sides[side] == FlowBoundary::no_slip)
             mask[1 - normal] = true;
           dealii::VectorTools::interpolate_boundary_values(dofs,
                                                            side,
@@ -74,8 +76,38 @@ namespace slidewave
                                                            flow_constraints,
                                                            dealii::ComponentMask(mask));
         }
+      // The inflow sides: both velocity components at the time @p time (applied after the
+      // walls, so that a corner shared with a wall keeps the wall's zero).
+      if (sides.any(FlowBoundary::inflow))
+        {
+          dealii::FunctionParser<2> inflow(3, time);
+          inflow.initialize("x,y,t", sides.inflow_velocity + "; 0", {}, true);
+          for (unsigned int side = 0; side < 4; ++side)
+            if (sides[side] == FlowBoundary::inflow)
+              dealii::VectorTools::interpolate_boundary_values(
+                dofs, side, inflow, flow_constraints, dealii::ComponentMask({true, true, false}));
+        }
+      // A closed tank: the pressure is determined up to a constant, set to 0 at the lower
+      // left corner (a vertex of every grid, never hanging).
+      if (sides.closed())
+        for (const auto &cell : dofs.active_cell_iterators())
+          if (!cell->is_artificial())
+            for (const unsigned int v : cell->vertex_indices())
+              if (cell->vertex(v).distance(parameters.lower_left) < 1e-9 * parameters.cell_size)
+                {
+                  const auto dof = cell->vertex_dof_index(v, 2);
+                  if (flow_constraints.can_store_line(dof) && !flow_constraints.is_constrained(dof))
+                    flow_constraints.add_line(dof);
+                }
       flow_constraints.close();
+    }
 
+
+
+    void
+    NavierStokesSystem::setup_system()
+    {
+      make_constraints(0.);
       flow.reinit_matrix(matrix, flow_constraints);
       rhs.reinit(flow.locally_owned_dofs(), grid.communicator());
       solution.reinit(flow.locally_owned_dofs(), grid.communicator());
@@ -274,7 +306,8 @@ namespace slidewave
                      * JxW;
               }
           }
-        add_open_boundary_terms(cell, phase_cell, fv_face, fv_face_phase, local_matrix, local_rhs);
+        add_open_boundary_terms(
+          cell, phase_cell, fv_face, fv_face_phase, w, local_matrix, local_rhs);
         cell->get_dof_indices(indices);
         flow_constraints.distribute_local_to_global(local_matrix, local_rhs, indices, matrix, rhs);
       });
@@ -290,6 +323,7 @@ namespace slidewave
                                                 const PhaseCell            &phase_cell,
                                                 dealii::FEFaceValues<2>    &fv_face,
                                                 dealii::FEFaceValues<2>    &fv_face_phase,
+                                                const double                w,
                                                 dealii::FullMatrix<double> &local_matrix,
                                                 dealii::Vector<double>     &local_rhs) const
     {
@@ -297,9 +331,13 @@ namespace slidewave
       // (2 mu eps(u) - p I) n at zero, which a fully developed outflow (Poiseuille) does
       // not satisfy. The term - mu (grad u)^T n turns the natural condition into
       // (mu grad u - p I) n = 0: the pressure is the ambient 0 and the velocity leaves
-      // without a normal gradient, as an outflow of water or air does.
+      // without a normal gradient, as an outflow of water or air does. Where the flow
+      // comes back in (u_bar . n < 0), the backflow term beta rho |u_bar . n| w . u
+      // (implicit) takes out the kinetic energy that the inflow would otherwise bring
+      // in unbounded (Esmaily Moghadam et al. 2011).
       const dealii::FEValuesExtractors::Vector velocity(0);
       const double                             theta = parameters.theta;
+      const double                             beta  = parameters.boundaries.backflow;
       for (const unsigned int f : cell->face_indices())
         {
           if (!cell->at_boundary(f)
@@ -310,24 +348,31 @@ namespace slidewave
           const unsigned int                n_q = fv_face.n_quadrature_points;
           std::vector<double>               phi(n_q);
           std::vector<dealii::Tensor<2, 2>> grad_u_n(n_q);
+          std::vector<dealii::Tensor<1, 2>> u_n(n_q), u_old(n_q);
           fv_face_phase.get_function_values(phase.values(0), phi);
           fv_face[velocity].get_function_gradients(flow.values(0), grad_u_n);
+          fv_face[velocity].get_function_values(flow.values(0), u_n);
+          fv_face[velocity].get_function_values(flow.values(1), u_old);
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const double                mu           = parameters.fluid.viscosity(phi[q]);
               const dealii::Tensor<1, 2> &normal       = fv_face.normal_vector(q);
               const double                JxW          = fv_face.JxW(q);
               const dealii::Tensor<1, 2>  old_traction = dealii::transpose(grad_u_n[q]) * normal;
+              const double inflow   = std::min((u_n[q] + w * (u_n[q] - u_old[q])) * normal, 0.);
+              const double backflow = beta * parameters.fluid.density(phi[q]) * (-inflow);
               for (unsigned int i = 0; i < local_rhs.size(); ++i)
                 {
-                  const dealii::Tensor<1, 2> w = fv_face[velocity].value(i, q);
-                  if (w.norm_square() == 0.)
+                  const dealii::Tensor<1, 2> test = fv_face[velocity].value(i, q);
+                  if (test.norm_square() == 0.)
                     continue;
                   for (unsigned int j = 0; j < local_rhs.size(); ++j)
                     local_matrix(i, j)
-                      -= theta * mu * w
-                         * (dealii::transpose(fv_face[velocity].gradient(j, q)) * normal) * JxW;
-                  local_rhs(i) += (1. - theta) * mu * w * old_traction * JxW;
+                      += (backflow * test * fv_face[velocity].value(j, q)
+                          - theta * mu * test
+                              * (dealii::transpose(fv_face[velocity].gradient(j, q)) * normal))
+                         * JxW;
+                  local_rhs(i) += (1. - theta) * mu * test * old_traction * JxW;
                 }
             }
         }
@@ -336,8 +381,12 @@ namespace slidewave
 
 
     SolveReport
-    NavierStokesSystem::step(const VectorType &phase_old, const StepLengths &lengths)
+    NavierStokesSystem::step(const VectorType  &phase_old,
+                             const StepLengths &lengths,
+                             const double       new_time)
     {
+      if (parameters.boundaries.any(FlowBoundary::inflow))
+        make_constraints(new_time);
       assemble(phase_old, lengths);
 
       solution                     = flow.locally_owned_values(0); // the last step: the first guess
@@ -381,6 +430,16 @@ namespace slidewave
       flow.locally_owned_values(0) = solution;
       flow.values_changed(0);
       return {control.last_step(), control.last_value()};
+    }
+
+
+
+    void
+    NavierStokesSystem::impose_boundary_values(const unsigned int state, const double time)
+    {
+      make_constraints(time);
+      flow_constraints.distribute(flow.locally_owned_values(state));
+      flow.values_changed(state);
     }
 
 

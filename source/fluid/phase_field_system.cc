@@ -75,6 +75,18 @@ namespace slidewave
                                   quadrature,
                                   dealii::update_values | dealii::update_gradients);
       const dealii::FEValuesExtractors::Vector velocity(0);
+      const dealii::QGauss<1>                  face_quadrature(2);
+      dealii::FEFaceValues<2>                  fv_face(fe,
+                                      face_quadrature,
+                                      dealii::update_values | dealii::update_quadrature_points
+                                        | dealii::update_normal_vectors
+                                        | dealii::update_JxW_values);
+      dealii::FEFaceValues<2>                  fv_face_flow(flow.finite_element(),
+                                           face_quadrature,
+                                           dealii::update_values);
+      std::vector<dealii::Tensor<1, 2>>        u_face_n(face_quadrature.size()),
+        u_face_old(face_quadrature.size());
+      std::vector<double> phi_face_n(face_quadrature.size());
 
       const double theta = parameters.theta, dt = lengths.dt;
       const double w       = extrapolation_weight(lengths, theta);
@@ -156,6 +168,38 @@ namespace slidewave
                      * JxW;
               }
           }
+        // The inflow sides, weakly and upwind: where the flow enters (u_bar . n < 0) the
+        // term - u_bar . n (phi - phi_in) psi pulls phi to what enters. Summed over the
+        // test functions it replaces the flux phi u_bar . n by phi_in u_bar . n there, so
+        // the water that enters is exactly what the inflow prescribes.
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f)
+              && parameters.boundaries[cell->face(f)->boundary_id()] == FlowBoundary::inflow)
+            {
+              fv_face.reinit(cell, f);
+              fv_face_flow.reinit(flow_cell, f);
+              fv_face_flow[velocity].get_function_values(flow.values(0), u_face_n);
+              fv_face_flow[velocity].get_function_values(flow.values(1), u_face_old);
+              fv_face.get_function_values(phase_old, phi_face_n);
+              for (unsigned int q = 0; q < fv_face.n_quadrature_points; ++q)
+                {
+                  const dealii::Tensor<1, 2> u_bar
+                    = u_face_n[q] + w * (u_face_n[q] - u_face_old[q]);
+                  const double entering = std::min(u_bar * fv_face.normal_vector(q), 0.);
+                  const double phi_in
+                    = parameters.boundaries.inflow_phase(fv_face.quadrature_point(q)[1], epsilon);
+                  const double JxW = fv_face.JxW(q);
+                  for (unsigned int i = 0; i < n_dofs; ++i)
+                    {
+                      const double psi = fv_face.shape_value(i, q);
+                      for (unsigned int j = 0; j < n_dofs; ++j)
+                        local_matrix(i, j)
+                          -= theta * entering * psi * fv_face.shape_value(j, q) * JxW;
+                      local_rhs(i)
+                        += entering * ((1. - theta) * phi_face_n[q] - phi_in) * psi * JxW;
+                    }
+                }
+            }
         cell->get_dof_indices(indices);
         phase.constraints().distribute_local_to_global(
           local_matrix, local_rhs, indices, matrix, rhs);
@@ -190,7 +234,68 @@ namespace slidewave
         }
       phase.locally_owned_values(0) = solution;
       phase.values_changed(0);
+      outflow = compute_outflow(lengths);
       return {control.last_step(), control.last_value()};
+    }
+
+
+
+    double
+    PhaseFieldSystem::compute_outflow(const StepLengths &lengths) const
+    {
+      // The discrete equation summed over the test functions: the volume changes by
+      // - dt times the flux u_bar . n phi^{n+theta} through the sides, phi_in on the
+      // inflow sides where the flow enters (see assemble()). The same quadrature, so the
+      // balance closes to the solver's tolerance.
+      const dealii::QGauss<1>                  face_quadrature(2);
+      const unsigned int                       n_q = face_quadrature.size();
+      const dealii::FEValuesExtractors::Vector velocity(0);
+      dealii::FEFaceValues<2>                  fv_face(phase.finite_element(),
+                                      face_quadrature,
+                                      dealii::update_values | dealii::update_quadrature_points
+                                        | dealii::update_normal_vectors
+                                        | dealii::update_JxW_values);
+      dealii::FEFaceValues<2>                  fv_face_flow(flow.finite_element(),
+                                           face_quadrature,
+                                           dealii::update_values);
+      std::vector<dealii::Tensor<1, 2>>        u_n(n_q), u_old(n_q);
+      std::vector<double>                      phi_new(n_q), phi_old(n_q);
+      const double theta = parameters.theta, w = extrapolation_weight(lengths, theta);
+      const double epsilon = parameters.interface_thickness();
+      double       flux    = 0.;
+      grid::for_each_owned_cell_in_tree_order(phase.dof_handler(), [&](const auto &cell) {
+        if (!cell->at_boundary())
+          return;
+        const dealii::DoFHandler<2>::active_cell_iterator flow_cell(&grid.triangulation(),
+                                                                    cell->level(),
+                                                                    cell->index(),
+                                                                    &flow.dof_handler());
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (!cell->at_boundary(f))
+              continue;
+            const FlowBoundary side = parameters.boundaries[cell->face(f)->boundary_id()];
+            if (side != FlowBoundary::open && side != FlowBoundary::inflow)
+              continue;
+            fv_face.reinit(cell, f);
+            fv_face_flow.reinit(flow_cell, f);
+            fv_face_flow[velocity].get_function_values(flow.values(0), u_n);
+            fv_face_flow[velocity].get_function_values(flow.values(1), u_old);
+            fv_face.get_function_values(phase.values(0), phi_new);
+            fv_face.get_function_values(phase_old, phi_old);
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const double un  = (u_n[q] + w * (u_n[q] - u_old[q])) * fv_face.normal_vector(q);
+                const double phi = theta * phi_new[q] + (1. - theta) * phi_old[q];
+                const double carried
+                  = side == FlowBoundary::inflow && un < 0. ?
+                      parameters.boundaries.inflow_phase(fv_face.quadrature_point(q)[1], epsilon) :
+                      phi;
+                flux += un * carried * fv_face.JxW(q);
+              }
+          }
+      });
+      return lengths.dt * dealii::Utilities::MPI::sum(flux, grid.communicator());
     }
   } // namespace fluid
 } // namespace slidewave

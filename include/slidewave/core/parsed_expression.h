@@ -29,6 +29,22 @@ namespace slidewave
     std::unique_ptr<dealii::FunctionParser<1>> function;
   };
 
+  /**
+   * Initializes @p function (as many components as ';'-separated expressions in
+   * @p expression, variables @p variables, "t" last when @p time_dependent) and evaluates
+   * it once at the origin (muparser compiles lazily); a wrong number of expressions or a
+   * syntax error is an InputError naming @p parameter and @p allowed with
+   * muparser's reason (deal.II's print of it to std::cerr is captured).
+   */
+  template <int dim>
+  void
+  initialize_parser(dealii::FunctionParser<dim> &function,
+                    const std::string           &variables,
+                    const std::string           &expression,
+                    bool                         time_dependent,
+                    const std::string           &parameter,
+                    const std::string           &allowed);
+
   /** Parses "a=1, b=2" into a map, throwing an InputError naming @p parameter. */
   std::map<std::string, double>
   parse_constants(const std::string &parameter, const std::string &constants);

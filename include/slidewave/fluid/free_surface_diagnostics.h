@@ -58,6 +58,15 @@ namespace slidewave
        *  (n mu_l) (n, kappa of the porous structure at the grid's centre), relative. */
       double
       darcy_error(const grid::FiniteElementField &flow, const FreeSurfaceParameters &parameters);
+
+      /** Taylor-Green vortices in the square [x0, x0 + L]^2 with free-slip sides: the L2
+       *  error of the velocity at @p time against U (sin k x' cos k y', -cos k x' sin k y')
+       *  exp(-2 nu k^2 t) (x' = x - x0, k = pi / L, nu of water, U from 'Initial
+       *  water/Velocity'), relative to the exact field's L2 norm. */
+      double
+      taylor_green_error(const grid::FiniteElementField &flow,
+                         const FreeSurfaceParameters    &parameters,
+                         double                          time);
     } // namespace diagnostics
   }   // namespace fluid
 } // namespace slidewave

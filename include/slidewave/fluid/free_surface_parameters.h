@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <slidewave/fluid/flow_boundaries.h>
 #include <slidewave/grid/background_grid.h>
 #include <string>
 #include <vector>
@@ -19,14 +20,6 @@ namespace slidewave
     evaluate_xy(const std::string      &parameter,
                 const std::string      &expression,
                 const dealii::Point<2> &p);
-
-    /** What a side of the tank does to the flow. */
-    enum class FlowBoundary
-    {
-      no_slip,   ///< u = 0
-      free_slip, ///< u . n = 0, no shear
-      open       ///< traction free: the ambient pressure (0), water and air may leave
-    };
 
     /** The interface equation of the phase field (paper 002, Appendix B). */
     enum class PhaseFieldModel
@@ -43,7 +36,8 @@ namespace slidewave
       poiseuille,    ///< channel between no-slip bottom and top, driven by gravity along x
       martin_moyce,  ///< collapse of a column of width a, height 2a: front against experiment
       standing_wave, ///< first sloshing mode of the tank: period against linear theory
-      darcy          ///< uniform flow through a porous medium driven by gravity along x
+      darcy,         ///< uniform flow through a porous medium driven by gravity along x
+      taylor_green   ///< decaying vortices in a closed square with free-slip sides
     };
 
     /** The two fluids and how density and viscosity go across the interface (paper 002,
@@ -109,15 +103,15 @@ namespace slidewave
       unsigned int     balance_interval     = 50;
 
       FluidProperties fluid;
-      /** Left, right, bottom, top (the grid's boundary ids 0..3). */
-      std::array<FlowBoundary, 4> boundaries{{FlowBoundary::free_slip,
-                                              FlowBoundary::free_slip,
-                                              FlowBoundary::free_slip,
-                                              FlowBoundary::open}};
+      /** Left, right, bottom, top (the grid's boundary ids 0..3), the inflow and the
+       *  backflow stabilization. */
+      FlowBoundaries boundaries;
 
       /** The water surface y = eta(x) (empty: none) and rectangles of water. */
       std::string           surface_elevation;
       std::vector<WaterBox> water_boxes;
+      /** The velocity at the start, "u_x; u_y" of x and y. */
+      std::string initial_velocity = "0; 0";
 
       /** A fixed porous structure: porosity n(x, y) and permeability kappa(x, y) [m^2]
        *  (empty porosity: none). */

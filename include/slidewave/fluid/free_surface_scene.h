@@ -100,6 +100,15 @@ namespace slidewave
       double
       check_state(const StepInfo &info) const;
 
+      /** The volume the drift is measured against: the initial water's, or the
+       *  domain's when it starts empty. */
+      double
+      reference_volume() const;
+
+      /** (volume + outflow - initial volume) / reference_volume(). */
+      double
+      volume_drift() const;
+
       const SceneParameters                &scene;
       FreeSurfaceParameters                 parameters;
       std::unique_ptr<grid::BackgroundGrid> grid;

@@ -103,6 +103,8 @@ namespace slidewave
       /** @{ */
       double       time = 0., last_dt = 0.;
       unsigned int n_steps = 0;
+      /** The water that left through the sides since the start (negative: entered). */
+      double water_outflow = 0.;
       /** @} */
 
     private:

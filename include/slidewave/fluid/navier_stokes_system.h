@@ -100,11 +100,12 @@ namespace slidewave
       /**
        * One step: assembles with the flow's states (u^n, u^{n-1}), the phase field before
        * the step @p phase_old (ghosted, the phase field's dofs) and after it (the phase
-       * field's state 0), solves for u^{n+1}, p^{n+1}, and shifts the flow's states
+       * field's state 0), solves for u^{n+1}, p^{n+1} (the inflow sides' velocity that of
+       * @p new_time), and shifts the flow's states
        * (collective). Throws RunFailure when GMRES does not converge.
        */
       SolveReport
-      step(const VectorType &phase_old, const StepLengths &lengths);
+      step(const VectorType &phase_old, const StepLengths &lengths, double new_time);
 
       /** The porous solid in the flow (the fields must live on the same grid and outlive
        *  this object); default: none. */
@@ -113,6 +114,12 @@ namespace slidewave
       {
         porous = medium;
       }
+
+      /** Sets the walls', the inflow sides' (at @p time) and the hanging nodes' values in
+       *  the state @p state of the flow: an initial field that satisfies the boundary
+       *  conditions (collective). */
+      void
+      impose_boundary_values(unsigned int state, double time);
 
       /** The largest nodal speed of the newest state (collective). */
       double
@@ -132,6 +139,11 @@ namespace slidewave
       grid_changed() override;
 
     private:
+      /** The hanging nodes, the walls, the inflow sides' velocity at @p time and, in a
+       *  closed tank, the pressure at the lower left corner. */
+      void
+      make_constraints(double time);
+
       /** Constraints, sparsity, matrix and vectors for the current cells. */
       void
       setup_system();
@@ -144,6 +156,7 @@ namespace slidewave
                               const PhaseCell            &phase_cell,
                               dealii::FEFaceValues<2>    &fv_face,
                               dealii::FEFaceValues<2>    &fv_face_phase,
+                              double                      w,
                               dealii::FullMatrix<double> &local_matrix,
                               dealii::Vector<double>     &local_rhs) const;
 

@@ -32,7 +32,8 @@ namespace slidewave
      *
      * Q1 on the background grid (the phase field's grid::FiniteElementField), SUPG with
      * tau_phi (paper 002, Eq. 95), the theta-scheme for advection and diffusion with the
-     * Adams-Bashforth advection velocity, the sharpening or reaction term explicit. One
+     * Adams-Bashforth advection velocity, the sharpening or reaction term explicit. On an
+     * inflow side the entering water fraction is imposed weakly and upwind. One
      * GMRES solve with ILU per step; the system follows the grid as the flow's does.
      */
     class PhaseFieldSystem : public grid::GridFollower
@@ -52,6 +53,15 @@ namespace slidewave
        */
       SolveReport
       step(const StepLengths &lengths, double gamma);
+
+      /** The water that left through the sides in the last step [m^2 per m of width]
+       *  (negative: it entered), the flux of the discrete equation: the water volume
+       *  changes by exactly minus this (to the solver's tolerance). */
+      double
+      last_outflow() const
+      {
+        return outflow;
+      }
 
       /** phi^n of the last step (ghosted, the phase field's dofs). */
       const VectorType &
@@ -73,12 +83,18 @@ namespace slidewave
       void
       assemble(const StepLengths &lengths, double gamma);
 
+      /** dt times the water flux through the open and inflow sides in the step just
+       *  solved (collective, summed in tree order). */
+      double
+      compute_outflow(const StepLengths &lengths) const;
+
       grid::BackgroundGrid                  &grid;
       const grid::FiniteElementField        &flow;
       grid::FiniteElementField              &phase;
       const FreeSurfaceParameters           &parameters;
       dealii::TrilinosWrappers::SparseMatrix matrix;
       VectorType                             rhs, solution, phase_old;
+      double                                 outflow = 0.;
     };
   } // namespace fluid
 } // namespace slidewave

@@ -206,6 +206,13 @@ namespace slidewave
                           Double(0.),
                           "Residual reduction of GMRES (relative to the right-hand side).");
         prm.declare_entry("Maximum iterations", "1000", Integer(1), "Of GMRES per solve.");
+        prm.declare_entry("Preconditioner interval",
+                          "10",
+                          Integer(1, 1000),
+                          "The flow's preconditioner is kept for up to this many steps "
+                          "(rebuilt earlier when the step length changes by 20 %, when GMRES "
+                          "needs twice the iterations it needed with a fresh one, after grid "
+                          "changes and checkpoints); 1: rebuilt every step.");
       }
       prm.leave_subsection();
 
@@ -416,9 +423,10 @@ namespace slidewave
 
       prm.enter_subsection("Linear solver");
       {
-        preconditioner   = prm.get("Preconditioner");
-        linear_tolerance = prm.get_double("Tolerance");
-        max_iterations   = prm.get_integer("Maximum iterations");
+        preconditioner          = prm.get("Preconditioner");
+        linear_tolerance        = prm.get_double("Tolerance");
+        max_iterations          = prm.get_integer("Maximum iterations");
+        preconditioner_interval = prm.get_integer("Preconditioner interval");
         require_in_range(
           section + "/Linear solver/Tolerance", linear_tolerance, 0., false, 0.1, true);
       }

@@ -149,6 +149,12 @@ namespace slidewave
     {
       dealii::TimerOutput::Scope scope(*timer, "fluid: advance");
       last_report = solver->advance(info.dt);
+      part_times[0] += last_report.flow.assembly_time;
+      part_times[1] += last_report.flow.preconditioner_time;
+      part_times[2] += last_report.flow.solve_time;
+      part_times[3] += last_report.phase.assembly_time + last_report.phase.solve_time;
+      flow_iterations += last_report.flow.iterations;
+      preconditioner_builds += last_report.flow.preconditioner_time > 0. ? 1 : 0;
     }
 
 
@@ -359,6 +365,16 @@ namespace slidewave
           std::printf("Water volume: largest drift %.3e of the initial %.6g m^2\n",
                       max_drift,
                       initial_volume);
+          // The split of the steps' time (wall times: not in test mode's output).
+          if (!scene.test_mode)
+            std::printf("Step time: flow assembly %.3g s, preconditioner %.3g s (%llu builds), "
+                        "GMRES %.3g s (%llu iterations), phase field %.3g s\n",
+                        part_times[0],
+                        part_times[1],
+                        preconditioner_builds,
+                        part_times[2],
+                        flow_iterations,
+                        part_times[3]);
           if (std::abs(solver->water_outflow) > 1e-6 * reference_volume())
             std::printf("Water through the sides: %.6g m^2 out (negative: in)\n",
                         solver->water_outflow);

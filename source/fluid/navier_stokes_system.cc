@@ -1,6 +1,7 @@
 #include <cmath>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
@@ -108,6 +109,7 @@ namespace slidewave
     NavierStokesSystem::setup_system()
     {
       make_constraints(0.);
+      preconditioner.reset(); // it refers to the matrix it was built from
       flow.reinit_matrix(matrix, flow_constraints);
       rhs.reinit(flow.locally_owned_dofs(), grid.communicator());
       solution.reinit(flow.locally_owned_dofs(), grid.communicator());
@@ -385,33 +387,71 @@ namespace slidewave
                              const StepLengths &lengths,
                              const double       new_time)
     {
+      dealii::Timer timer;
       if (parameters.boundaries.any(FlowBoundary::inflow))
         make_constraints(new_time);
       assemble(phase_old, lengths);
+      const double assembly_time       = timer.wall_time();
+      double       preconditioner_time = 0.;
 
-      solution                     = flow.locally_owned_values(0); // the last step: the first guess
-      const double          target = parameters.linear_tolerance * rhs.l2_norm();
-      dealii::SolverControl control(parameters.max_iterations, std::max(target, 1e-300));
-      dealii::TrilinosWrappers::SolverGMRES gmres(
-        control, dealii::TrilinosWrappers::SolverGMRES::AdditionalData(false, 200));
+      // The preconditioner is kept while the matrix stays close to the one it was built
+      // for: rebuilt every 'Preconditioner interval' steps, when the step length changed
+      // by more than 20 % (the mass term rho / dt dominates the diagonal), when GMRES
+      // needed twice the iterations (plus 5) of a fresh one, and after grid changes and
+      // checkpoints (setup_system(), prepare_for_checkpoint()). Every condition depends on
+      // the computed state only, so a resumed run rebuilds where the uninterrupted one
+      // does.
+      const auto build = [&]() {
+        const double start = timer.wall_time();
+        if (parameters.preconditioner == "amg")
+          {
+            auto amg = std::make_unique<dealii::TrilinosWrappers::PreconditionAMG>();
+            dealii::TrilinosWrappers::PreconditionAMG::AdditionalData data;
+            data.elliptic              = false;
+            data.higher_order_elements = false;
+            data.smoother_sweeps       = 2;
+            data.aggregation_threshold = 0.02;
+            amg->initialize(matrix, data);
+            preconditioner = std::move(amg);
+          }
+        else
+          {
+            auto ilu = std::make_unique<dealii::TrilinosWrappers::PreconditionILU>();
+            ilu->initialize(matrix, dealii::TrilinosWrappers::PreconditionILU::AdditionalData(1));
+            preconditioner = std::move(ilu);
+          }
+        preconditioner_age = 0;
+        preconditioner_dt  = lengths.dt;
+        preconditioner_time += timer.wall_time() - start;
+      };
+      const bool stale = !preconditioner || preconditioner_age >= parameters.preconditioner_interval
+                         || std::abs(lengths.dt - preconditioner_dt) > 0.2 * preconditioner_dt;
+      if (stale)
+        build();
+      const bool fresh = preconditioner_age == 0;
+
+      const double target = parameters.linear_tolerance * rhs.l2_norm();
+      const auto   solve  = [&]() {
+        solution = flow.locally_owned_values(0); // the last step: the first guess
+        dealii::SolverControl control(parameters.max_iterations, std::max(target, 1e-300));
+        dealii::TrilinosWrappers::SolverGMRES gmres(
+          control, dealii::TrilinosWrappers::SolverGMRES::AdditionalData(false, 50));
+        gmres.solve(matrix, solution, rhs, *preconditioner);
+        return SolveReport{control.last_step(), control.last_value()};
+      };
+      SolveReport report;
       try
         {
-          if (parameters.preconditioner == "amg")
+          try
             {
-              dealii::TrilinosWrappers::PreconditionAMG                 amg;
-              dealii::TrilinosWrappers::PreconditionAMG::AdditionalData data;
-              data.elliptic              = false;
-              data.higher_order_elements = false;
-              data.smoother_sweeps       = 2;
-              data.aggregation_threshold = 0.02;
-              amg.initialize(matrix, data);
-              gmres.solve(matrix, solution, rhs, amg);
+              report = solve();
             }
-          else
+          catch (const dealii::SolverControl::NoConvergence &)
             {
-              dealii::TrilinosWrappers::PreconditionILU ilu;
-              ilu.initialize(matrix, dealii::TrilinosWrappers::PreconditionILU::AdditionalData(1));
-              gmres.solve(matrix, solution, rhs, ilu);
+              if (fresh)
+                throw;
+              build(); // a kept preconditioner that no longer serves: once more, fresh
+              report = solve();
             }
         }
       catch (const dealii::SolverControl::NoConvergence &failure)
@@ -423,13 +463,21 @@ namespace slidewave
                            + " (reduce 'Time stepping/Courant number' or 'Maximum time "
                              "step', or raise 'Linear solver/Maximum iterations')");
         }
+      report.assembly_time       = assembly_time;
+      report.preconditioner_time = preconditioner_time;
+      report.solve_time          = timer.wall_time() - assembly_time - preconditioner_time;
+      if (preconditioner_age == 0)
+        fresh_iterations = report.iterations;
+      else if (report.iterations > 2 * fresh_iterations + 5)
+        preconditioner.reset();
+      ++preconditioner_age;
       flow_constraints.distribute(solution);
 
       flow.locally_owned_values(1) = flow.locally_owned_values(0);
       flow.values_changed(1);
       flow.locally_owned_values(0) = solution;
       flow.values_changed(0);
-      return {control.last_step(), control.last_value()};
+      return report;
     }
 
 

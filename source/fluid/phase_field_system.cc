@@ -1,5 +1,6 @@
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/fe_values_extractors.h>
@@ -213,8 +214,10 @@ namespace slidewave
     SolveReport
     PhaseFieldSystem::step(const StepLengths &lengths, const double gamma)
     {
+      dealii::Timer timer;
       phase_old = phase.values(0);
       assemble(lengths, gamma);
+      const double assembly_time   = timer.wall_time();
       solution                     = phase.locally_owned_values(0);
       const double          target = parameters.linear_tolerance * rhs.l2_norm();
       dealii::SolverControl control(parameters.max_iterations, std::max(target, 1e-300));
@@ -235,7 +238,10 @@ namespace slidewave
       phase.locally_owned_values(0) = solution;
       phase.values_changed(0);
       outflow = compute_outflow(lengths);
-      return {control.last_step(), control.last_value()};
+      SolveReport report{control.last_step(), control.last_value()};
+      report.assembly_time = assembly_time;
+      report.solve_time    = timer.wall_time() - assembly_time;
+      return report;
     }
 
 

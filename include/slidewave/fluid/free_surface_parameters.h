@@ -121,13 +121,14 @@ namespace slidewave
       double          thickness_in_cells = 1.;
       double          mobility_factor    = 1.;
 
-      double       theta             = 0.5;
-      double       courant_number    = 0.5;
-      double       maximum_time_step = 0.01;
-      bool         grad_div          = true;
-      std::string  preconditioner    = "ilu";
-      double       linear_tolerance  = 1e-8;
-      unsigned int max_iterations    = 1000;
+      double       theta                   = 0.5;
+      double       courant_number          = 0.5;
+      double       maximum_time_step       = 0.01;
+      bool         grad_div                = true;
+      std::string  preconditioner          = "ilu";
+      double       linear_tolerance        = 1e-8;
+      unsigned int max_iterations          = 1000;
+      unsigned int preconditioner_interval = 10;
 
       double              max_volume_drift = 0.05;
       double              max_speed        = 1e3;

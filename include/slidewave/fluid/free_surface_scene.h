@@ -1,6 +1,7 @@
 #ifndef slidewave_fluid_free_surface_scene_h
 #define slidewave_fluid_free_surface_scene_h
 
+#include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <memory>
@@ -116,6 +117,11 @@ namespace slidewave
       FreeSurfaceOutput                     output;
       dealii::TimerOutput                  *timer = nullptr;
       FluidStepReport                       last_report;
+      /** The wall time of the steps' parts since this process started [s]: flow
+       *  assembly, its preconditioner, GMRES, the phase field (assembly and solve); the
+       *  flow's GMRES iterations and preconditioner builds. */
+      std::array<double, 4> part_times{};
+      unsigned long long    flow_iterations = 0, preconditioner_builds = 0;
       /** The water volume at the start and the largest relative drift since. */
       double initial_volume = 0., max_drift = 0.;
       /** (time, value) of every step for the verification: the surge front (Martin and

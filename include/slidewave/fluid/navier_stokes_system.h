@@ -5,9 +5,11 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
+#include <memory>
 #include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/grid/finite_element_field.h>
 #include <slidewave/grid/grid_follower.h>
@@ -63,11 +65,13 @@ namespace slidewave
       }
     };
 
-    /** What a linear solve did. */
+    /** What a linear solve did, and the wall time of its parts [s]. */
     struct SolveReport
     {
       unsigned int iterations = 0;
       double       residual   = 0.;
+      /** Assembly, preconditioner set-up (0 when it was kept), GMRES. */
+      double assembly_time = 0., preconditioner_time = 0., solve_time = 0.;
     };
 
     /**
@@ -138,6 +142,14 @@ namespace slidewave
       void
       grid_changed() override;
 
+      /** A checkpoint is written: the next step builds its preconditioner afresh, as a run
+       *  resumed from this checkpoint does (so that both compute the same). */
+      void
+      prepare_for_checkpoint() override
+      {
+        preconditioner.reset();
+      }
+
     private:
       /** The hanging nodes, the walls, the inflow sides' velocity at @p time and, in a
        *  closed tank, the pressure at the lower left corner. */
@@ -172,6 +184,12 @@ namespace slidewave
       dealii::AffineConstraints<double>      flow_constraints;
       dealii::TrilinosWrappers::SparseMatrix matrix;
       VectorType                             rhs, solution;
+      /** The flow's preconditioner, kept for 'Preconditioner interval' steps (rebuilt
+       *  earlier after a grid change, a checkpoint, a change of the step length or when
+       *  GMRES needs many more iterations than with a fresh one). */
+      std::unique_ptr<dealii::TrilinosWrappers::PreconditionBase> preconditioner;
+      unsigned int preconditioner_age = 0, fresh_iterations = 0;
+      double       preconditioner_dt = 0.;
     };
   } // namespace fluid
 } // namespace slidewave

@@ -147,11 +147,13 @@ namespace slidewave
       std::vector<dealii::Tensor<1, 2>> u_n(n_q), u_old(n_q);
       std::vector<dealii::Tensor<2, 2>> grad_u_n(n_q);
       std::vector<double>               phi_new(n_q), phi_old(n_q);
-      std::vector<dealii::Tensor<1, 2>> value_u(n_dofs), grad_p(n_dofs), advect_u(n_dofs);
-      std::vector<dealii::Tensor<2, 2>> sym_grad_u(n_dofs);
-      std::vector<double>               div_u(n_dofs), value_p(n_dofs);
-      dealii::FullMatrix<double>        local_matrix(n_dofs, n_dofs);
-      dealii::Vector<double>            local_rhs(n_dofs);
+      std::vector<double>               value(n_dofs), advect(n_dofs);
+      std::vector<dealii::Tensor<1, 2>> gradient(n_dofs);
+      std::vector<unsigned int>         component(n_dofs);
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        component[i] = fe.system_to_component_index(i).first;
+      dealii::FullMatrix<double>                   local_matrix(n_dofs, n_dofs);
+      dealii::Vector<double>                       local_rhs(n_dofs);
       std::vector<dealii::types::global_dof_index> indices(n_dofs);
 
       // The porous solid's fields at the quadrature points (only when there is one).
@@ -257,14 +259,15 @@ namespace slidewave
               = parameters.grad_div ? 0.5 * h * speed * std::min(reynolds / 3., 1.) : 0.;
             const double JxW = fv.JxW(q);
 
+            // Every shape function of FESystem(Q1^2, Q1) lives in one component
+            // (component[i]: 0, 1 velocity, 2 pressure) with the scalar value N_i and
+            // gradient G_i: the vector and tensor products of the weak form reduce to
+            // products of these (below, a = component[i], b = component[j]).
             for (unsigned int i = 0; i < n_dofs; ++i)
               {
-                value_u[i]    = fv[velocity].value(i, q);
-                sym_grad_u[i] = fv[velocity].symmetric_gradient(i, q);
-                div_u[i]      = fv[velocity].divergence(i, q);
-                advect_u[i]   = fv[velocity].gradient(i, q) * u_bar;
-                value_p[i]    = fv[pressure].value(i, q);
-                grad_p[i]     = fv[pressure].gradient(i, q);
+                value[i]    = fv.shape_value(i, q);
+                gradient[i] = fv.shape_grad(i, q);
+                advect[i]   = u_bar * gradient[i];
               }
             // The explicit part of the momentum residual: rho u^n / dt minus the
             // (1 - theta) share of the advection, plus gravity.
@@ -276,36 +279,65 @@ namespace slidewave
                                                            + rho * fluid.gravity + (drag / n) * v_s;
             // The solid's share of the continuity, div((1 - n) v_s), known.
             const double solid_divergence = (1. - n) * div_v_s - v_s * grad_n;
+            // The implicit momentum residual of a velocity shape function (along its
+            // component): (rho / dt + drag / n) N_j + theta rho u_bar . G_j.
+            const double mass = rho / dt + drag / n;
 
             for (unsigned int i = 0; i < n_dofs; ++i)
               {
-                // SUPG and PSPG share the residual: the test function tau_m (u_bar .
-                // grad) w + tau_m / rho grad q.
-                const dealii::Tensor<1, 2> stabilized_test
-                  = n * (tau_m * advect_u[i] + (tau_m / rho) * grad_p[i]);
-                for (unsigned int j = 0; j < n_dofs; ++j)
+                const unsigned int          a  = component[i];
+                const double                Ni = value[i];
+                const dealii::Tensor<1, 2> &Gi = gradient[i];
+                // SUPG and PSPG share the residual: the test function n tau_m (u_bar .
+                // grad) w + n tau_m / rho grad q.
+                if (a < 2)
                   {
-                    const dealii::Tensor<1, 2> implicit_residual
-                      = rho * value_u[j] / dt + theta * rho * advect_u[j] + grad_p[j]
-                        + (drag / n) * value_u[j];
-                    local_matrix(i, j)
-                      += (n * rho / dt * value_u[i] * value_u[j]
-                          + n * theta * rho * value_u[i] * advect_u[j]
-                          + n * theta * 2. * mu
-                              * dealii::scalar_product(sym_grad_u[i], sym_grad_u[j])
-                          + drag * value_u[i] * value_u[j]
-                          - (n * div_u[i] + value_u[i] * grad_n) * value_p[j]
-                          + value_p[i] * (n * div_u[j] + value_u[j] * grad_n)
-                          + n * tau_cont * rho * div_u[i] * div_u[j]
-                          + stabilized_test * implicit_residual)
-                         * JxW;
+                    const double supg = n * tau_m * advect[i];
+                    for (unsigned int j = 0; j < n_dofs; ++j)
+                      {
+                        const unsigned int          b  = component[j];
+                        const double                Nj = value[j];
+                        const dealii::Tensor<1, 2> &Gj = gradient[j];
+                        double                      m  = 0.;
+                        if (b < 2)
+                          {
+                            // viscosity 2 mu eps(w) : eps(u) and grad-div
+                            m = n * theta * mu * Gi[b] * Gj[a] + n * tau_cont * rho * Gi[a] * Gj[b];
+                            if (a == b)
+                              {
+                                const double residual = mass * Nj + theta * rho * advect[j];
+                                m += n * (rho / dt) * Ni * Nj + n * theta * rho * Ni * advect[j]
+                                     + n * theta * mu * (Gi * Gj) + drag * Ni * Nj
+                                     + supg * residual;
+                              }
+                          }
+                        else // pressure: - (n div w + w . grad n) p and SUPG of grad p
+                          m = -(n * Gi[a] + Ni * grad_n[a]) * Nj + supg * Gj[a];
+                        local_matrix(i, j) += m * JxW;
+                      }
+                    local_rhs(i) += (n * Ni * explicit_residual[a]
+                                     - n * (1. - theta) * 2. * mu * (Gi * sym_grad_n[a])
+                                     + supg * explicit_residual[a])
+                                    * JxW;
                   }
-                local_rhs(i)
-                  += (n * value_u[i] * explicit_residual
-                      - n * (1. - theta) * 2. * mu
-                          * dealii::scalar_product(sym_grad_u[i], sym_grad_n)
-                      - value_p[i] * solid_divergence + stabilized_test * explicit_residual)
-                     * JxW;
+                else
+                  {
+                    const double pspg = n * tau_m / rho;
+                    for (unsigned int j = 0; j < n_dofs; ++j)
+                      {
+                        const unsigned int          b  = component[j];
+                        const double                Nj = value[j];
+                        const dealii::Tensor<1, 2> &Gj = gradient[j];
+                        // continuity q (n div u + u . grad n) and PSPG
+                        const double m
+                          = b < 2 ? Ni * (n * Gj[b] + Nj * grad_n[b])
+                                      + pspg * Gi[b] * (mass * Nj + theta * rho * advect[j]) :
+                                    pspg * (Gi * Gj);
+                        local_matrix(i, j) += m * JxW;
+                      }
+                    local_rhs(i)
+                      += (-Ni * solid_divergence + pspg * (Gi * explicit_residual)) * JxW;
+                  }
               }
           }
         add_open_boundary_terms(

@@ -159,7 +159,7 @@ namespace slidewave
                      const grid::FiniteElementField &phase,
                      const FluidProperties          &fluid)
       {
-        const dealii::QGauss<2> quadrature(2);
+        const dealii::QGauss<2> quadrature(flow.finite_element().degree + 1);
         dealii::FEValues<2>     fv(flow.finite_element(),
                                quadrature,
                                dealii::update_values | dealii::update_JxW_values);
@@ -299,7 +299,7 @@ namespace slidewave
         const double U = initial.value(origin + dealii::Point<2>(0.5 * M_PI / k, 0.), 0)
                          * std::exp(-2. * nu * k * k * time);
 
-        const dealii::QGauss<2>                  quadrature(3);
+        const dealii::QGauss<2>                  quadrature(flow.finite_element().degree + 2);
         const dealii::FEValuesExtractors::Vector velocity(0);
         dealii::FEValues<2>                      fv(flow.finite_element(),
                                quadrature,

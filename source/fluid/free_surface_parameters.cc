@@ -170,6 +170,15 @@ namespace slidewave
       }
       prm.leave_subsection();
 
+      prm.enter_subsection("Finite elements");
+      prm.declare_entry("Degree",
+                        "1",
+                        Integer(1, 2),
+                        "Of the velocity and the pressure: 1 (Q1-Q1, the grid's nodes, "
+                        "which the material points of a coupled scene share) or 2 (Q2-Q2, "
+                        "doc/free-surface-flow.md measures both); the phase field is Q1.");
+      prm.leave_subsection();
+
       prm.enter_subsection("Time stepping");
       {
         prm.declare_entry("Theta",
@@ -405,6 +414,10 @@ namespace slidewave
         thickness_in_cells = prm.get_double("Interface thickness");
         mobility_factor    = prm.get_double("Mobility factor");
       }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Finite elements");
+      element_degree = prm.get_integer("Degree");
       prm.leave_subsection();
 
       prm.enter_subsection("Time stepping");

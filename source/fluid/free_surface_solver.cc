@@ -90,7 +90,12 @@ namespace slidewave
                                          grid::BackgroundGrid        &grid)
       : parameters(parameters)
       , grid(grid)
-      , flow(grid, dealii::FESystem<2>(dealii::FE_Q<2>(1), 2, dealii::FE_Q<2>(1), 1), 2)
+      , flow(grid,
+             dealii::FESystem<2>(dealii::FE_Q<2>(parameters.element_degree),
+                                 2,
+                                 dealii::FE_Q<2>(parameters.element_degree),
+                                 1),
+             2)
       , phase(grid)
       , flow_system(grid, flow, phase, parameters)
       , phase_system(grid, flow, phase, parameters)
@@ -229,7 +234,9 @@ namespace slidewave
       // the finest cells with the faster of the two speeds.
       const double fastest = max_speed(); // one pass over the cells
       const double speed   = std::max(fastest, profile_velocity(fastest));
-      const double dt      = parameters.courant_number * grid.cell_size() / speed;
+      // (the cell's size whatever the flow's element degree: the explicit parts are the
+      // phase field's, which is Q1)
+      const double dt = parameters.courant_number * grid.cell_size() / speed;
       return std::min(dt, parameters.maximum_time_step);
     }
 

@@ -120,15 +120,16 @@ namespace slidewave
     void
     NavierStokesSystem::assemble(const VectorType &phase_old, const StepLengths &lengths)
     {
-      const auto             &fe = flow.finite_element();
-      const dealii::QGauss<2> quadrature(2);
+      const auto             &fe     = flow.finite_element();
+      const unsigned int      degree = fe.degree; // of the velocity and the pressure
+      const dealii::QGauss<2> quadrature(degree + 1);
       const unsigned int      n_q = quadrature.size(), n_dofs = fe.n_dofs_per_cell();
       dealii::FEValues<2>     fv(fe,
                              quadrature,
                              dealii::update_values | dealii::update_gradients
                                | dealii::update_JxW_values);
       dealii::FEValues<2>     fv_phase(phase.finite_element(), quadrature, dealii::update_values);
-      const dealii::QGauss<1> face_quadrature(2);
+      const dealii::QGauss<1> face_quadrature(degree + 1);
       dealii::FEFaceValues<2> fv_face(fe,
                                       face_quadrature,
                                       dealii::update_values | dealii::update_gradients
@@ -223,7 +224,8 @@ namespace slidewave
         fv[velocity].get_function_gradients(flow.values(0), grad_u_n);
         fv_phase.get_function_values(phase.values(0), phi_new);
         fv_phase.get_function_values(phase_old, phi_old);
-        const double h = cell->extent_in_direction(0);
+        // The length of the stabilization parameters: the nodes' spacing.
+        const double h = cell->extent_in_direction(0) / degree;
         if (porous.active())
           evaluate_porous(cell);
 

@@ -121,6 +121,8 @@ namespace slidewave
       double          thickness_in_cells = 1.;
       double          mobility_factor    = 1.;
 
+      /** Of the velocity and the pressure (Q1-Q1 or Q2-Q2); the phase field is Q1. */
+      unsigned int element_degree          = 1;
       double       theta                   = 0.5;
       double       courant_number          = 0.5;
       double       maximum_time_step       = 0.01;

@@ -4,9 +4,12 @@
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <optional>
 #include <slidewave/app/application.h>
 #include <slidewave/core/input_error.h>
+#include <slidewave/core/memory_estimate.h>
+#include <slidewave/core/output_locations.h>
 #include <slidewave/core/parameter_documentation.h>
 #include <slidewave/core/scene_file_check.h>
 #include <slidewave/core/scene_parameters.h>
@@ -39,8 +42,9 @@ namespace slidewave
         "  --help                     this text\n"
         "  --version                  the version\n"
         "\n"
-        "Exit status: 0 success, 1 bad input (nothing run), 2 the run became invalid,\n"
-        "3 an exact-solution check exceeded its tolerance.\n";
+        "Exit status: 0 success, 1 bad input (nothing run), 2 the run became invalid\n"
+        "(or an output could not be written, or memory ran out), 3 an exact-solution check\n"
+        "exceeded its tolerance, 4 an unexpected error.\n";
 
     /** deal.II's exception text without its source location, on one line. */
     std::string
@@ -132,41 +136,24 @@ namespace slidewave
     }
 
     /**
-     * Creates the output directory (rank 0) and checks that a file can be written in it;
-     * all ranks learn the outcome.
+     * Creates the output directory (rank 0), checks that it can be written (all ranks learn
+     * the verdict) and copies the scene file into it.
      */
     void
     prepare_output_directory(const std::string &directory, const std::string &input_file)
     {
-      int failed = 0;
+      core::prepare_output_locations(directory, {});
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         {
-          std::error_code error;
-          std::filesystem::create_directories(directory, error);
-          const std::string probe = directory + "/.slidewave-write-test";
-          {
-            std::ofstream test(probe);
-            failed = (!test || error) ? 1 : 0;
-          }
-          std::filesystem::remove(probe, error);
-          if (!failed)
-            {
-              const auto target
-                = std::filesystem::path(directory) / std::filesystem::path(input_file).filename();
-              std::error_code copy_error;
-              if (!std::filesystem::equivalent(input_file, target, copy_error))
-                std::filesystem::copy_file(input_file,
-                                           target,
-                                           std::filesystem::copy_options::overwrite_existing,
-                                           copy_error);
-            }
+          const auto target
+            = std::filesystem::path(directory) / std::filesystem::path(input_file).filename();
+          std::error_code copy_error;
+          if (!std::filesystem::equivalent(input_file, target, copy_error))
+            std::filesystem::copy_file(input_file,
+                                       target,
+                                       std::filesystem::copy_options::overwrite_existing,
+                                       copy_error);
         }
-      failed = dealii::Utilities::MPI::max(failed, MPI_COMM_WORLD);
-      if (failed)
-        throw InputError("Output directory",
-                         directory,
-                         "a directory that can be created "
-                         "and written");
     }
 
 
@@ -181,9 +168,12 @@ namespace slidewave
               std::ostream             &out)
     {
       Scene physics(scene, prm);
+      // Before anything large is allocated: refused when it cannot fit.
+      const core::MemoryEstimate memory = physics.memory_estimate();
+      memory.check();
       if (validate_only)
         {
-          out << input_file << ": valid\n";
+          out << input_file << ": valid; memory: " << memory.describe() << "\n";
           return success;
         }
       prepare_output_directory(scene.output_directory, input_file);
@@ -388,6 +378,44 @@ namespace slidewave
           err << "slidewave: run failed " << e.what()
               << "; the output written before this step is kept.\n";
           return run_failure;
+        }
+      catch (const OutputFailure &e)
+        {
+          err << "slidewave: output failed: " << e.what()
+              << "; free space or make the output directory writable, then run again "
+                 "(or resume from the last checkpoint).\n";
+          return run_failure;
+        }
+      catch (const std::bad_alloc &)
+        {
+          err << "slidewave: out of memory: the scene '" << input_file
+              << "' needs more memory than this machine could give (the estimate that "
+                 "'slidewave --validate' prints was not enough: see 'Memory estimate' in "
+                 "doc/stability.md); make the grid coarser or smaller, use fewer points per "
+                 "cell, or run on more nodes.\n";
+          return run_failure;
+        }
+      catch (const std::filesystem::filesystem_error &e)
+        {
+          err << "slidewave: file system error with '" << e.path1().string() << "'"
+              << (e.path2().empty() ? std::string() : " and '" + e.path2().string() + "'") << ": "
+              << e.code().message()
+              << "; check that the output directory (parameter 'Output directory') and the "
+                 "files the scene reads exist and can be written or read.\n";
+          return run_failure;
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          err << "slidewave: error while running '" << input_file << "': " << one_line(e) << '\n';
+          return run_failure;
+        }
+      catch (const std::exception &e)
+        {
+          const std::string what = e.what();
+          err << "slidewave: error while running '" << input_file
+              << "': " << (what.empty() ? std::string("an exception without a message") : what)
+              << " (please report it with the scene file)\n";
+          return 4;
         }
     }
   } // namespace

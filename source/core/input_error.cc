@@ -1,4 +1,6 @@
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <deal.II/base/utilities.h>
 #include <slidewave/core/input_error.h>
 #include <sstream>
@@ -37,6 +39,24 @@ namespace slidewave
   RunFailure::RunFailure(const std::string &what)
     : std::runtime_error(what)
   {
+  }
+
+
+
+  OutputFailure::OutputFailure(const std::string &file, const std::string &reason)
+    : std::runtime_error("cannot write '" + file + "' (" + reason + ")")
+  {
+  }
+
+
+
+  void
+  require_written(const std::ostream &stream, const std::string &file)
+  {
+    if (stream.fail())
+      throw OutputFailure(file,
+                          errno != 0 ? std::string(std::strerror(errno)) :
+                                       std::string("the stream failed"));
   }
 
 

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 #include <slidewave/core/input_error.h>
+#include <slidewave/core/output_locations.h>
 #include <slidewave/core/progress_reporter.h>
 #include <slidewave/core/run_control.h>
 
@@ -176,9 +177,8 @@ namespace slidewave
     const std::string &prefix    = body.timer_prefix();
     std::ostream      *console   = is_writer() && !test_mode ? &std::cout : nullptr;
 
-    if (is_writer())
-      body.create_output_directories();
-    MPI_Barrier(MPI_COMM_WORLD);
+    // Every folder checked before the first step; all ranks refuse together.
+    core::prepare_output_locations(scene.output_directory, body.output_folders());
 
     if (scene.resume)
       resume(body, timer);

@@ -1,6 +1,7 @@
 #include <filesystem>
 #include <limits>
 #include <slidewave/core/input_error.h>
+#include <slidewave/core/run_bounds.h>
 #include <slidewave/core/scene_parameters.h>
 
 namespace slidewave
@@ -192,5 +193,7 @@ namespace slidewave
       resume             = prm.get_bool("Resume");
     }
     prm.leave_subsection();
+    // How many outputs, steps and checkpoints the entries allow (at --validate too).
+    core::check_run_bounds(*this);
   }
 } // namespace slidewave

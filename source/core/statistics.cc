@@ -1,5 +1,6 @@
 #include <cmath>
 #include <cstdio>
+#include <slidewave/core/input_error.h>
 #include <slidewave/core/statistics.h>
 #include <stdexcept>
 
@@ -15,8 +16,8 @@ namespace slidewave
     if (write_file)
       {
         file.open(filename, append ? std::ios::app : std::ios::out);
-        if (!file)
-          throw std::runtime_error("cannot open " + filename + " for writing");
+        require_written(file, filename);
+        name = filename;
         file.precision(12);
       }
     echo = echo_stream;
@@ -28,7 +29,10 @@ namespace slidewave
   Statistics::flush()
   {
     if (file.is_open())
-      file.flush();
+      {
+        file.flush();
+        require_written(file, name);
+      }
   }
 
 
@@ -72,7 +76,7 @@ namespace slidewave
         for (unsigned int c = 0; c < columns.size(); ++c)
           file << (c == 0 ? "" : ",") << last_row[c];
         file << '\n';
-        file.flush();
+        flush();
       }
 
     if (echo != nullptr)

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <iomanip>
 #include <mpi.h>
+#include <slidewave/core/input_error.h>
 #include <slidewave/core/step_timeline.h>
 #include <stdexcept>
 
@@ -66,8 +67,7 @@ namespace slidewave
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
         return written;
       std::ofstream out(filename);
-      if (!out)
-        throw std::runtime_error("cannot write the step timeline to " + filename);
+      require_written(out, filename);
       out << "step,rank";
       for (const char *name : part_names())
         out << ',' << name;

@@ -297,11 +297,30 @@ namespace slidewave
 
 
 
-    void
-    CoupledScene::create_output_directories() const
+    core::MemoryEstimate
+    CoupledScene::memory_estimate() const
     {
-      std::filesystem::create_directories(scene.output_directory + "/particles");
-      std::filesystem::create_directories(scene.output_directory + "/water");
+      core::MemoryEstimate estimate;
+      soil_parameters.add_to_memory_estimate(estimate, "Material points");
+      // The water's mesh as configured, else one water cell per column of the grid.
+      const auto  &soil = soil_parameters;
+      const double n_water
+        = configured_mesh ? configured_mesh->n_cells() :
+                            std::round((soil.upper_right[0] - soil.lower_left[0]) / soil.cell_size);
+      estimate.add("water cells",
+                   n_water,
+                   core::MemoryEstimate::bytes_per_water_cell,
+                   "Shallow water/Mesh",
+                   to_string(n_water) + " cells");
+      return estimate;
+    }
+
+
+
+    std::vector<core::OutputFolder>
+    CoupledScene::output_folders() const
+    {
+      return {{"particles", "the material points"}, {"water", "the water"}};
     }
 
 

@@ -7,11 +7,13 @@
 #include <iostream>
 #include <limits>
 #include <slidewave/core/input_error.h>
+#include <slidewave/core/run_bounds.h>
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/depth_averaged/depth_averaged_scene.h>
 #include <slidewave/grid/grid_extent.h>
 #include <slidewave/io/solver_checkpoints.h>
+#include <slidewave/particles/point_count.h>
 #include <slidewave/terrain/earth_bounds.h>
 #include <slidewave/terrain/raster_source.h>
 #include <sstream>
@@ -187,6 +189,11 @@ namespace slidewave
     {
       prm.enter_subsection(section);
       parameters.parse_parameters(prm, section);
+      core::check_step_count(scene,
+                             parameters.fixed_time_step,
+                             section + "/Fixed time step",
+                             to_string(parameters.fixed_time_step),
+                             "'Fixed time step'");
       if (!parameters.elevation_table.empty())
         parameters.elevation_table = scene.resolve_path(parameters.elevation_table);
       if (!parameters.elevation_raster.empty())
@@ -270,16 +277,47 @@ namespace slidewave
 
 
 
-    void
-    DepthAveragedScene::create_output_directories() const
+    core::MemoryEstimate
+    DepthAveragedScene::memory_estimate() const
     {
-      std::filesystem::create_directories(scene.output_directory + "/particles");
+      core::MemoryEstimate estimate;
+      const auto          &p = parameters;
+      estimate.add("grid cells",
+                   particles::grid_cell_count(p.lower_left, p.upper_right, p.cell_size),
+                   core::MemoryEstimate::bytes_per_depth_averaged_cell,
+                   section + "/Grid/Cell size",
+                   to_string(p.cell_size));
+      estimate.add("material points",
+                   particles::point_count_bound({p.release},
+                                                p.lower_left,
+                                                p.upper_right,
+                                                p.cell_size,
+                                                p.particles_per_direction),
+                   core::MemoryEstimate::bytes_per_point,
+                   section + "/Release/Particles per direction",
+                   std::to_string(p.particles_per_direction));
+      if (p.terrain_raster)
+        estimate.add("raster pixels",
+                     p.terrain_raster->pixel_count(),
+                     core::MemoryEstimate::bytes_per_pixel,
+                     section + "/Terrain/Raster file",
+                     p.elevation_raster);
+      return estimate;
+    }
+
+
+
+    std::vector<core::OutputFolder>
+    DepthAveragedScene::output_folders() const
+    {
+      std::vector<core::OutputFolder> folders{{"particles", "the material points"}};
       if (write_table)
-        std::filesystem::create_directories(scene.output_directory + "/points");
+        folders.push_back({"points", "the point tables ('" + section + "/Output point table')"});
       if (write_grid)
-        std::filesystem::create_directories(scene.output_directory + "/grid");
+        folders.push_back({"grid", "the grid ('" + section + "/Output grid')"});
       if (write_maps)
-        std::filesystem::create_directories(scene.output_directory + "/maps");
+        folders.push_back({"maps", "the hazard maps ('" + section + "/Hazard maps/Enable')"});
+      return folders;
     }
 
 

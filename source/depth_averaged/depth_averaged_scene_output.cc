@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <fstream>
+#include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/depth_averaged_scene.h>
 #include <slidewave/water/dam_break_solutions.h>
 #include <sstream>
@@ -192,6 +193,8 @@ namespace slidewave
       file << "x,y,elevation,depth,velocity_x,velocity_y\n";
       for (const auto &part : all)
         file << part;
+      file.close();
+      require_written(file, scene.output_directory + "/points/" + name);
     }
 
 

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cpl_error.h>
 #include <cstdint>
 #include <cstdio>
 #include <deal.II/base/mpi.h>
@@ -12,6 +13,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/hazard_maps.h>
 #include <slidewave/terrain/elevation_grid.h>
+#include <slidewave/terrain/gdal_diagnostics.h>
 #include <slidewave/terrain/vector_polygons.h>
 #include <utility>
 
@@ -23,6 +25,18 @@ namespace slidewave
     {
       constexpr double no_data = -9999.;
 
+      /** Throws an OutputFailure naming @p path when GDAL reported a failure since
+       *  CPLErrorReset() (a dataset not created, a write or the flush at GDALClose failed),
+       *  quoting what GDAL said. */
+      void
+      require_gdal_success(const std::string &path, const terrain::GdalDiagnostics &diagnostics)
+      {
+        if (CPLGetLastErrorType() >= CE_Failure)
+          throw OutputFailure(
+            path,
+            "GDAL: " + (diagnostics.text().empty() ? std::string("failed") : diagnostics.text()));
+      }
+
       /** Writes @p values (node (i, j) at [j * (nx + 1) + i], y growing) as a GeoTIFF of
        *  one pixel per node, rows from north to south. */
       void
@@ -33,9 +47,13 @@ namespace slidewave
                     const double              *transform,
                     const std::string         &crs_wkt)
       {
-        const int    w = nx + 1, h = ny + 1;
+        const int                      w = nx + 1, h = ny + 1;
+        const terrain::GdalDiagnostics diagnostics;
+        CPLErrorReset();
         GDALDatasetH data
           = GDALCreate(GDALGetDriverByName("GTiff"), path.c_str(), w, h, 1, GDT_Float64, nullptr);
+        if (data == nullptr)
+          throw OutputFailure(path, "GDAL could not create it" + diagnostics.note());
         GDALSetGeoTransform(data, const_cast<double *>(transform));
         if (!crs_wkt.empty())
           GDALSetProjection(data, crs_wkt.c_str());
@@ -46,10 +64,14 @@ namespace slidewave
                     rows.begin() + static_cast<std::size_t>(h - 1 - j) * w);
         GDALRasterBandH band = GDALGetRasterBand(data, 1);
         GDALSetRasterNoDataValue(band, no_data);
-        if (GDALRasterIO(band, GF_Write, 0, 0, w, h, rows.data(), w, h, GDT_Float64, 0, 0)
-            != CE_None)
-          std::fprintf(stderr, "slidewave: could not write %s\n", path.c_str());
+        const CPLErr written
+          = GDALRasterIO(band, GF_Write, 0, 0, w, h, rows.data(), w, h, GDT_Float64, 0, 0);
+        // The pixels reach the file at GDALClose (GDAL 3.6's returns nothing: its errors are
+        // GDAL's last error).
         GDALClose(data);
+        if (written != CE_None)
+          throw OutputFailure(path, "GDAL could not write its pixels" + diagnostics.note());
+        require_gdal_success(path, diagnostics);
       }
 
       /** The outline of the nodes where @p inside is true, as GeoJSON polygons (GDAL's
@@ -73,8 +95,15 @@ namespace slidewave
         GDALRasterBandH band = GDALGetRasterBand(mask, 1);
         if (GDALRasterIO(band, GF_Write, 0, 0, w, h, rows.data(), w, h, GDT_Byte, 0, 0) != CE_None)
           return;
+        const terrain::GdalDiagnostics diagnostics;
+        CPLErrorReset();
         GDALDatasetH vector
           = GDALCreate(GDALGetDriverByName("GeoJSON"), path.c_str(), 0, 0, 0, GDT_Unknown, nullptr);
+        if (vector == nullptr)
+          {
+            GDALClose(mask);
+            throw OutputFailure(path, "GDAL could not create it" + diagnostics.note());
+          }
         OGRSpatialReferenceH crs
           = crs_wkt.empty() ? nullptr : OSRNewSpatialReference(crs_wkt.c_str());
         OGRLayerH     layer = GDALDatasetCreateLayer(vector, "outline", crs, wkbPolygon, nullptr);
@@ -86,6 +115,7 @@ namespace slidewave
           OSRDestroySpatialReference(crs);
         GDALClose(vector);
         GDALClose(mask);
+        require_gdal_success(path, diagnostics);
       }
 
 
@@ -208,6 +238,8 @@ namespace slidewave
         for (unsigned int m = 0; m < 4; ++m)
           summary << "max_" << HazardMaps::names()[m] << ","
                   << *std::max_element(maps[m].begin(), maps[m].end()) << "," << units[m] << "\n";
+        summary.close();
+        require_written(summary, directory + "/summary.csv");
       }
     } // namespace
 
@@ -316,8 +348,7 @@ namespace slidewave
         out.write(reinterpret_cast<const char *>(map.data()),
                   static_cast<std::streamsize>(map.size() * sizeof(double)));
       out.close();
-      if (!out)
-        throw std::runtime_error("cannot write " + file);
+      require_written(out, file);
     }
 
 

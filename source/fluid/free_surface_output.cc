@@ -33,14 +33,6 @@ namespace slidewave
 
 
     void
-    FreeSurfaceOutput::create_directories() const
-    {
-      std::filesystem::create_directories(directory + "/free_surface");
-    }
-
-
-
-    void
     FreeSurfaceOutput::write(const FreeSurfaceSolver &solver,
                              const bool               surface,
                              const unsigned int       index,
@@ -66,13 +58,15 @@ namespace slidewave
       data_out.add_data_vector(subdomain, "subdomain");
       data_out.set_flags(io::vtu_flags());
       data_out.build_patches();
-      const std::string record = data_out.write_vtu_with_pvtu_record(
-        directory + "/free_surface/", "fields", index, MPI_COMM_WORLD, 5);
+      const std::string record
+        = io::write_vtu(data_out, directory + "/free_surface/", "fields", index);
       files.emplace_back(time, "free_surface/" + record);
       if (is_writer())
         {
           std::ofstream pvd(directory + "/free_surface.pvd");
           dealii::DataOutBase::write_pvd_record(pvd, files);
+          pvd.close();
+          require_written(pvd, directory + "/free_surface.pvd");
         }
 
       if (!surface)
@@ -87,8 +81,8 @@ namespace slidewave
           out << "# time = " << time << "\nx0,y0,x1,y1\n";
           for (const auto &s : segments)
             out << s[0] << ',' << s[1] << ',' << s[2] << ',' << s[3] << '\n';
-          if (!out)
-            throw RunFailure("could not write " + directory + name);
+          out.close();
+          require_written(out, directory + name);
         }
     }
 
@@ -101,6 +95,7 @@ namespace slidewave
         return;
       gauges = std::make_unique<std::ofstream>(directory + "/" + gauge_file(),
                                                append ? std::ios::app : std::ios::out);
+      require_written(*gauges, directory + "/" + gauge_file());
       gauges->precision(12);
       if (append)
         return;
@@ -127,6 +122,7 @@ namespace slidewave
         *gauges << ',' << e;
       *gauges << '\n';
       gauges->flush();
+      require_written(*gauges, directory + "/" + gauge_file());
     }
   } // namespace fluid
 } // namespace slidewave

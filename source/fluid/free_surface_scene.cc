@@ -4,6 +4,7 @@
 #include <iostream>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parsed_expression.h>
+#include <slidewave/core/run_bounds.h>
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/fluid/free_surface_diagnostics.h>
@@ -64,10 +65,35 @@ namespace slidewave
 
 
 
-    void
-    FreeSurfaceScene::create_output_directories() const
+    core::MemoryEstimate
+    FreeSurfaceScene::memory_estimate() const
     {
-      output.create_directories();
+      // At 'Cell size' everywhere (an adaptive grid is finer only near the surface): its
+      // cells, and Q1^2-Q1 flow plus Q1 phase field, four unknowns per node.
+      const double nx
+        = std::round((parameters.upper_right[0] - parameters.lower_left[0]) / parameters.cell_size),
+        ny
+        = std::round((parameters.upper_right[1] - parameters.lower_left[1]) / parameters.cell_size);
+      core::MemoryEstimate estimate;
+      estimate.add("grid cells",
+                   nx * ny,
+                   core::MemoryEstimate::bytes_per_grid_cell,
+                   section + "/Grid/Cell size",
+                   to_string(parameters.cell_size));
+      estimate.add("unknowns",
+                   4. * (nx + 1.) * (ny + 1.),
+                   core::MemoryEstimate::bytes_per_dof,
+                   section + "/Grid/Cell size",
+                   to_string(parameters.cell_size));
+      return estimate;
+    }
+
+
+
+    std::vector<core::OutputFolder>
+    FreeSurfaceScene::output_folders() const
+    {
+      return {{"free_surface", "the flow's fields"}};
     }
 
 
@@ -100,16 +126,12 @@ namespace slidewave
       // The first step is the largest the flow will allow (the water starts at rest); a
       // scene that would need more than 10^7 of them is a mistake in Courant number, time
       // step or end time, not a run anyone waits for.
-      const double dt      = solver->stable_time_step();
-      const double n_steps = (scene.end_time - scene.start_time) / dt;
-      if (n_steps > 1e7)
-        throw InputError(section + "/Time stepping/Maximum time step",
-                         to_string(parameters.maximum_time_step),
-                         "a time step (with 'Courant number' = "
-                           + to_string(parameters.courant_number) + ", first step " + to_string(dt)
-                           + " s) that reaches the end time in at most 10^7 "
-                             "steps (it would take "
-                           + to_string(n_steps) + ")");
+      core::check_step_count(scene,
+                             solver->stable_time_step(),
+                             section + "/Time stepping/Maximum time step",
+                             to_string(parameters.maximum_time_step),
+                             "with 'Courant number' = " + to_string(parameters.courant_number)
+                               + ", the first step");
     }
 
 

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <slidewave/core/input_error.h>
 #include <slidewave/io/checkpoint_manifest.h>
 #include <sstream>
 #include <stdexcept>
@@ -74,8 +75,7 @@ namespace slidewave
       std::ofstream out(fs::path(folder) / file_name);
       out << text.str();
       out.close();
-      if (!out)
-        throw std::runtime_error("cannot write " + (fs::path(folder) / file_name).string());
+      require_written(out, (fs::path(folder) / file_name).string());
     }
 
 

@@ -161,8 +161,8 @@ namespace slidewave
         }
       for (const auto &[key, text] : texts)
         out << key << " = " << text << '\n';
-      if (!out)
-        throw std::runtime_error("cannot write " + name);
+      out.close();
+      require_written(out, name);
     }
 
 

@@ -4,6 +4,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/particles/data_out.h>
 #include <fstream>
+#include <slidewave/core/input_error.h>
 #include <slidewave/io/particle_output.h>
 
 namespace slidewave
@@ -31,13 +32,14 @@ namespace slidewave
       dealii::Particles::DataOut<2> data_out;
       data_out.set_flags(vtu_flags());
       data_out.build_patches(particles, data_names, interpretation);
-      const std::string record = data_out.write_vtu_with_pvtu_record(
-        directory + "/particles/", "particles", index, MPI_COMM_WORLD, 5);
+      const std::string record = write_vtu(data_out, directory + "/particles/", "particles", index);
       files.emplace_back(time, "particles/" + record);
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         {
           std::ofstream pvd(directory + "/particles.pvd");
           dealii::DataOutBase::write_pvd_record(pvd, files);
+          pvd.close();
+          require_written(pvd, directory + "/particles.pvd");
         }
     }
 
@@ -65,13 +67,14 @@ namespace slidewave
       data_out.add_data_vector(subdomain, "subdomain");
       data_out.set_flags(vtu_flags());
       data_out.build_patches();
-      const std::string record = data_out.write_vtu_with_pvtu_record(
-        directory + "/grid/", "grid", index, MPI_COMM_WORLD, 5);
+      const std::string record = write_vtu(data_out, directory + "/grid/", "grid", index);
       files.emplace_back(time, "grid/" + record);
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         {
           std::ofstream pvd(directory + "/grid.pvd");
           dealii::DataOutBase::write_pvd_record(pvd, files);
+          pvd.close();
+          require_written(pvd, directory + "/grid.pvd");
         }
     }
   } // namespace io

@@ -4,6 +4,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/grid/grid_extent.h>
 #include <slidewave/grid/load_balancing_parameters.h>
+#include <slidewave/particles/point_count.h>
 #include <slidewave/soil/material_point_parameters.h>
 #include <sstream>
 
@@ -560,6 +561,25 @@ namespace slidewave
                          "none",
                          "at least one region filled with material ('rectangle' or "
                          "'polygon')");
+    }
+
+
+
+    void
+    MaterialPointParameters::add_to_memory_estimate(core::MemoryEstimate &estimate,
+                                                    const std::string    &path) const
+    {
+      estimate.add("grid cells",
+                   particles::grid_cell_count(lower_left, upper_right, cell_size),
+                   core::MemoryEstimate::bytes_per_grid_cell,
+                   path + "/Grid/Cell size",
+                   to_string(cell_size));
+      estimate.add("material points",
+                   particles::point_count_bound(
+                     regions, lower_left, upper_right, cell_size, particles_per_direction),
+                   core::MemoryEstimate::bytes_per_point,
+                   path + "/Particles per direction",
+                   std::to_string(particles_per_direction));
     }
   } // namespace soil
 } // namespace slidewave

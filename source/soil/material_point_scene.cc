@@ -13,6 +13,7 @@
 #include <fstream>
 #include <iostream>
 #include <slidewave/core/input_error.h>
+#include <slidewave/core/run_bounds.h>
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/io/solver_checkpoints.h>
@@ -104,6 +105,11 @@ namespace slidewave
     {
       prm.enter_subsection(section);
       parameters.parse_parameters(prm, section);
+      core::check_step_count(scene,
+                             parameters.fixed_time_step,
+                             section + "/Fixed time step",
+                             to_string(parameters.fixed_time_step),
+                             "'Fixed time step'");
       write_grid     = prm.get_bool("Output grid");
       check_interval = prm.get_integer("Check interval");
       prm.enter_subsection("Verification");
@@ -272,12 +278,23 @@ namespace slidewave
 
 
 
-    void
-    MaterialPointScene::create_output_directories() const
+    core::MemoryEstimate
+    MaterialPointScene::memory_estimate() const
     {
-      std::filesystem::create_directories(scene.output_directory + "/particles");
+      core::MemoryEstimate estimate;
+      parameters.add_to_memory_estimate(estimate, section);
+      return estimate;
+    }
+
+
+
+    std::vector<core::OutputFolder>
+    MaterialPointScene::output_folders() const
+    {
+      std::vector<core::OutputFolder> folders{{"particles", "the material points"}};
       if (write_grid)
-        std::filesystem::create_directories(scene.output_directory + "/grid");
+        folders.push_back({"grid", "the grid ('" + section + "/Output grid')"});
+      return folders;
     }
 
 

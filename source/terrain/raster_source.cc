@@ -11,6 +11,7 @@
 #include <limits>
 #include <ogr_srs_api.h>
 #include <slidewave/core/input_error.h>
+#include <slidewave/core/memory_estimate.h>
 #include <slidewave/terrain/crs.h>
 #include <slidewave/terrain/gdal_diagnostics.h>
 #include <slidewave/terrain/raster_source.h>
@@ -245,6 +246,11 @@ namespace slidewave
       try
         {
           open();
+          // Before a pixel is read: a raster too large for the memory is refused.
+          core::MemoryEstimate::check_raster(parameter,
+                                             filename,
+                                             GDALGetRasterXSize(source),
+                                             GDALGetRasterYSize(source));
           check_ascii_grid(parameter, filename, source);
           double gt[6];
           read_geotransform(gt);
@@ -376,6 +382,14 @@ namespace slidewave
         GDALClose(warped);
       if (source != nullptr)
         GDALClose(source);
+    }
+
+
+
+    double
+    RasterSource::pixel_count() const
+    {
+      return static_cast<double>(GDALGetRasterXSize(source)) * GDALGetRasterYSize(source);
     }
 
 

@@ -23,6 +23,8 @@ namespace slidewave
           out << mesh.center(i) << ',' << h << ',' << water.velocity(i) << ','
               << water.discharge()[i] << ',' << b << ',' << h + b << '\n';
         }
+      out.close();
+      require_written(out, file_name);
     }
 
 
@@ -65,6 +67,8 @@ namespace slidewave
       if (!is_writer || gauge_positions.empty())
         return;
       file = std::make_unique<std::ofstream>(file_name, append ? std::ios::app : std::ios::out);
+      name = file_name;
+      require_written(*file, name);
       file->precision(12);
       if (append)
         return;
@@ -85,6 +89,7 @@ namespace slidewave
       for (const double x : gauge_positions)
         *file << ',' << water.free_surface_at(x);
       *file << '\n';
+      require_written(*file, name);
     }
 
 
@@ -93,7 +98,10 @@ namespace slidewave
     GaugeRecorder::flush()
     {
       if (file)
-        file->flush();
+        {
+          file->flush();
+          require_written(*file, name);
+        }
     }
   } // namespace water
 } // namespace slidewave

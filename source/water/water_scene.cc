@@ -294,6 +294,8 @@ namespace slidewave
           csv << "time,cells,l1_depth,l1_velocity,max_free_surface,max_discharge\n"
               << time << ',' << mesh.n_cells() << ',' << l1_depth << ',' << l1_velocity << ','
               << linf_eta << ',' << linf_discharge << '\n';
+          csv.close();
+          require_written(csv, water_directory + "/errors.csv");
         }
       if (tolerance_l1_depth > 0.)
         {
@@ -338,10 +340,24 @@ namespace slidewave
 
 
 
-    void
-    WaterScene::create_output_directories() const
+    core::MemoryEstimate
+    WaterScene::memory_estimate() const
     {
-      std::filesystem::create_directories(water_directory);
+      core::MemoryEstimate estimate;
+      estimate.add("water cells",
+                   water->n_cells(),
+                   core::MemoryEstimate::bytes_per_water_cell,
+                   section + "/Mesh",
+                   std::to_string(water->n_cells()) + " cells");
+      return estimate;
+    }
+
+
+
+    std::vector<core::OutputFolder>
+    WaterScene::output_folders() const
+    {
+      return {{"water", "the water's profiles and gauges"}};
     }
 
 

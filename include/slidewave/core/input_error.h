@@ -1,6 +1,7 @@
 #ifndef slidewave_core_input_error_h
 #define slidewave_core_input_error_h
 
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -40,6 +41,25 @@ namespace slidewave
   public:
     explicit RunFailure(const std::string &what);
   };
+
+  /**
+   * A file the run could not write (a full disk, a folder removed or made read-only during
+   * the run, a GDAL driver that failed): the message names the file and the reason. The
+   * application exits with status 2 like a RunFailure; the output written before is kept.
+   */
+  class OutputFailure : public std::runtime_error
+  {
+  public:
+    /** "cannot write '<file>' (<reason>)". */
+    OutputFailure(const std::string &file, const std::string &reason);
+  };
+
+  /**
+   * Throws an OutputFailure naming @p file when @p stream has failed (after the writes, and
+   * after close() for a file stream, whose buffer is written then); the reason is errno's.
+   */
+  void
+  require_written(const std::ostream &stream, const std::string &file);
 
   /** Formats a double the way messages print values: shortest round-trip form. */
   std::string

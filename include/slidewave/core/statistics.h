@@ -49,7 +49,9 @@ namespace slidewave
     std::vector<std::pair<std::string, double>> current_row;
     std::vector<double>                         last_row;
     std::ofstream                               file;
-    std::ostream                               *echo = nullptr;
+    /** The file's name, for the message of a failed write. */
+    std::string   name;
+    std::ostream *echo = nullptr;
     /** Appending to an existing file: its header is there already. */
     bool appending = false;
   };

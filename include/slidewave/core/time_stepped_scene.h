@@ -2,6 +2,7 @@
 #define slidewave_core_time_stepped_scene_h
 
 #include <deal.II/base/timer.h>
+#include <slidewave/core/output_locations.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/io/checkpoint.h>
 #include <string>
@@ -41,10 +42,12 @@ namespace slidewave
     virtual std::string
     timer_prefix() const = 0;
 
-    /** Creates the output folders the scene writes into (rank 0). */
-    virtual void
-    create_output_directories() const
+    /** The folders (in the output directory) the scene writes into: the run control
+     *  creates them and checks that they can be written before the run starts. */
+    virtual std::vector<core::OutputFolder>
+    output_folders() const
     {
+      return {};
     }
 
     /** Builds the solvers and the initial state at @p start_time (collective). */

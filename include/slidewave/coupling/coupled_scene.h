@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 #include <memory>
 #include <optional>
+#include <slidewave/core/memory_estimate.h>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/core/time_stepped_scene.h>
@@ -44,6 +45,10 @@ namespace slidewave
 
       CoupledScene(const SceneParameters &scene, dealii::ParameterHandler &prm);
 
+      /** What the scene needs in memory, from its counts, before it allocates them. */
+      core::MemoryEstimate
+      memory_estimate() const;
+
       /** Runs the scene; throws RunFailure when the state becomes invalid. */
       bool
       run();
@@ -56,8 +61,8 @@ namespace slidewave
         return "coupled";
       }
 
-      void
-      create_output_directories() const override;
+      std::vector<core::OutputFolder>
+      output_folders() const override;
 
       void
       set_up(double start_time, dealii::TimerOutput &timer) override;

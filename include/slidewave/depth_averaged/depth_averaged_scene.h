@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 #include <limits>
 #include <memory>
+#include <slidewave/core/memory_estimate.h>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/core/time_stepped_scene.h>
@@ -15,6 +16,7 @@
 #include <slidewave/depth_averaged/hazard_maps.h>
 #include <slidewave/io/particle_output.h>
 #include <string>
+#include <vector>
 
 namespace slidewave
 {
@@ -36,6 +38,10 @@ namespace slidewave
 
       DepthAveragedScene(const SceneParameters &scene, dealii::ParameterHandler &prm);
 
+      /** What the scene needs in memory, from its counts, before it allocates them. */
+      core::MemoryEstimate
+      memory_estimate() const;
+
       /** Runs the scene; false when a verification tolerance was exceeded. */
       bool
       run();
@@ -46,8 +52,8 @@ namespace slidewave
         return "depth averaged";
       }
 
-      void
-      create_output_directories() const override;
+      std::vector<core::OutputFolder>
+      output_folders() const override;
 
       void
       set_up(double start_time, dealii::TimerOutput &timer) override;

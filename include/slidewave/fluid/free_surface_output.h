@@ -25,10 +25,6 @@ namespace slidewave
     public:
       FreeSurfaceOutput(std::string output_directory, std::vector<double> gauges);
 
-      /** The folder (rank 0). */
-      void
-      create_directories() const;
-
       /** Fields and surface of output number @p index at @p time. */
       void
       write(const FreeSurfaceSolver &solver, bool surface, unsigned int index, double time);

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <memory>
+#include <slidewave/core/memory_estimate.h>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/time_stepped_scene.h>
 #include <slidewave/fluid/free_surface_output.h>
@@ -31,6 +32,10 @@ namespace slidewave
 
       FreeSurfaceScene(const SceneParameters &scene, dealii::ParameterHandler &prm);
 
+      /** What the scene needs in memory, from its counts, before it allocates them. */
+      core::MemoryEstimate
+      memory_estimate() const;
+
       bool
       run();
 
@@ -40,8 +45,8 @@ namespace slidewave
         return "fluid";
       }
 
-      void
-      create_output_directories() const override;
+      std::vector<core::OutputFolder>
+      output_folders() const override;
 
       void
       set_up(double start_time, dealii::TimerOutput &timer) override;

@@ -2,9 +2,12 @@
 #define slidewave_io_particle_output_h
 
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/particles/particle_handler.h>
+#include <slidewave/core/input_error.h>
 #include <slidewave/particles/property_layout.h>
 #include <string>
 #include <utility>
@@ -25,6 +28,30 @@ namespace slidewave
       dealii::DataOutBase::VtkFlags flags;
       flags.compression_level = dealii::DataOutBase::VtkFlags::best_speed;
       return flags;
+    }
+
+    /**
+     * deal.II's write_vtu_with_pvtu_record() of @p data_out into @p folder (ending in '/'):
+     * the files NAME_INDEX.* and their record, whose name it returns (collective). A write
+     * deal.II reports as failed is an OutputFailure naming the files.
+     */
+    template <class DataOutType>
+    std::string
+    write_vtu(const DataOutType &data_out,
+              const std::string &folder,
+              const std::string &name,
+              const unsigned int index)
+    {
+      try
+        {
+          return data_out.write_vtu_with_pvtu_record(folder, name, index, MPI_COMM_WORLD, 5);
+        }
+      catch (const dealii::ExceptionBase &)
+        {
+          throw OutputFailure(folder + name + "_" + dealii::Utilities::int_to_string(index, 5)
+                                + ".*",
+                              "deal.II could not write the VTU files");
+        }
     }
 
     /**

@@ -7,6 +7,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <memory>
+#include <slidewave/core/memory_estimate.h>
 #include <slidewave/grid/grid_boundary.h>
 #include <slidewave/grid/rigid_wall.h>
 #include <slidewave/grid/shape_functions.h>
@@ -63,6 +64,11 @@ namespace slidewave
        */
       void
       parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+
+      /** Adds the grid's cells and (a bound on) the points the regions will hold to
+       *  @p estimate; @p path names the subsection in its messages. */
+      void
+      add_to_memory_estimate(core::MemoryEstimate &estimate, const std::string &path) const;
 
       dealii::Point<2>    lower_left, upper_right;
       double              cell_size               = 0.01;

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <memory>
+#include <slidewave/core/memory_estimate.h>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/core/time_stepped_scene.h>
@@ -30,6 +31,10 @@ namespace slidewave
 
       MaterialPointScene(const SceneParameters &scene, dealii::ParameterHandler &prm);
 
+      /** What the scene needs in memory, from its counts, before it allocates them. */
+      core::MemoryEstimate
+      memory_estimate() const;
+
       /** Runs the scene; throws RunFailure when a material point becomes invalid. */
       bool
       run();
@@ -42,8 +47,8 @@ namespace slidewave
         return "mpm";
       }
 
-      void
-      create_output_directories() const override;
+      std::vector<core::OutputFolder>
+      output_folders() const override;
 
       void
       set_up(double start_time, dealii::TimerOutput &timer) override;

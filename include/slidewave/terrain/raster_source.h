@@ -130,6 +130,10 @@ namespace slidewave
       static unsigned int
       n_opened();
 
+      /** The pixels of the file, as its header declares them (width x height). */
+      double
+      pixel_count() const;
+
       static unsigned int
       n_warped();
 

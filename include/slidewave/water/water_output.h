@@ -52,6 +52,8 @@ namespace slidewave
     private:
       std::vector<double>           gauge_positions;
       std::unique_ptr<std::ostream> file;
+      /** The file's name, for the message of a failed write. */
+      std::string name;
     };
   } // namespace water
 } // namespace slidewave

@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 #include <memory>
 #include <optional>
+#include <slidewave/core/memory_estimate.h>
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/core/time_stepped_scene.h>
@@ -38,6 +39,10 @@ namespace slidewave
       /** Reads and checks all parameters; throws InputError on bad input. */
       WaterScene(const SceneParameters &scene, dealii::ParameterHandler &prm);
 
+      /** What the scene needs in memory, from its counts, before it allocates them. */
+      core::MemoryEstimate
+      memory_estimate() const;
+
       /**
        * Runs the scene. Throws RunFailure when the state becomes invalid; returns false
        * when the error against the exact solution exceeds a requested tolerance.
@@ -60,8 +65,8 @@ namespace slidewave
         return "water";
       }
 
-      void
-      create_output_directories() const override;
+      std::vector<core::OutputFolder>
+      output_folders() const override;
 
       void
       set_up(double start_time, dealii::TimerOutput &timer) override;

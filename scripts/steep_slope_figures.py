@@ -84,7 +84,7 @@ def dam_break(args, ax):
     valid = x >= tail
     ax.plot(x[valid], exact[valid], "k-", lw=1.2, label="exact (Mangeney et al. 2000)")
     ax.axvline(tail, color="0.5", lw=0.6, ls=":")
-    ax.annotate("errors measured from here on", (tail, 1.02), (tail + 1, 1.02), fontsize=7,
+    ax.annotate("errors measured from here on", (tail, 0.04), (tail + 0.5, 0.04), fontsize=7,
                 va="center")
     for form, label, color, _ in FORMS:
         r = run(args, "dam-break-%s" % form.replace(" ", "-"), "prm/dam-break-on-slope.prm",
@@ -101,13 +101,13 @@ def dam_break(args, ax):
                 rasterized=True,
                 label="%s: L1 error of h %.3f, of u %.3f, front %.1f m" % (label, *errors))
     ax.set_xlim(0, 50)
-    ax.set_ylim(-0.02, 1.1)
+    ax.set_ylim(-0.02, 1.25)
     ax.set_xlabel("x (horizontal) [m]")
     ax.set_ylabel("vertical depth h [m]")
     ax.set_title("Dam break down 40 deg, $\\phi$ = 20 deg, t = 2 s (reservoir [8, 28] m, "
                  "1 m deep)", fontsize=9)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, loc="upper left", markerscale=4)
+    ax.legend(fontsize=7, loc="upper right", markerscale=4)
 
 
 def main():

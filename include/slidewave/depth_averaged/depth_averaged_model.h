@@ -154,12 +154,15 @@ namespace slidewave
           }
         const double vx = p[property::velocity_x], vy = p[property::velocity_y];
         const double zx = grad_z[0], zy = grad_z[1];
-        // The slope correction (doc/depth-averaged.md, "Slope correction"): the weight
-        // acts on the bed through the normal gravity g cos^2 theta, cos^2 theta =
-        // 1 / (1 + |grad Z|^2) at the column; the column moves along the bed with the
-        // vertical velocity v . grad Z; the friction per unit of bed area is projected on
-        // the plan view with the factor |v| / (|v_bed| cos theta) (1 down the fall line).
-        // On flat ground every factor is exactly 1. Paper 001 ('none'): all 1.
+        // The slope correction (issue 28; doc/depth-averaged.md, "Slope correction"): the
+        // slope-parallel shallow-layer equations (Savage-Hutter; Mangeney et al. 2000)
+        // projected on the plan view, i.e. the weight on the bed through the normal
+        // gravity g cos^2 theta (the basal normal stress rho g h cos^2 theta of Denlinger
+        // and Iverson 2004 on a plane), cos^2 theta = 1 / (1 + |grad Z|^2) at the column;
+        // the column moves along the bed with the vertical velocity v . grad Z; the
+        // friction per unit of bed area is projected on the plan view with the factor
+        // |v| / (|v_bed| cos theta) (1 down the fall line). On flat ground every factor
+        // is exactly 1. Paper 001 ('none'): all 1.
         double normal = 1., projection = 1.;
         double speed_squared = vx * vx + vy * vy;
         if (bed_normal)

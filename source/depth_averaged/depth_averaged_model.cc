@@ -29,6 +29,7 @@ namespace slidewave
                         0.)
       , atmospheric_pressure(parameters.atmospheric_pressure)
       , project_depth(parameters.depth_update == DepthUpdate::projection)
+      , bed_normal(parameters.slope_correction == SlopeCorrection::bed_normal)
     {
       property_layout.add_scalar("mass");
       property_layout.add_scalar("volume");

@@ -33,6 +33,20 @@ namespace slidewave
                           "0",
                           Double(),
                           "Elevation of the still level [m] ('Hydrostatic term = still level').");
+        prm.declare_entry("Slope correction",
+                          "bed normal",
+                          Selection("none|bed normal"),
+                          "'bed normal': the weight of a column on a slope of angle theta "
+                          "(cos^2 theta = 1 / (1 + |grad Z|^2) at the column) acts on the bed "
+                          "with the normal stress rho g h cos^2 theta (h the vertical "
+                          "thickness): the slope term, the Coulomb friction and the pressure "
+                          "are those of the slope-parallel (Savage-Hutter) equations projected "
+                          "on the plan view, and a block slides at the exact g cos^2 theta "
+                          "(tan theta - tan phi) horizontally at every slope. 'none': paper "
+                          "001's plan-view terms with the full g, a block sliding at "
+                          "g (tan theta - tan phi), 1 / cos^2 theta too fast (twice at 45 deg). "
+                          "Both take 'depth' as the vertical thickness "
+                          "(doc/depth-averaged.md, Slope correction).");
         prm.declare_entry("Shape functions",
                           "q1",
                           Selection("q1|gimp|cpgimp"),
@@ -522,6 +536,8 @@ namespace slidewave
                                   HydrostaticTerm::still_level :
                                   HydrostaticTerm::standard;
       still_level             = prm.get_double("Still level");
+      slope_correction        = prm.get("Slope correction") == "none" ? SlopeCorrection::none :
+                                                                        SlopeCorrection::bed_normal;
       const std::string shape = prm.get("Shape functions");
       shape_function          = shape == "gimp"   ? grid::ShapeFunction::gimp :
                                 shape == "cpgimp" ? grid::ShapeFunction::cpgimp :

@@ -102,7 +102,7 @@ namespace slidewave
         {
           prm.declare_entry("Exact solution",
                             "none",
-                            Selection("none|still state|dam break"),
+                            Selection("none|still state|dam break|sliding block"),
                             "'still state': material at rest with its surface at the "
                             "release's 'Surface' (the lake at rest of paper 001, §4.1): the "
                             "L1 (sum of |e| A_p) and L-infinity errors of h, hu and hv at the "
@@ -110,7 +110,20 @@ namespace slidewave
                             "'dam break': the dam break along x of 'Left depth' and 'Right "
                             "depth' at 'Dam position' (Ritter for a dry bed, Stoker for a wet "
                             "one): the L1 error of the nodal depth relative to the exact "
-                            "volume, sum |h_i - h(x_i, t)| a_i / sum h(x_i, t) a_i.");
+                            "volume, sum |h_i - h(x_i, t)| a_i / sum h(x_i, t) a_i; with a "
+                            "'Slope angle', Mangeney et al.'s (2000) dry dam break down the "
+                            "plane Z = -x tan(angle) with the Coulomb friction of 'Basal "
+                            "friction', compared from the tail of the rarefaction onwards, and "
+                            "also the L1 error of the velocity (weighted by the exact depth). "
+                            "'sliding block': a slab on the plane Z = -x tan('Slope angle') "
+                            "with Coulomb friction: the relative error of its horizontal "
+                            "acceleration momentum_x / (M t) against g cos^2 theta "
+                            "(tan theta - tan phi).");
+          prm.declare_entry("Slope angle",
+                            "0",
+                            Double(0., 89.),
+                            "theta [degrees] of the plane Z = -x tan(theta) of 'sliding block' "
+                            "and of the dam break on a slope (0: Ritter or Stoker).");
           prm.declare_entry("Dam position", "0", Double(), "x0 of the dam break [m].");
           prm.declare_entry("Left depth", "1", Double(0.), "h_l of the dam break [m].");
           prm.declare_entry("Right depth", "0", Double(0.), "h_r of the dam break [m].");
@@ -140,7 +153,8 @@ namespace slidewave
                             Double(0.),
                             "If > 0, the run fails (exit status 3) when the error at the end "
                             "exceeds it (still state: L-infinity of h; dam break: the L1 "
-                            "error).");
+                            "error of the depth; sliding block: the relative error of the "
+                            "acceleration).");
         }
         prm.leave_subsection();
       }
@@ -230,9 +244,11 @@ namespace slidewave
       prm.enter_subsection("Verification");
       {
         const std::string type = prm.get("Exact solution");
-        exact_solution         = type == "still state" ? ExactSolution::still_state :
-                                 type == "dam break"   ? ExactSolution::dam_break :
-                                                         ExactSolution::none;
+        exact_solution         = type == "still state"   ? ExactSolution::still_state :
+                                 type == "dam break"     ? ExactSolution::dam_break :
+                                 type == "sliding block" ? ExactSolution::sliding_block :
+                                                           ExactSolution::none;
+        slope_angle            = prm.get_double("Slope angle") * M_PI / 180.;
         dam_position           = prm.get_double("Dam position");
         left_depth             = prm.get_double("Left depth");
         right_depth            = prm.get_double("Right depth");
@@ -255,6 +271,18 @@ namespace slidewave
           throw InputError(section + "/Verification/Left depth",
                            prm.get("Left depth"),
                            "a depth > 0 for 'dam break'");
+        const double tan_phi = parameters.friction ? std::tan(parameters.friction_angle) : 0.;
+        if ((exact_solution == ExactSolution::sliding_block
+             || (exact_solution == ExactSolution::dam_break && slope_angle > 0.))
+            && !(std::tan(slope_angle) > tan_phi))
+          throw InputError(section + "/Verification/Slope angle",
+                           prm.get("Slope angle"),
+                           "an angle above the basal friction angle (the exact solutions of "
+                           "a slide need tan(theta) > tan(phi))");
+        if (exact_solution == ExactSolution::dam_break && slope_angle > 0. && right_depth > 0.)
+          throw InputError(section + "/Verification/Right depth",
+                           prm.get("Right depth"),
+                           "0 for the dam break on a slope (the dry bed of Mangeney et al.)");
       }
       prm.leave_subsection();
       prm.leave_subsection();

@@ -5,8 +5,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <fstream>
+#include <limits>
 #include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/depth_averaged_scene.h>
+#include <slidewave/depth_averaged/inclined_plane_solutions.h>
 #include <slidewave/water/dam_break_solutions.h>
 #include <sstream>
 
@@ -40,19 +42,32 @@ namespace slidewave
 
 
 
-    double
-    DepthAveragedScene::dam_break_error(const double time) const
+    std::array<double, 2>
+    DepthAveragedScene::dam_break_errors(const double time) const
     {
       const water::DamBreakSolution exact(left_depth,
                                           right_depth,
                                           dam_position,
                                           parameters.gravity);
-      const auto                    depth = solver->nodal_depth();
-      const auto                    area  = grid->lumped_nodal_area();
-      const auto                   &dofs  = solver->dof_handler();
-      std::vector<bool>             done(depth.locally_owned_size(), false);
-      double                        sums[2] = {0., 0.};
-      const double                  t       = time - scene.start_time;
+      const InclinedPlaneSolutions  slope(slope_angle,
+                                         parameters.friction ? parameters.friction_angle : 0.,
+                                         parameters.gravity,
+                                         left_depth,
+                                         dam_position);
+      const bool                    on_slope = slope_angle > 0.;
+      // The depth and, on a slope, the mass-weighted velocity the columns give the nodes.
+      const auto        state = solver->nodal_state(on_slope);
+      const auto       &depth = state.depth;
+      const auto        area  = grid->lumped_nodal_area();
+      const auto       &dofs  = solver->dof_handler();
+      std::vector<bool> done(depth.locally_owned_size(), false);
+      // |e_h| a, h a, |e_u| h a, |u| h a.
+      double       sums[4] = {0., 0., 0., 0.};
+      const double t       = time - scene.start_time;
+      // On a slope, the exact solution of an infinite reservoir holds from the tail of the
+      // dam's rarefaction on (InclinedPlaneSolutions).
+      const double from
+        = on_slope ? slope.rarefaction_tail(t) : -std::numeric_limits<double>::max();
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())
           for (const unsigned int v : cell->vertex_indices())
@@ -66,16 +81,42 @@ namespace slidewave
               done[local] = true;
               // The node's lumped area: a quarter of each cell around it.
               const dealii::Point<2> &x = cell->vertex(v);
-              const double            a = area.local_element(local);
-              double                  h, u;
-              exact.evaluate(x[0], t, h, u);
+              if (x[0] < from)
+                continue;
+              const double a = area.local_element(local);
+              double       h, u;
+              if (on_slope)
+                slope.dam_break(x[0], t, h, u);
+              else
+                exact.evaluate(x[0], t, h, u);
               sums[0] += std::abs(depth[i] - h) * a;
               sums[1] += h * a;
+              if (on_slope)
+                {
+                  sums[2] += std::abs(state.velocity[0][i] - u) * h * a;
+                  sums[3] += std::abs(u) * h * a;
+                }
             }
-      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 2),
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 4),
                                   MPI_COMM_WORLD,
-                                  dealii::ArrayView<double>(sums, 2));
-      return sums[0] / sums[1];
+                                  dealii::ArrayView<double>(sums, 4));
+      return {{sums[0] / sums[1], sums[3] > 0. ? sums[2] / sums[3] : 0.}};
+    }
+
+
+
+    double
+    DepthAveragedScene::sliding_block_error(const double time) const
+    {
+      const double t = time - scene.start_time;
+      if (!(t > 0.))
+        return 0.;
+      const InclinedPlaneSolutions exact(slope_angle,
+                                         parameters.friction ? parameters.friction_angle : 0.,
+                                         parameters.gravity);
+      const auto                   integrals    = solver->model().integrals(solver->point_cloud());
+      const double                 acceleration = exact.horizontal_acceleration();
+      return std::abs(integrals.momentum_x / (integrals.mass * t) - acceleration) / acceleration;
     }
 
 
@@ -135,7 +176,14 @@ namespace slidewave
             }
         }
       if (exact_solution == ExactSolution::dam_break)
-        statistics.add_value("depth_error_l1", dam_break_error(info.time));
+        {
+          const auto errors = dam_break_errors(info.time);
+          statistics.add_value("depth_error_l1", errors[0]);
+          if (slope_angle > 0.)
+            statistics.add_value("velocity_error_l1", errors[1]);
+        }
+      if (exact_solution == ExactSolution::sliding_block)
+        statistics.add_value("acceleration_error", sliding_block_error(info.time));
     }
 
 
@@ -226,13 +274,59 @@ namespace slidewave
                 std::printf("  %-8s  %.3e   %.3e\n", names[i], errors.l1[i], errors.linf[i]);
             }
         }
-      if (exact_solution == ExactSolution::dam_break)
+      const double t = info.time - scene.start_time;
+      if (exact_solution == ExactSolution::dam_break && slope_angle > 0.)
         {
-          max_error = dam_break_error(info.time);
+          const auto   errors    = dam_break_errors(info.time);
+          const auto   integrals = solver->model().integrals(solver->point_cloud());
+          const double front
+            = InclinedPlaneSolutions(slope_angle,
+                                     parameters.friction ? parameters.friction_angle : 0.,
+                                     parameters.gravity,
+                                     left_depth,
+                                     dam_position)
+                .front(t);
+          max_error = errors[0];
+          if (is_writer)
+            std::printf("Dam break on a %g deg slope (Mangeney et al. 2000) at t = %g s: "
+                        "relative L1 error of the depth = %.4e, of the velocity = %.4e; "
+                        "front x = %.4f m (the farthest column), exact %.4f m, error %.4f m "
+                        "of %.4f m travelled\n",
+                        slope_angle * 180. / M_PI,
+                        t,
+                        errors[0],
+                        errors[1],
+                        integrals.x_max,
+                        front,
+                        integrals.x_max - front,
+                        front - dam_position);
+        }
+      else if (exact_solution == ExactSolution::dam_break)
+        {
+          max_error = dam_break_errors(info.time)[0];
           if (is_writer)
             std::printf("Dam break (%s) at t = %g s: relative L1 error of the depth = %.4e\n",
                         right_depth > 0. ? "Stoker" : "Ritter",
-                        info.time - scene.start_time,
+                        t,
+                        max_error);
+        }
+      if (exact_solution == ExactSolution::sliding_block)
+        {
+          const auto   integrals = solver->model().integrals(solver->point_cloud());
+          const double exact
+            = InclinedPlaneSolutions(slope_angle,
+                                     parameters.friction ? parameters.friction_angle : 0.,
+                                     parameters.gravity)
+                .horizontal_acceleration();
+          max_error = sliding_block_error(info.time);
+          if (is_writer)
+            std::printf("Sliding block on a %g deg slope at t = %g s: horizontal acceleration "
+                        "momentum_x / (M t) = %.9f m/s^2, exact g cos^2 theta (tan theta - "
+                        "tan phi) = %.9f m/s^2, relative error %.3e\n",
+                        slope_angle * 180. / M_PI,
+                        t,
+                        integrals.momentum_x / (integrals.mass * t),
+                        exact,
                         max_error);
         }
       bool conserved = true;

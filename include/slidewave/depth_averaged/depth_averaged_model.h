@@ -51,7 +51,9 @@ namespace slidewave
      *
      * - the nodal force of Eq. 28: -V_p sigma^nabla_p grad N_i (sigma^nabla of Eq. 14, or
      *   its still-level form, Eq. 41) plus rho V_p b_p N_i with b = -g grad Z (or
-     *   -g (1 - H/h) grad Z about the still level);
+     *   -g (1 - H/h) grad Z about the still level); with 'Slope correction = bed
+     *   normal' g becomes the normal gravity g cos^2 theta and the pressure is the
+     *   slope-parallel one projected on the plan view (doc/depth-averaged.md);
      * - the basal resistance A_p tau_b of Voellmy's law (Eq. 2), applied by the engine
      *   at the nodes against the motion (TransferKernels::update_grid);
      * - the update of USL (Eqs. 36–38): the depth h_p / (1 + tr(delta eps_p)) and the
@@ -151,24 +153,58 @@ namespace slidewave
             slope    = g * (1. - H / h);
           }
         const double vx = p[property::velocity_x], vy = p[property::velocity_y];
-        double       resistance = 0.;
+        const double zx = grad_z[0], zy = grad_z[1];
+        // The slope correction (issue 28; doc/depth-averaged.md, "Slope correction"): the
+        // slope-parallel shallow-layer equations (Savage-Hutter; Mangeney et al. 2000)
+        // projected on the plan view, i.e. the weight on the bed through the normal
+        // gravity g cos^2 theta (the basal normal stress rho g h cos^2 theta of Denlinger
+        // and Iverson 2004 on a plane), cos^2 theta = 1 / (1 + |grad Z|^2) at the column;
+        // the column moves along the bed with the vertical velocity v . grad Z; the
+        // friction per unit of bed area is projected on the plan view with the factor
+        // |v| / (|v_bed| cos theta) (1 down the fall line). On flat ground every factor
+        // is exactly 1. Paper 001 ('none'): all 1.
+        double normal = 1., projection = 1.;
+        double speed_squared = vx * vx + vy * vy;
+        if (bed_normal)
+          {
+            normal                    = 1. / (1. + zx * zx + zy * zy);
+            const double vertical     = vx * zx + vy * zy;
+            const double plan_squared = speed_squared;
+            speed_squared += vertical * vertical;
+            if (plan_squared > 0.)
+              projection = std::sqrt(plan_squared / (normal * speed_squared));
+            pressure *= normal;
+            slope *= normal;
+          }
+        double resistance = 0.;
         if (friction)
           {
-            // Voellmy (Eq. 2) on the column's area A_p = V_p / h_p.
-            const double speed_squared = vx * vx + vy * vy;
-            resistance
-              = p[property::volume] / h
-                * ((atmospheric_pressure + rho_g * h) * tan_phi + rho_g_over_xi * speed_squared);
+            // Voellmy (Eq. 2) on the column's area A_p = V_p / h_p, with the normal stress
+            // rho g h cos^2 theta and the speed along the bed when corrected.
+            resistance = p[property::volume] / h * projection
+                         * ((atmospheric_pressure + rho_g * normal * h) * tan_phi
+                            + rho_g_over_xi * speed_squared);
+          }
+        double sxx = p[property::stress_xx] - pressure, syy = p[property::stress_yy] - pressure,
+               sxy = p[property::stress_xy];
+        if (bed_normal)
+          {
+            // The slope-parallel pressure projected on the plan view: a further
+            // cos^2 theta along the fall line, pressure (1 - cos^2 theta grad Z grad Z^T).
+            const double k = pressure * normal;
+            sxx += k * zx * zx;
+            syy += k * zy * zy;
+            sxy += k * zx * zy;
           }
         return {p[property::mass],
                 vx,
                 vy,
                 p[property::volume],
-                p[property::stress_xx] - pressure,
-                p[property::stress_yy] - pressure,
-                p[property::stress_xy],
-                -slope * grad_z[0],
-                -slope * grad_z[1],
+                sxx,
+                syy,
+                sxy,
+                -slope * zx,
+                -slope * zy,
                 resistance};
       }
 
@@ -331,6 +367,8 @@ namespace slidewave
       const double tan_phi, rho_g_over_xi, atmospheric_pressure;
       /** 'Depth update = projection'. */
       const bool project_depth;
+      /** 'Slope correction = bed normal'. */
+      const bool bed_normal;
     };
   } // namespace depth_averaged
 } // namespace slidewave

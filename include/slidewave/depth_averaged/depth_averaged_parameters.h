@@ -24,6 +24,18 @@ namespace slidewave
       still_level ///< about a known still level: 1/2 g (h^2 - H^2) and -g (h - H) grad Z (Eq. 41)
     };
 
+    /**
+     * The gravity and basal normal stress of a column on a slope ('Slope correction';
+     * doc/depth-averaged.md, "Slope correction").
+     */
+    enum class SlopeCorrection
+    {
+      none,      ///< paper 001's plan-view terms: full g in the slope term, the pressure and
+                 ///< the friction (a block slides at g (tan theta - tan phi) horizontally)
+      bed_normal ///< the normal gravity g cos^2 theta on a vertical thickness h (a block
+                 ///< slides at the exact g cos^2 theta (tan theta - tan phi))
+    };
+
     /** How a column's depth follows the flow ('Depth update'). */
     enum class DepthUpdate
     {
@@ -75,7 +87,8 @@ namespace slidewave
 
       HydrostaticTerm hydrostatic_term = HydrostaticTerm::standard;
       /** The still level's elevation H + Z [m] (still_level). */
-      double still_level = 0.;
+      double          still_level      = 0.;
+      SlopeCorrection slope_correction = SlopeCorrection::bed_normal;
 
       /** @name Terrain */
       std::string elevation;

@@ -103,8 +103,9 @@ namespace slidewave
       enum class ExactSolution
       {
         none,
-        still_state, ///< material at rest at the release's surface
-        dam_break    ///< Ritter's or Stoker's dam break along x
+        still_state,  ///< material at rest at the release's surface
+        dam_break,    ///< Ritter's or Stoker's dam break along x, or Mangeney's on a slope
+        sliding_block ///< a slab sliding down a plane with Coulomb friction
       };
 
       void
@@ -118,9 +119,16 @@ namespace slidewave
       DepthAveragedModel::StillStateErrors
       still_state_errors() const;
 
-      /** The dam break: sum |h_i - h(x_i, t)| a_i over sum h(x_i, t) a_i at the nodes. */
+      /** The dam break: sum |h_i - h(x_i, t)| a_i over sum h(x_i, t) a_i at the nodes
+       *  and, on a slope (from the tail of the rarefaction on), the velocity's
+       *  sum |u_i - u(x_i, t)| h(x_i, t) a_i over sum |u(x_i, t)| h(x_i, t) a_i. */
+      std::array<double, 2>
+      dam_break_errors(double time) const;
+
+      /** The sliding block: |momentum_x / (M t) - a| / a, a the exact horizontal
+       *  acceleration (0 at t = 0). */
       double
-      dam_break_error(double time) const;
+      sliding_block_error(double time) const;
 
       /** The nodal totals against the points': relative errors of mass and momentum. */
       std::array<double, 2>
@@ -156,7 +164,9 @@ namespace slidewave
 
       ExactSolution exact_solution = ExactSolution::none;
       double        dam_position = 0., left_depth = 1., right_depth = 0.;
-      double        tolerance = 0.;
+      /** 'Slope angle' [rad] of the dam break on a slope and of the sliding block. */
+      double slope_angle = 0.;
+      double tolerance   = 0.;
       /** The release's surface h + Z (for the still state). */
       std::unique_ptr<dealii::FunctionParser<2>> surface;
 

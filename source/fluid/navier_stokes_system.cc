@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -17,6 +18,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/fluid/navier_stokes_system.h>
 #include <slidewave/grid/tree_order.h>
+#include <stdexcept>
 
 namespace slidewave
 {
@@ -110,6 +112,10 @@ namespace slidewave
     {
       make_constraints(0.);
       preconditioner.reset(); // it refers to the matrix it was built from
+      ilu.reset();
+      scatter.clear(); // rebuilt by the next assembly, when every field is current
+      flow_gather.clear();
+      phase_gather.clear();
       flow.reinit_matrix(matrix, flow_constraints);
       rhs.reinit(flow.locally_owned_dofs(), grid.communicator());
       solution.reinit(flow.locally_owned_dofs(), grid.communicator());
@@ -210,8 +216,22 @@ namespace slidewave
           }
       };
 
-      matrix = 0.;
-      rhs    = 0.;
+      // Where each cell's values and entries sit (after grid changes, once).
+      if (scatter.empty())
+        scatter.reinit(flow.dof_handler(), flow_constraints, matrix, rhs);
+      if (flow_gather.empty())
+        flow_gather.reinit(flow.dof_handler(), flow.values(0));
+      if (phase_gather.empty())
+        phase_gather.reinit(phase.dof_handler(), phase.values(0));
+      if (!flow_gather.matches(flow.values(1)) || !phase_gather.matches(phase_old))
+        throw std::logic_error("NavierStokesSystem::assemble: vectors of different layouts");
+      const unsigned int  n_phase_dofs = phase.finite_element().n_dofs_per_cell();
+      std::vector<double> dofs_n(n_dofs), dofs_old(n_dofs), phase_dofs_new(n_phase_dofs),
+        phase_dofs_old(n_phase_dofs);
+
+      matrix                   = 0.;
+      rhs                      = 0.;
+      unsigned int cell_number = 0;
       grid::for_each_owned_cell_in_tree_order(flow.dof_handler(), [&](const auto &cell) {
         fv.reinit(cell);
         const dealii::DoFHandler<2>::active_cell_iterator phase_cell(&grid.triangulation(),
@@ -219,11 +239,32 @@ namespace slidewave
                                                                      cell->index(),
                                                                      &phase.dof_handler());
         fv_phase.reinit(phase_cell);
-        fv[velocity].get_function_values(flow.values(0), u_n);
-        fv[velocity].get_function_values(flow.values(1), u_old);
-        fv[velocity].get_function_gradients(flow.values(0), grad_u_n);
-        fv_phase.get_function_values(phase.values(0), phi_new);
-        fv_phase.get_function_values(phase_old, phi_old);
+        // The fields at the quadrature points, summed over the shape functions in the
+        // order FEValues::get_function_values() sums them (the same numbers, bit for bit).
+        flow_gather.get(cell_number, flow.values(0), dofs_n.data());
+        flow_gather.get(cell_number, flow.values(1), dofs_old.data());
+        phase_gather.get(cell_number, phase.values(0), phase_dofs_new.data());
+        phase_gather.get(cell_number, phase_old, phase_dofs_old.data());
+        std::fill(u_n.begin(), u_n.end(), dealii::Tensor<1, 2>());
+        std::fill(u_old.begin(), u_old.end(), dealii::Tensor<1, 2>());
+        std::fill(grad_u_n.begin(), grad_u_n.end(), dealii::Tensor<2, 2>());
+        std::fill(phi_new.begin(), phi_new.end(), 0.);
+        std::fill(phi_old.begin(), phi_old.end(), 0.);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          if (component[i] < 2)
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const unsigned int a = component[i];
+                u_n[q][a] += dofs_n[i] * fv.shape_value(i, q);
+                u_old[q][a] += dofs_old[i] * fv.shape_value(i, q);
+                grad_u_n[q][a] += dofs_n[i] * fv.shape_grad(i, q);
+              }
+        for (unsigned int i = 0; i < n_phase_dofs; ++i)
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              phi_new[q] += phase_dofs_new[i] * fv_phase.shape_value(i, q);
+              phi_old[q] += phase_dofs_old[i] * fv_phase.shape_value(i, q);
+            }
         // The length of the stabilization parameters: the nodes' spacing.
         const double h = cell->extent_in_direction(0) / degree;
         if (porous.active())
@@ -345,7 +386,8 @@ namespace slidewave
         add_open_boundary_terms(
           cell, phase_cell, fv_face, fv_face_phase, w, local_matrix, local_rhs);
         cell->get_dof_indices(indices);
-        flow_constraints.distribute_local_to_global(local_matrix, local_rhs, indices, matrix, rhs);
+        scatter.add(cell_number, local_matrix, local_rhs, indices, flow_constraints, matrix, rhs);
+        ++cell_number;
       });
       matrix.compress(dealii::VectorOperation::add);
       rhs.compress(dealii::VectorOperation::add);
@@ -450,9 +492,10 @@ namespace slidewave
           }
         else
           {
-            auto ilu = std::make_unique<dealii::TrilinosWrappers::PreconditionILU>();
-            ilu->initialize(matrix, dealii::TrilinosWrappers::PreconditionILU::AdditionalData(1));
-            preconditioner = std::move(ilu);
+            if (!ilu)
+              ilu = std::make_shared<linear_algebra::IncompleteLU>(1);
+            ilu->factorize(matrix); // symbolic only after grid changes
+            preconditioner = ilu;
           }
         preconditioner_age = 0;
         preconditioner_dt  = lengths.dt;

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
@@ -14,6 +15,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/fluid/phase_field_system.h>
 #include <slidewave/grid/tree_order.h>
+#include <stdexcept>
 
 namespace slidewave
 {
@@ -54,6 +56,10 @@ namespace slidewave
     {
       const MPI_Comm communicator = grid.communicator();
       phase.reinit_matrix(matrix, phase.constraints());
+      ilu.reset();     // bound to the matrix's sparsity
+      scatter.clear(); // rebuilt by the next assembly, when every field is current
+      phase_gather.clear();
+      flow_gather.clear();
       rhs.reinit(phase.locally_owned_dofs(), communicator);
       solution.reinit(phase.locally_owned_dofs(), communicator);
       phase_old.reinit(phase.locally_owned_dofs(), phase.locally_relevant_dofs(), communicator);
@@ -104,8 +110,24 @@ namespace slidewave
       dealii::Vector<double>                       local_rhs(n_dofs);
       std::vector<dealii::types::global_dof_index> indices(n_dofs);
 
-      matrix = 0.;
-      rhs    = 0.;
+      // Where each cell's values and entries sit (after grid changes, once).
+      if (scatter.empty())
+        scatter.reinit(phase.dof_handler(), phase.constraints(), matrix, rhs);
+      if (phase_gather.empty())
+        phase_gather.reinit(phase.dof_handler(), phase_old);
+      if (flow_gather.empty())
+        flow_gather.reinit(flow.dof_handler(), flow.values(0));
+      if (!flow_gather.matches(flow.values(1)))
+        throw std::logic_error("PhaseFieldSystem::assemble: vectors of different layouts");
+      const unsigned int  n_flow_dofs = flow.finite_element().n_dofs_per_cell();
+      std::vector<double> flow_dofs_n(n_flow_dofs), flow_dofs_old(n_flow_dofs), phase_dofs(n_dofs);
+      std::vector<unsigned int> flow_component(n_flow_dofs);
+      for (unsigned int i = 0; i < n_flow_dofs; ++i)
+        flow_component[i] = flow.finite_element().system_to_component_index(i).first;
+
+      matrix                   = 0.;
+      rhs                      = 0.;
+      unsigned int cell_number = 0;
       grid::for_each_owned_cell_in_tree_order(phase.dof_handler(), [&](const auto &cell) {
         fv.reinit(cell);
         const dealii::DoFHandler<2>::active_cell_iterator flow_cell(&grid.triangulation(),
@@ -113,12 +135,33 @@ namespace slidewave
                                                                     cell->index(),
                                                                     &flow.dof_handler());
         fv_flow.reinit(flow_cell);
-        fv_flow[velocity].get_function_values(flow.values(0), u_n);
-        fv_flow[velocity].get_function_values(flow.values(1), u_old);
-        fv_flow[velocity].get_function_divergences(flow.values(0), div_n);
-        fv_flow[velocity].get_function_divergences(flow.values(1), div_old);
-        fv.get_function_values(phase_old, phi_n);
-        fv.get_function_gradients(phase_old, grad_phi_n);
+        // The fields at the quadrature points, summed over the shape functions in the
+        // order FEValues::get_function_values() sums them (the same numbers, bit for bit).
+        flow_gather.get(cell_number, flow.values(0), flow_dofs_n.data());
+        flow_gather.get(cell_number, flow.values(1), flow_dofs_old.data());
+        phase_gather.get(cell_number, phase_old, phase_dofs.data());
+        std::fill(u_n.begin(), u_n.end(), dealii::Tensor<1, 2>());
+        std::fill(u_old.begin(), u_old.end(), dealii::Tensor<1, 2>());
+        std::fill(div_n.begin(), div_n.end(), 0.);
+        std::fill(div_old.begin(), div_old.end(), 0.);
+        std::fill(phi_n.begin(), phi_n.end(), 0.);
+        std::fill(grad_phi_n.begin(), grad_phi_n.end(), dealii::Tensor<1, 2>());
+        for (unsigned int i = 0; i < n_flow_dofs; ++i)
+          if (flow_component[i] < 2)
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const unsigned int a = flow_component[i];
+                u_n[q][a] += flow_dofs_n[i] * fv_flow.shape_value(i, q);
+                u_old[q][a] += flow_dofs_old[i] * fv_flow.shape_value(i, q);
+                div_n[q] += flow_dofs_n[i] * fv_flow.shape_grad(i, q)[a];
+                div_old[q] += flow_dofs_old[i] * fv_flow.shape_grad(i, q)[a];
+              }
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              phi_n[q] += phase_dofs[i] * fv.shape_value(i, q);
+              grad_phi_n[q] += phase_dofs[i] * fv.shape_grad(i, q);
+            }
         const double h = cell->extent_in_direction(0);
 
         local_matrix = 0.;
@@ -202,8 +245,9 @@ namespace slidewave
                 }
             }
         cell->get_dof_indices(indices);
-        phase.constraints().distribute_local_to_global(
-          local_matrix, local_rhs, indices, matrix, rhs);
+        scatter.add(
+          cell_number, local_matrix, local_rhs, indices, phase.constraints(), matrix, rhs);
+        ++cell_number;
       });
       matrix.compress(dealii::VectorOperation::add);
       rhs.compress(dealii::VectorOperation::add);
@@ -221,12 +265,13 @@ namespace slidewave
       solution                     = phase.locally_owned_values(0);
       const double          target = parameters.linear_tolerance * rhs.l2_norm();
       dealii::SolverControl control(parameters.max_iterations, std::max(target, 1e-300));
-      dealii::TrilinosWrappers::SolverGMRES     gmres(control);
-      dealii::TrilinosWrappers::PreconditionILU ilu;
-      ilu.initialize(matrix);
+      dealii::TrilinosWrappers::SolverGMRES gmres(control);
+      if (!ilu)
+        ilu = std::make_unique<linear_algebra::IncompleteLU>(0);
+      ilu->factorize(matrix); // ILU(0) of this step's values; symbolic after grid changes
       try
         {
-          gmres.solve(matrix, solution, rhs, ilu);
+          gmres.solve(matrix, solution, rhs, *ilu);
         }
       catch (const dealii::SolverControl::NoConvergence &failure)
         {

@@ -13,6 +13,9 @@
 #include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/grid/finite_element_field.h>
 #include <slidewave/grid/grid_follower.h>
+#include <slidewave/linear_algebra/cell_gather.h>
+#include <slidewave/linear_algebra/cell_scatter.h>
+#include <slidewave/linear_algebra/incomplete_lu.h>
 
 namespace slidewave
 {
@@ -187,9 +190,17 @@ namespace slidewave
       /** The flow's preconditioner, kept for 'Preconditioner interval' steps (rebuilt
        *  earlier after a grid change, a checkpoint, a change of the step length or when
        *  GMRES needs many more iterations than with a fresh one). */
-      std::unique_ptr<dealii::TrilinosWrappers::PreconditionBase> preconditioner;
-      unsigned int preconditioner_age = 0, fresh_iterations = 0;
-      double       preconditioner_dt = 0.;
+      std::shared_ptr<dealii::TrilinosWrappers::PreconditionBase> preconditioner;
+      /** The ILU's symbolic factorization, kept while the matrix's sparsity stays
+       *  (until the next grid change). */
+      std::shared_ptr<linear_algebra::IncompleteLU> ilu;
+      /** Where the owned cells' entries and values sit in the matrix, the right-hand
+       *  side and the flow's and phase field's ghosted vectors (cleared on grid changes,
+       *  rebuilt by the next assembly). */
+      linear_algebra::CellScatter scatter;
+      linear_algebra::CellGather  flow_gather, phase_gather;
+      unsigned int                preconditioner_age = 0, fresh_iterations = 0;
+      double                      preconditioner_dt = 0.;
     };
   } // namespace fluid
 } // namespace slidewave

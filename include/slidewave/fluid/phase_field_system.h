@@ -4,10 +4,14 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <memory>
 #include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/fluid/navier_stokes_system.h>
 #include <slidewave/grid/finite_element_field.h>
 #include <slidewave/grid/grid_follower.h>
+#include <slidewave/linear_algebra/cell_gather.h>
+#include <slidewave/linear_algebra/cell_scatter.h>
+#include <slidewave/linear_algebra/incomplete_lu.h>
 
 namespace slidewave
 {
@@ -93,8 +97,15 @@ namespace slidewave
       grid::FiniteElementField              &phase;
       const FreeSurfaceParameters           &parameters;
       dealii::TrilinosWrappers::SparseMatrix matrix;
-      VectorType                             rhs, solution, phase_old;
-      double                                 outflow = 0.;
+      /** ILU(0), its symbolic part kept until the next grid change. */
+      std::unique_ptr<linear_algebra::IncompleteLU> ilu;
+      /** Where the owned cells' entries and values sit in the matrix, the right-hand
+       *  side and the phase field's and flow's ghosted vectors (cleared on grid changes,
+       *  rebuilt by the next assembly). */
+      linear_algebra::CellScatter scatter;
+      linear_algebra::CellGather  phase_gather, flow_gather;
+      VectorType                  rhs, solution, phase_old;
+      double                      outflow = 0.;
     };
   } // namespace fluid
 } // namespace slidewave

@@ -4,6 +4,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/fluid/flow_boundaries.h>
+#include <slidewave/fluid/phase_profile.h>
 
 namespace slidewave
 {
@@ -83,7 +84,7 @@ namespace slidewave
     double
     FlowBoundaries::inflow_phase(const double y, const double epsilon) const
     {
-      return 1. / (1. + std::exp(std::clamp(-(inflow_level - y) / epsilon, -700., 700.)));
+      return equilibrium_phase(inflow_level - y, epsilon);
     }
   } // namespace fluid
 } // namespace slidewave

@@ -85,6 +85,15 @@ namespace slidewave
                    core::MemoryEstimate::bytes_per_dof,
                    section + "/Grid/Cell size",
                    to_string(parameters.cell_size));
+      // Where each cell's entries and values sit in the flow's and the phase field's
+      // matrices and vectors (linear_algebra::CellScatter, CellGather): 12^2 + 4^2
+      // positions of 2 bytes and 12 + 4 rows, right-hand side and vector positions of
+      // 4 bytes, each system reading the other's vectors too.
+      estimate.add("grid cells' assembly positions",
+                   nx * ny,
+                   (144. + 16.) * 2. + (12. + 4.) * 4. * 4.,
+                   section + "/Grid/Cell size",
+                   to_string(parameters.cell_size));
       return estimate;
     }
 

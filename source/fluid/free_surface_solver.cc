@@ -8,6 +8,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parsed_expression.h>
 #include <slidewave/fluid/free_surface_solver.h>
+#include <slidewave/fluid/phase_profile.h>
 
 namespace slidewave
 {
@@ -63,7 +64,7 @@ namespace slidewave
               d = std::max(d, dx > 0. || dy > 0. ? -std::sqrt(dx * dx + dy * dy) : inside);
             }
           const double epsilon = parameters.interface_thickness();
-          return 1. / (1. + std::exp(std::clamp(-d / epsilon, -700., 700.)));
+          return equilibrium_phase(d, epsilon);
         }
 
       private:

@@ -18,6 +18,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/fluid/navier_stokes_system.h>
 #include <slidewave/grid/tree_order.h>
+#include <slidewave/linear_algebra/cell_evaluation.h>
 #include <stdexcept>
 
 namespace slidewave
@@ -115,6 +116,7 @@ namespace slidewave
       ilu.reset();
       scatter.clear(); // rebuilt by the next assembly, when every field is current
       flow_gather.clear();
+      vertex_velocity.clear();
       phase_gather.clear();
       flow.reinit_matrix(matrix, flow_constraints);
       rhs.reinit(flow.locally_owned_dofs(), grid.communicator());
@@ -245,26 +247,10 @@ namespace slidewave
         flow_gather.get(cell_number, flow.values(1), dofs_old.data());
         phase_gather.get(cell_number, phase.values(0), phase_dofs_new.data());
         phase_gather.get(cell_number, phase_old, phase_dofs_old.data());
-        std::fill(u_n.begin(), u_n.end(), dealii::Tensor<1, 2>());
-        std::fill(u_old.begin(), u_old.end(), dealii::Tensor<1, 2>());
-        std::fill(grad_u_n.begin(), grad_u_n.end(), dealii::Tensor<2, 2>());
-        std::fill(phi_new.begin(), phi_new.end(), 0.);
-        std::fill(phi_old.begin(), phi_old.end(), 0.);
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          if (component[i] < 2)
-            for (unsigned int q = 0; q < n_q; ++q)
-              {
-                const unsigned int a = component[i];
-                u_n[q][a] += dofs_n[i] * fv.shape_value(i, q);
-                u_old[q][a] += dofs_old[i] * fv.shape_value(i, q);
-                grad_u_n[q][a] += dofs_n[i] * fv.shape_grad(i, q);
-              }
-        for (unsigned int i = 0; i < n_phase_dofs; ++i)
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              phi_new[q] += phase_dofs_new[i] * fv_phase.shape_value(i, q);
-              phi_old[q] += phase_dofs_old[i] * fv_phase.shape_value(i, q);
-            }
+        linear_algebra::evaluate_velocity(fv, component, dofs_n, &u_n, &grad_u_n);
+        linear_algebra::evaluate_velocity(fv, component, dofs_old, &u_old);
+        linear_algebra::evaluate_scalar(fv_phase, phase_dofs_new, &phi_new);
+        linear_algebra::evaluate_scalar(fv_phase, phase_dofs_old, &phi_old);
         // The length of the stabilization parameters: the nodes' spacing.
         const double h = cell->extent_in_direction(0) / degree;
         if (porous.active())
@@ -581,16 +567,31 @@ namespace slidewave
     double
     NavierStokesSystem::max_speed() const
     {
-      double      fastest = 0.;
-      const auto &u       = flow.values(0);
-      for (const auto &cell : flow.dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned())
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const double ux = u[cell->vertex_dof_index(v, 0)];
-              const double uy = u[cell->vertex_dof_index(v, 1)];
-              fastest         = std::max(fastest, std::sqrt(ux * ux + uy * uy));
-            }
+      // The largest nodal speed over the vertices (the velocity's nodes of Q1; the
+      // corners of Q2), read where this rank owns them (every vertex is owned by one rank).
+      const auto &u = flow.locally_owned_values(0);
+      if (vertex_velocity.empty() && u.locally_owned_size() > 0)
+        {
+          const Epetra_BlockMap &map   = u.trilinos_vector().Map();
+          const auto             owned = flow.locally_owned_dofs();
+          std::vector<bool>      seen(owned.n_elements(), false);
+          for (const auto &cell : flow.dof_handler().active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const unsigned int v : cell->vertex_indices())
+                {
+                  const auto ux = cell->vertex_dof_index(v, 0), uy = cell->vertex_dof_index(v, 1);
+                  if (!owned.is_element(ux) || seen[owned.index_within_set(ux)])
+                    continue;
+                  seen[owned.index_within_set(ux)] = true;
+                  using IntType                    = dealii::TrilinosWrappers::types::int_type;
+                  vertex_velocity.push_back(
+                    {{map.LID(static_cast<IntType>(ux)), map.LID(static_cast<IntType>(uy))}});
+                }
+        }
+      const double *values  = u.trilinos_vector()[0];
+      double        fastest = 0.;
+      for (const auto &[x, y] : vertex_velocity)
+        fastest = std::max(fastest, std::sqrt(values[x] * values[x] + values[y] * values[y]));
       return dealii::Utilities::MPI::max(fastest, grid.communicator());
     }
   } // namespace fluid

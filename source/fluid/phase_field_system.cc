@@ -15,6 +15,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/fluid/phase_field_system.h>
 #include <slidewave/grid/tree_order.h>
+#include <slidewave/linear_algebra/cell_evaluation.h>
 #include <stdexcept>
 
 namespace slidewave
@@ -140,28 +141,11 @@ namespace slidewave
         flow_gather.get(cell_number, flow.values(0), flow_dofs_n.data());
         flow_gather.get(cell_number, flow.values(1), flow_dofs_old.data());
         phase_gather.get(cell_number, phase_old, phase_dofs.data());
-        std::fill(u_n.begin(), u_n.end(), dealii::Tensor<1, 2>());
-        std::fill(u_old.begin(), u_old.end(), dealii::Tensor<1, 2>());
-        std::fill(div_n.begin(), div_n.end(), 0.);
-        std::fill(div_old.begin(), div_old.end(), 0.);
-        std::fill(phi_n.begin(), phi_n.end(), 0.);
-        std::fill(grad_phi_n.begin(), grad_phi_n.end(), dealii::Tensor<1, 2>());
-        for (unsigned int i = 0; i < n_flow_dofs; ++i)
-          if (flow_component[i] < 2)
-            for (unsigned int q = 0; q < n_q; ++q)
-              {
-                const unsigned int a = flow_component[i];
-                u_n[q][a] += flow_dofs_n[i] * fv_flow.shape_value(i, q);
-                u_old[q][a] += flow_dofs_old[i] * fv_flow.shape_value(i, q);
-                div_n[q] += flow_dofs_n[i] * fv_flow.shape_grad(i, q)[a];
-                div_old[q] += flow_dofs_old[i] * fv_flow.shape_grad(i, q)[a];
-              }
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              phi_n[q] += phase_dofs[i] * fv.shape_value(i, q);
-              grad_phi_n[q] += phase_dofs[i] * fv.shape_grad(i, q);
-            }
+        linear_algebra::evaluate_velocity(
+          fv_flow, flow_component, flow_dofs_n, &u_n, nullptr, &div_n);
+        linear_algebra::evaluate_velocity(
+          fv_flow, flow_component, flow_dofs_old, &u_old, nullptr, &div_old);
+        linear_algebra::evaluate_scalar(fv, phase_dofs, &phi_n, &grad_phi_n);
         const double h = cell->extent_in_direction(0);
 
         local_matrix = 0.;

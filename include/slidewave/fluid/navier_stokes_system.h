@@ -1,6 +1,7 @@
 #ifndef slidewave_fluid_navier_stokes_system_h
 #define slidewave_fluid_navier_stokes_system_h
 
+#include <array>
 #include <deal.II/base/index_set.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -16,6 +17,7 @@
 #include <slidewave/linear_algebra/cell_gather.h>
 #include <slidewave/linear_algebra/cell_scatter.h>
 #include <slidewave/linear_algebra/incomplete_lu.h>
+#include <vector>
 
 namespace slidewave
 {
@@ -199,8 +201,11 @@ namespace slidewave
        *  rebuilt by the next assembly). */
       linear_algebra::CellScatter scatter;
       linear_algebra::CellGather  flow_gather, phase_gather;
-      unsigned int                preconditioner_age = 0, fresh_iterations = 0;
-      double                      preconditioner_dt = 0.;
+      /** The positions of u_x and u_y of the vertices this rank owns in the owned flow
+       *  vector (max_speed(); cleared on grid changes, rebuilt by the next call). */
+      mutable std::vector<std::array<int, 2>> vertex_velocity;
+      unsigned int                            preconditioner_age = 0, fresh_iterations = 0;
+      double                                  preconditioner_dt = 0.;
     };
   } // namespace fluid
 } // namespace slidewave

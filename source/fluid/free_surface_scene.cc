@@ -204,7 +204,7 @@ namespace slidewave
         throw RunFailure(where + "the largest speed, " + to_string(speed)
                          + " m/s, exceeds 'Guards/Maximum speed' = "
                          + to_string(parameters.max_speed) + " m/s");
-      const double drift = std::abs(volume_drift());
+      const double drift = std::abs(volume_drift(solver->water_volume()));
       if (parameters.max_volume_drift > 0. && drift > parameters.max_volume_drift)
         throw RunFailure(where + "the water volume drifted by " + to_string(100. * drift) + " % of "
                          + to_string(reference_volume())
@@ -241,10 +241,10 @@ namespace slidewave
 
 
     double
-    FreeSurfaceScene::volume_drift() const
+    FreeSurfaceScene::volume_drift(const double volume) const
     {
       // The water balance: what is there, plus what left, minus what was there.
-      return (solver->water_volume() + solver->water_outflow - initial_volume) / reference_volume();
+      return (volume + solver->water_outflow - initial_volume) / reference_volume();
     }
 
 
@@ -294,7 +294,7 @@ namespace slidewave
       statistics.add_value("dt", info.dt);
       statistics.add_value("water_volume", volume);
       statistics.add_value("water_outflow", solver->water_outflow);
-      statistics.add_value("volume_drift", volume_drift());
+      statistics.add_value("volume_drift", volume_drift(volume));
       statistics.add_value("kinetic_energy",
                            diagnostics::kinetic_energy(solver->flow_field(),
                                                        solver->phase_field(),

@@ -111,9 +111,9 @@ namespace slidewave
       double
       reference_volume() const;
 
-      /** (volume + outflow - initial volume) / reference_volume(). */
+      /** (@p volume + outflow - initial volume) / reference_volume(). */
       double
-      volume_drift() const;
+      volume_drift(double volume) const;
 
       const SceneParameters                &scene;
       FreeSurfaceParameters                 parameters;

@@ -14,6 +14,7 @@
 #include <memory>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/grid_follower.h>
+#include <slidewave/linear_algebra/cell_gather.h>
 
 namespace slidewave
 {
@@ -227,9 +228,11 @@ namespace slidewave
       dealii::IndexSet                          owned_dofs, relevant_dofs;
       dealii::AffineConstraints<double>         hanging_node_constraints;
       std::vector<VectorType>                   owned_values, ghosted_values;
-      double                                    gradient_threshold = 0.;
-      unsigned int                              weight_per_dof     = 0;
-      CellWeight                                user_weight;
+      /** Where the owned cells' values sit in the ghosted vectors (integral()). */
+      mutable linear_algebra::CellGather integral_gather;
+      double                             gradient_threshold = 0.;
+      unsigned int                       weight_per_dof     = 0;
+      CellWeight                         user_weight;
       /** The values packed for the next change or checkpoint; alive until they are
        *  taken back, since deal.II calls it when the cells are written or moved. */
       std::unique_ptr<dealii::parallel::distributed::SolutionTransfer<2, VectorType>> transfer;

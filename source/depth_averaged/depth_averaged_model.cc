@@ -238,6 +238,42 @@ namespace slidewave
 
 
 
+    DepthAveragedModel::TranslationErrors
+    DepthAveragedModel::translation_errors(
+      const particles::PointCloud                                         &cloud,
+      const double                                                         initial_area,
+      const double                                                         t,
+      const std::function<dealii::Tensor<1, 2>(const dealii::Point<2> &)> &initial_velocity) const
+    {
+      // Sums: |h_p - h_p0| A_p0, h_p0 A_p0 = V_p; maxima: relative depth error, distance.
+      double sums[2] = {0., 0.}, maxima[2] = {0., 0.};
+      for (const auto &particle : cloud.particles())
+        {
+          const auto             p  = particle.get_properties();
+          const double           h0 = p[property::volume] / initial_area;
+          const dealii::Point<2> x0(p[property::initial_x], p[property::initial_y]);
+          const dealii::Point<2> exact = x0 + t * initial_velocity(x0);
+          const double           e     = std::abs(p[property::depth] - h0);
+          sums[0] += e * initial_area;
+          sums[1] += p[property::volume];
+          maxima[0] = std::max(maxima[0], e / h0);
+          maxima[1] = std::max(maxima[1], particle.get_location().distance(exact));
+        }
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 2),
+                                  MPI_COMM_WORLD,
+                                  dealii::ArrayView<double>(sums, 2));
+      dealii::Utilities::MPI::max(dealii::ArrayView<const double>(maxima, 2),
+                                  MPI_COMM_WORLD,
+                                  dealii::ArrayView<double>(maxima, 2));
+      TranslationErrors errors;
+      errors.depth_l1     = sums[1] > 0. ? sums[0] / sums[1] : 0.;
+      errors.depth_max    = maxima[0];
+      errors.position_max = maxima[1];
+      return errors;
+    }
+
+
+
     std::string
     DepthAveragedModel::find_invalid_particle(const particles::PointCloud &cloud) const
     {

@@ -102,7 +102,7 @@ namespace slidewave
         {
           prm.declare_entry("Exact solution",
                             "none",
-                            Selection("none|still state|dam break|sliding block"),
+                            Selection("none|still state|dam break|sliding block|rigid translation"),
                             "'still state': material at rest with its surface at the "
                             "release's 'Surface' (the lake at rest of paper 001, §4.1): the "
                             "L1 (sum of |e| A_p) and L-infinity errors of h, hu and hv at the "
@@ -118,7 +118,13 @@ namespace slidewave
                             "'sliding block': a slab on the plane Z = -x tan('Slope angle') "
                             "with Coulomb friction: the relative error of its horizontal "
                             "acceleration momentum_x / (M t) against g cos^2 theta "
-                            "(tan theta - tan phi).");
+                            "(tan theta - tan phi). 'rigid translation': every column keeps "
+                            "its release depth and moves at its release velocity (a uniform "
+                            "layer at the still level of a flat bed, doc/depth-averaged.md): "
+                            "the relative L1 error of the columns' depth, "
+                            "sum |h_p - h_p0| A_p0 / sum h_p0 A_p0 (A_p0 their area at the "
+                            "start), its largest relative value and the largest distance of "
+                            "a column from x_p0 + v_p0 t in cell sizes.");
           prm.declare_entry("Slope angle",
                             "0",
                             Double(0., 89.),
@@ -154,7 +160,7 @@ namespace slidewave
                             "If > 0, the run fails (exit status 3) when the error at the end "
                             "exceeds it (still state: L-infinity of h; dam break: the L1 "
                             "error of the depth; sliding block: the relative error of the "
-                            "acceleration).");
+                            "acceleration; rigid translation: the L1 error of the depth).");
         }
         prm.leave_subsection();
       }
@@ -244,10 +250,11 @@ namespace slidewave
       prm.enter_subsection("Verification");
       {
         const std::string type = prm.get("Exact solution");
-        exact_solution         = type == "still state"   ? ExactSolution::still_state :
-                                 type == "dam break"     ? ExactSolution::dam_break :
-                                 type == "sliding block" ? ExactSolution::sliding_block :
-                                                           ExactSolution::none;
+        exact_solution         = type == "still state"       ? ExactSolution::still_state :
+                                 type == "dam break"         ? ExactSolution::dam_break :
+                                 type == "sliding block"     ? ExactSolution::sliding_block :
+                                 type == "rigid translation" ? ExactSolution::rigid_translation :
+                                                               ExactSolution::none;
         slope_angle            = prm.get_double("Slope angle") * M_PI / 180.;
         dam_position           = prm.get_double("Dam position");
         left_depth             = prm.get_double("Left depth");

@@ -105,6 +105,48 @@ namespace slidewave
 
 
 
+    std::array<double, 2>
+    DepthAveragedScene::dry_front(const double time) const
+    {
+      const double                  threshold = 0.01 * left_depth;
+      const double                  t         = time - scene.start_time;
+      const water::DamBreakSolution ritter(left_depth, 0., dam_position, parameters.gravity);
+      const InclinedPlaneSolutions  slope(slope_angle,
+                                         parameters.friction ? parameters.friction_angle : 0.,
+                                         parameters.gravity,
+                                         left_depth,
+                                         dam_position);
+      const bool                    on_slope = slope_angle > 0.;
+      const auto                    exact    = [&](const double x) {
+        double h, u;
+        if (on_slope)
+          slope.dam_break(x, t, h, u);
+        else
+          ritter.evaluate(x, t, h, u);
+        return h;
+      };
+      // The exact depth falls to 0 at the tip: bisection between the dam and the tip.
+      double below = dam_position,
+             above = on_slope ? slope.front(t) :
+                                dam_position + 2. * std::sqrt(parameters.gravity * left_depth) * t;
+      for (unsigned int k = 0; k < 100 && above - below > 1e-12 * (1. + std::abs(above)); ++k)
+        {
+          const double middle                         = 0.5 * (below + above);
+          (exact(middle) > threshold ? below : above) = middle;
+        }
+      const auto  depth = solver->nodal_depth();
+      const auto &dofs  = solver->dof_handler();
+      double      front = -std::numeric_limits<double>::max();
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            if (depth[cell->vertex_dof_index(v, 0)] > threshold)
+              front = std::max(front, cell->vertex(v)[0]);
+      return {{dealii::Utilities::MPI::max(front, MPI_COMM_WORLD), below}};
+    }
+
+
+
     double
     DepthAveragedScene::sliding_block_error(const double time) const
     {
@@ -117,6 +159,22 @@ namespace slidewave
       const auto                   integrals    = solver->model().integrals(solver->point_cloud());
       const double                 acceleration = exact.horizontal_acceleration();
       return std::abs(integrals.momentum_x / (integrals.mass * t) - acceleration) / acceleration;
+    }
+
+
+
+    DepthAveragedModel::TranslationErrors
+    DepthAveragedScene::translation_errors(const double time) const
+    {
+      // The columns were made n x n per cell of the uniform grid: that is their area.
+      const double n    = parameters.particles_per_direction;
+      const double area = parameters.cell_size * parameters.cell_size / (n * n);
+      return solver->model().translation_errors(solver->point_cloud(),
+                                                area,
+                                                time - scene.start_time,
+                                                [this](const dealii::Point<2> &x) {
+                                                  return solver->release_area().velocity(x);
+                                                });
     }
 
 
@@ -184,6 +242,13 @@ namespace slidewave
         }
       if (exact_solution == ExactSolution::sliding_block)
         statistics.add_value("acceleration_error", sliding_block_error(info.time));
+      if (exact_solution == ExactSolution::rigid_translation)
+        {
+          const auto errors = translation_errors(info.time);
+          statistics.add_value("depth_error_l1", errors.depth_l1);
+          statistics.add_value("depth_error_max", errors.depth_max);
+          statistics.add_value("position_error", errors.position_max / parameters.cell_size);
+        }
     }
 
 
@@ -310,6 +375,18 @@ namespace slidewave
                         t,
                         max_error);
         }
+      if (exact_solution == ExactSolution::dam_break && !(right_depth > 0.))
+        {
+          const auto front = dry_front(info.time);
+          if (is_writer)
+            std::printf("Front (the last node deeper than 1 %% of the left depth) x = %.4f m, "
+                        "exact %.4f m: error %.4f m, %.2f %% of the %.4f m travelled\n",
+                        front[0],
+                        front[1],
+                        front[0] - front[1],
+                        100. * (front[0] - front[1]) / (front[1] - dam_position),
+                        front[1] - dam_position);
+        }
       if (exact_solution == ExactSolution::sliding_block)
         {
           const auto   integrals = solver->model().integrals(solver->point_cloud());
@@ -328,6 +405,19 @@ namespace slidewave
                         integrals.momentum_x / (integrals.mass * t),
                         exact,
                         max_error);
+        }
+      if (exact_solution == ExactSolution::rigid_translation)
+        {
+          const auto errors = translation_errors(info.time);
+          max_error         = errors.depth_l1;
+          if (is_writer)
+            std::printf("Rigid translation at t = %g s: relative L1 error of the columns' "
+                        "depth = %.4e (largest %.4e of the depth); largest distance from "
+                        "x_p0 + v_p0 t = %.4e cell sizes\n",
+                        t,
+                        errors.depth_l1,
+                        errors.depth_max,
+                        errors.position_max / parameters.cell_size);
         }
       bool conserved = true;
       if (check_conservation && conservation_tolerance > 0.)

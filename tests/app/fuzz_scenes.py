@@ -13,7 +13,9 @@ test tries the same mutants, and runs each mutant twice:
 
 Anything else fails the test: a signal (a crash), another exit status, a stack trace or an
 uncaught-exception text on the error stream, or a run that does not finish within its time
-limit (a hang). Mutations: a number scaled by 1e-3 ... 1e3 or negated, a value replaced by a hostile one (negative, zero, huge, tiny,
+limit without progress (a hang). A run still stepping at the limit (its progress lines
+"step N t = ..." advancing: a mutant that only made the scene large, e.g. cells 10 times
+smaller under a viscous time step) is stopped there and counted as "slow", not failed. Mutations: a number scaled by 1e-3 ... 1e3 or negated, a value replaced by a hostile one (negative, zero, huge, tiny,
 nan, inf, text, empty, a list), a line deleted or duplicated, an 'end' dropped, a parameter
 name misspelt, the file truncated, a subsection renamed, a line of garbage inserted.
 
@@ -97,8 +99,19 @@ def run(command, timeout):
         result = subprocess.run(command, capture_output=True, text=True, timeout=timeout,
                                 errors="replace")
         return result.returncode, result.stdout, result.stderr
-    except subprocess.TimeoutExpired:
-        return None, "", ""
+    except subprocess.TimeoutExpired as timeout_expired:
+        # What the program printed before it was stopped (its progress lines).
+        out = timeout_expired.stdout or ""
+        if isinstance(out, bytes):
+            out = out.decode(errors="replace")
+        return None, out, ""
+
+
+def still_stepping(out):
+    """True when the progress lines of a run stopped at its time limit show its step count
+    advancing: a slow run, not a hang."""
+    steps = [int(s) for s in re.findall(r"^step\s+(\d+)\s+t = ", out, re.MULTILINE)]
+    return len(set(steps)) >= 2 and steps == sorted(steps)
 
 
 def main():
@@ -149,7 +162,9 @@ def main():
             if physics:
                 command += ["--set", "Time/End time=" + SHORT_END_TIME[physics]]
             status, out, err = run(command + [mutant], args.timeout)
-            if status is None:
+            if status is None and still_stepping(out):
+                status = "slow"
+            elif status is None:
                 problem = "the run did not finish within %g s" % args.timeout
             elif BAD_TEXT.search(err):
                 problem = "the run printed a crash text: %s" % err.strip()[:300]
@@ -159,7 +174,8 @@ def main():
                 problem = "run exit 2 without a diagnostic: %s" % err.strip()[:300]
             elif status not in (0, 1, 2):
                 problem = "run exit status %d: %s" % (status, err.strip()[:300])
-            outcome = {0: "ran", 1: "refused at setup", 2: "stopped"}.get(status, "?")
+            outcome = {0: "ran", 1: "refused at setup", 2: "stopped",
+                       "slow": "slow (still stepping at the limit)"}.get(status, "?")
         outcomes[outcome] = outcomes.get(outcome, 0) + 1
         print("%3d %-16s %s" % (n, outcome if problem is None else "FAILED", label))
         if problem:

@@ -67,7 +67,10 @@ main(int argc, char **argv)
   }
   std::ostringstream input;
   input.precision(12);
+  // The options of the test's blessed output (the defaults before issue 28).
   input << "subsection Depth averaged\n"
+        << "  set Shape functions = q1\n"
+        << "  set Depth update = strain\n"
         << "  subsection Grid\n"
         << "    set Lower left = " << x0 << ", " << y0 << "\n"
         << "    set Upper right = " << x0 + 60. << ", " << y0 + 10. << "\n"
@@ -86,6 +89,7 @@ main(int argc, char **argv)
         << "    set Rectangle = " << x0 + 5. << ", " << y0 << ", " << x0 + 15. << ", " << y0 + 10.
         << "\n"
         << "    set Depth = 1\n"
+        << "    set Particles per direction = 2\n"
         << "  end\n"
         << "end\n";
   const auto parameters = depth_averaged_parameters(input.str());

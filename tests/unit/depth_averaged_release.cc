@@ -74,6 +74,8 @@ namespace
   {
     const auto parameters
       = depth_averaged_parameters("subsection Depth averaged\n"
+                                  "  set Shape functions = q1\n"
+                                  "  set Depth update = strain\n"
                                   "  subsection Grid\n"
                                   "    set Lower left = 500000, 4000000\n"
                                   "    set Upper right = 500200, 4000200\n"
@@ -86,6 +88,7 @@ namespace
                                   "  subsection Release\n"
                                   "    set Shape = rectangle\n"
                                   "    set Rectangle = 500050, 4000050, 500150, 4000150\n"
+                                  "    set Particles per direction = 2\n"
                                   "    set Depth raster = "
                                   + depth_raster
                                   + "\n"

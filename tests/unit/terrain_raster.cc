@@ -61,7 +61,10 @@ namespace
   depth_averaged::DepthAveragedModel::Integrals
   slab_run(const std::string &terrain)
   {
+    // The options of the test's blessed output (the defaults before issue 28).
     const auto parameters = depth_averaged_parameters("subsection Depth averaged\n"
+                                                      "  set Shape functions = q1\n"
+                                                      "  set Depth update = strain\n"
                                                       "  subsection Grid\n"
                                                       "    set Upper right = 40, 4\n"
                                                       "    set Cell size = 0.5\n"
@@ -77,6 +80,7 @@ namespace
                                                         "    set Shape = rectangle\n"
                                                         "    set Rectangle = 5, 0, 15, 4\n"
                                                         "    set Depth = 1\n"
+                                                        "    set Particles per direction = 2\n"
                                                         "  end\n"
                                                         "end\n");
     auto       grid       = depth_averaged::DepthAveragedSolver::make_grid(parameters);

@@ -50,7 +50,10 @@ namespace
   std::string
   scene_text(const std::string &grid, const std::string &release)
   {
+    // The options of the test's blessed output (the defaults before issue 28).
     return "subsection Depth averaged\n"
+           "  set Shape functions = q1\n"
+           "  set Depth update = strain\n"
            "  subsection Grid\n"
            + grid
            + "  end\n"
@@ -61,6 +64,7 @@ namespace
              "  subsection Release\n"
              "    set Shape = rectangle\n"
              "    set Rectangle = 499500, 5038500, 500500, 5039500\n"
+             "    set Particles per direction = 2\n"
            + release
            + "  end\n"
              "end\n";

@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/particles/particle_handler.h>
+#include <functional>
 #include <memory>
 #include <slidewave/depth_averaged/depth_averaged_parameters.h>
 #include <slidewave/engine/particle_model_defaults.h>
@@ -341,6 +342,23 @@ namespace slidewave
       StillStateErrors
       still_state_errors(const particles::PointCloud                           &cloud,
                          const std::function<double(const dealii::Point<2> &)> &exact_depth) const;
+
+      /** The columns against a rigid translation (collective): the relative L1 error of
+       *  their depth, sum_p |h_p - h_p0| A_p0 / sum_p h_p0 A_p0, with h_p0 = V_p / A_p0 the
+       *  depth at the start (A_p0 = @p initial_area, a cell's area over the columns per
+       *  cell); the largest |h_p - h_p0| / h_p0; and the largest distance of a column
+       *  from x_p0 + v_p0 t, v_p0 = @p initial_velocity(x_p0). */
+      struct TranslationErrors
+      {
+        double depth_l1 = 0., depth_max = 0., position_max = 0.;
+      };
+
+      TranslationErrors
+      translation_errors(const particles::PointCloud &cloud,
+                         double                       initial_area,
+                         double                       t,
+                         const std::function<dealii::Tensor<1, 2>(const dealii::Point<2> &)>
+                           &initial_velocity) const;
 
       /**
        * A description of the first point with a non-finite state or a depth that is not

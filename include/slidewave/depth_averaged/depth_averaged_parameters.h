@@ -117,13 +117,13 @@ namespace slidewave
        *  depth (resolved by the scene) or the vector file's field holding each polygon's
        *  depth. */
       std::string  depth, surface, depth_raster, depth_attribute;
-      unsigned int particles_per_direction = 2;
+      unsigned int particles_per_direction = 4;
       /** 'Depth' is a thickness normal to the slope: h = T sqrt(1 + |grad Z|^2). */
       bool depth_normal_to_slope = false;
 
       /** @name Numerics */
-      DepthUpdate         depth_update   = DepthUpdate::strain;
-      grid::ShapeFunction shape_function = grid::ShapeFunction::q1;
+      DepthUpdate         depth_update   = DepthUpdate::projection;
+      grid::ShapeFunction shape_function = grid::ShapeFunction::gimp;
       /** 0: PIC (Eq. 33), 1: FLIP (Eq. 34), between: a blend. */
       double flip_fraction = 0.;
       /** C of Eq. 22, with the wave speed |v| + sqrt(g h). */

@@ -103,9 +103,10 @@ namespace slidewave
       enum class ExactSolution
       {
         none,
-        still_state,  ///< material at rest at the release's surface
-        dam_break,    ///< Ritter's or Stoker's dam break along x, or Mangeney's on a slope
-        sliding_block ///< a slab sliding down a plane with Coulomb friction
+        still_state,      ///< material at rest at the release's surface
+        dam_break,        ///< Ritter's or Stoker's dam break along x, or Mangeney's on a slope
+        sliding_block,    ///< a slab sliding down a plane with Coulomb friction
+        rigid_translation ///< every column keeps its depth and its initial velocity
       };
 
       void
@@ -125,10 +126,21 @@ namespace slidewave
       std::array<double, 2>
       dam_break_errors(double time) const;
 
+      /** The dry-bed dam break's front (Ritter, or on a slope): the largest x of a node
+       *  whose depth exceeds 1 % of 'Left depth', and the same point of the exact
+       *  solution (collective). */
+      std::array<double, 2>
+      dry_front(double time) const;
+
       /** The sliding block: |momentum_x / (M t) - a| / a, a the exact horizontal
        *  acceleration (0 at t = 0). */
       double
       sliding_block_error(double time) const;
+
+      /** The rigid translation: the columns' depth against their depth at the start and
+       *  their positions against x_p0 + v_p0 t (DepthAveragedModel::translation_errors). */
+      DepthAveragedModel::TranslationErrors
+      translation_errors(double time) const;
 
       /** The nodal totals against the points': relative errors of mass and momentum. */
       std::array<double, 2>

@@ -42,11 +42,13 @@ namespace slidewave
      *
      *   Forchheimer / Darcy = n ρ^f F sqrt(k) |w| / μ^f,
      *
-     * proportional to a pore Reynolds number; with Ergun's permeability
-     * (constant 150 instead of 180) it is 1.75 Re_p / (150 (1 - n)) for the
-     * particle Reynolds number Re_p = ρ^f |w| D50 / μ^f, so the drag is
-     * Ergun's equation written with the interstitial velocity. The water
-     * feels -P̂.
+     * which with k(n) above is 1.75 n Re_p / (sqrt(150 180) (1 - n)) for the
+     * particle Reynolds number Re_p = ρ^f |w| D50 / μ^f: the Forchheimer
+     * term matters from Re_p of order 10 on and vanishes at low Re_p
+     * (Darcy). With Ergun's permeability (constant 150 instead of 180) the
+     * ratio is Ergun's 1.75 ρ^f U D50 / (150 μ^f (1 - n)) of the superficial
+     * velocity U = n |w|, i.e. the law is Ergun's equation times n. The
+     * water feels -P̂.
      *
      * Refused with an InputError that says what is allowed: D50 <= 0,
      * ρ^f <= 0, μ^f <= 0, a porosity outside 0 < n <= 1, a permeability

@@ -52,7 +52,8 @@ namespace slidewave
      * Hencky hyperelasticity, multiplicative split of the deformation
      * gradient, Drucker–Prager yield with a non-associated flow rule, return
      * mapping in principal logarithmic strains (Simo 1992; de Souza Neto,
-     * Perić & Owen, "Computational methods for plasticity", 2008, ch. 14).
+     * Perić & Owen, "Computational methods for plasticity", 2008, chapters on
+     * Drucker–Prager return mapping and finite-strain elastoplasticity).
      * Tension is positive; stresses in Pa.
      *
      * Equation numbers are those of paper 002, reconstructed from its text
@@ -117,8 +118,10 @@ namespace slidewave
      * Apex: when the cone return would give sqrt(J2) < 0 (only possible for
      * φ > 0, under tension beyond the apex), the state goes to the apex,
      * p = c cot φ and s = 0, the plastic strain being ε_trial - ε of that
-     * state (de Souza Neto et al., §8.3.4). With φ = 0 the cone is a cylinder
-     * without apex (von Mises, sqrt(J2) = c).
+     * state, as de Souza Neto et al. return to the Drucker–Prager apex. The
+     * cone return overshoots exactly when p_trial > c cot φ and
+     * 9 K α_φ α_ψ sqrt(J2_trial) < G (3 α_φ p_trial - k_c). With φ = 0 the
+     * cone is a cylinder without apex (von Mises, sqrt(J2) = c).
      *
      * Update: ε_A = p / (3K) + s_A / (2G) from the returned τ, and
      * b^e_{n+1} = Σ_A exp(2 ε_A) n_A ⊗ n_A with the trial eigenvectors n_A.

@@ -412,6 +412,34 @@ namespace
 
 
   void
+  cylinder_return()
+  {
+    std::printf("\n* (c) phi = 0: the cone is the cylinder sqrt(J2) = c, no apex (1 %% "
+                "stretch, 10 %% shear)\n");
+    const HenckyDruckerPrager clay(E, nu, 0., c, 0.);
+    const Tensor<2, 3>        f       = matrix({1.01, 0.1, 0., 0., 1.01, 0., 0., 0., 1.});
+    SymmetricTensor<2, 3>     b       = dealii::unit_symmetric_tensor<3>();
+    const double              p_trial = mean(clay.kirchhoff_stress(left_cauchy_green(f)));
+    const HenckyStep          r       = step(clay, b, f, dealii::determinant(f));
+    std::printf("region %s  p: %.6f -> %.6f  sqrt(J2) = %.6f\n",
+                region_name(r.region),
+                p_trial,
+                mean(r.kirchhoff_stress),
+                root_j2(r.kirchhoff_stress));
+    verdict("  region is not the cone (1) or is (0)",
+            r.region == HenckyReturn::cone ? 0. : 1.,
+            0.,
+            "a yes/no check");
+    verdict("  sqrt(J2) / c - 1", root_j2(r.kirchhoff_stress) / c - 1., 1e-13, "rounding");
+    verdict("  p / p_trial - 1 (no plastic volume change)",
+            mean(r.kirchhoff_stress) / p_trial - 1.,
+            1e-13,
+            "rounding");
+  }
+
+
+
+  void
   apex_return()
   {
     std::printf("\n* (d) Apex return under tension (c cot phi = %.6f Pa)\n",
@@ -539,6 +567,7 @@ main()
   small_strains();
   rigid_rotation();
   plastic_loading();
+  cylinder_return();
   apex_return();
   path_independence();
   return unit_check::finish();

@@ -85,9 +85,11 @@ namespace slidewave
      *
      *   f = 3 α_φ p + sqrt(J2) - k_c,   g = 3 α_ψ p + sqrt(J2).
      *
-     * The paper writes f = sqrt(J2) + η p - ξ c (with pressure positive in
-     * compression) and defines η, ξ from the friction angle, which its text
-     * calls ψ; the formulas of Eq. 18 are lost. We use the plane-strain match
+     * The formulas of Eqs. 17 and 18 are lost from the paper's text; its
+     * words (a cohesion c, material constants η, ξ defined from the friction
+     * angle, which the text calls ψ, and a potential made by dropping the
+     * second and third terms of Eq. 17) fit the usual form
+     * f = sqrt(J2) + η p - ξ c with pressure positive in compression. We use the plane-strain match
      * to Mohr–Coulomb of the existing small-strain DruckerPrager (paper 000,
      * Bui et al. 2008): α_φ = tan φ / sqrt(9 + 12 tan^2 φ),
      * k_c = 3 c / sqrt(9 + 12 tan^2 φ), α_ψ likewise from the dilatancy angle

@@ -116,3 +116,25 @@ def interleaved_pairs(run, pairs):
         if len(results) == 2:
             done.append((pair, "-".join(order), results))
     return done, failed
+
+
+def add_orders(rows):
+    """Observed order of convergence of each row (a dict with "problem", "line",
+    "cell_size", "error", "status") against the next coarser cell size of its line, in
+    row["order"] (None where either run failed or has no positive error)."""
+    import math
+    groups = {}
+    for row in rows:
+        groups.setdefault((row["problem"], row["line"]), []).append(row)
+    for group in groups.values():
+        group.sort(key=lambda r: -r["cell_size"])
+        previous = None
+        for row in group:
+            row["order"] = None
+            if (previous and previous.get("error") and row.get("error")
+                    and row["status"] == "ok" and previous["status"] == "ok"
+                    and previous["error"] > 0 and row["error"] > 0):
+                row["order"] = (math.log(previous["error"] / row["error"])
+                                / math.log(previous["cell_size"] / row["cell_size"]))
+            previous = row
+

@@ -38,7 +38,6 @@ Usage:
 
 import argparse
 import itertools
-import math
 import os
 import re
 import shutil
@@ -49,7 +48,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from benchmark_common import (cpu_busy_seconds, find_executable, fmt,  # noqa: E402
+from benchmark_common import (add_orders, cpu_busy_seconds, find_executable, fmt,  # noqa: E402
                               wait_until_idle, write_csv)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -160,24 +159,6 @@ def run_slidewave(exe, problem, line, cell_size):
     finally:
         shutil.rmtree(workdir, ignore_errors=True)
     return r
-
-
-def add_orders(rows):
-    """Observed order of each row against the next coarser cell size of its line."""
-    groups = {}
-    for row in rows:
-        groups.setdefault((row["problem"], row["line"]), []).append(row)
-    for group in groups.values():
-        group.sort(key=lambda r: -r["cell_size"])
-        previous = None
-        for row in group:
-            row["order"] = None
-            if (previous and previous.get("error") and row.get("error")
-                    and row["status"] == "ok" and previous["status"] == "ok"
-                    and previous["error"] > 0 and row["error"] > 0):
-                row["order"] = (math.log(previous["error"] / row["error"])
-                                / math.log(previous["cell_size"] / row["cell_size"]))
-            previous = row
 
 
 def markdown(rows):

@@ -71,7 +71,6 @@ Usage:
 import argparse
 import csv
 import itertools
-import math
 import os
 import re
 import resource
@@ -83,7 +82,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from benchmark_common import (cpu_busy_seconds, find_executable, fmt,  # noqa: E402
+from benchmark_common import (add_orders, cpu_busy_seconds, find_executable, fmt,  # noqa: E402
                               retry_once, wait_until_idle, write_csv)
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -227,23 +226,6 @@ def row_line(row):
     if row["status"] != "ok":
         line += f"  {row['status']}"
     return line
-
-
-def add_orders(rows):
-    """Observed order of each row against the next coarser cell size of its line."""
-    groups = {}
-    for row in rows:
-        groups.setdefault((row["problem"], row["line"]), []).append(row)
-    for group in groups.values():
-        group.sort(key=lambda r: -r["cell_size"])
-        previous = None
-        for row in group:
-            row["order"] = None
-            if (previous and previous["error"] and row["error"]
-                    and row["status"] == "ok" and previous["status"] == "ok"):
-                row["order"] = (math.log(previous["error"] / row["error"])
-                                / math.log(previous["cell_size"] / row["cell_size"]))
-            previous = row
 
 
 def markdown(rows):

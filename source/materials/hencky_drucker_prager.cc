@@ -56,14 +56,15 @@ namespace slidewave
                                              const double friction_angle_degrees,
                                              const double cohesion,
                                              const double dilatancy_angle_degrees)
-      : elastic(youngs_modulus, poisson_ratio)
-      , friction_coefficient(DruckerPrager::plane_strain_coefficient(friction_angle_degrees))
-      , dilatancy_coefficient(DruckerPrager::plane_strain_coefficient(dilatancy_angle_degrees))
-      // The same fit as DruckerPrager: k_c = 3 c / sqrt(9 + 12 tan^2 φ), taken from the
-      // small-strain model itself so that the two cannot drift apart.
-      , cohesion_term(
-          DruckerPrager(youngs_modulus, poisson_ratio, friction_angle_degrees, cohesion, 0., 0.)
-            .k_c())
+      // The cone of the small-strain model itself (its plane-strain fit to Mohr-Coulomb,
+      // k_c = 3 c / sqrt(9 + 12 tan^2 phi)), so that the two cannot drift apart; no
+      // tension cutoff (paper 002 has none).
+      : cone(youngs_modulus,
+             poisson_ratio,
+             friction_angle_degrees,
+             cohesion,
+             dilatancy_angle_degrees,
+             0.)
     {
     }
 
@@ -89,8 +90,11 @@ namespace slidewave
         f * static_cast<dealii::Tensor<2, 3>>(elastic_left_cauchy_green) * dealii::transpose(f));
       const auto axes = spectral_decomposition(b_trial);
 
-      const double K = elastic.bulk_modulus();
-      const double G = elastic.shear_modulus();
+      const double K                     = cone.elasticity().bulk_modulus();
+      const double G                     = cone.elasticity().shear_modulus();
+      const double friction_coefficient  = cone.alpha_phi();
+      const double dilatancy_coefficient = cone.alpha_psi();
+      const double cohesion_term         = cone.k_c();
 
       // Principal logarithmic strains and the Hencky stress (Eq. 16).
       Principal eps_trial;
@@ -172,7 +176,7 @@ namespace slidewave
       const dealii::SymmetricTensor<2, 3> &elastic_left_cauchy_green) const
     {
       const dealii::SymmetricTensor<2, 3> eps = logarithmic_strain(elastic_left_cauchy_green);
-      return elastic.stress_increment(eps);
+      return cone.elasticity().stress_increment(eps);
     }
 
 
@@ -181,8 +185,8 @@ namespace slidewave
     HenckyDruckerPrager::yield_function(const dealii::SymmetricTensor<2, 3> &kirchhoff_stress) const
     {
       const dealii::SymmetricTensor<2, 3> s = dealii::deviator(kirchhoff_stress);
-      return friction_coefficient * dealii::trace(kirchhoff_stress) + std::sqrt(0.5 * (s * s))
-             - cohesion_term;
+      return cone.alpha_phi() * dealii::trace(kirchhoff_stress) + std::sqrt(0.5 * (s * s))
+             - cone.k_c();
     }
 
 
@@ -199,44 +203,5 @@ namespace slidewave
 
 
 
-    double
-    HenckyDruckerPrager::alpha_phi() const
-    {
-      return friction_coefficient;
-    }
-
-
-
-    double
-    HenckyDruckerPrager::alpha_psi() const
-    {
-      return dilatancy_coefficient;
-    }
-
-
-
-    double
-    HenckyDruckerPrager::k_c() const
-    {
-      return cohesion_term;
-    }
-
-
-
-    double
-    HenckyDruckerPrager::apex_mean_stress() const
-    {
-      if (friction_coefficient > 0.)
-        return cohesion_term / (3. * friction_coefficient);
-      return std::numeric_limits<double>::infinity();
-    }
-
-
-
-    const LinearElastic &
-    HenckyDruckerPrager::elasticity() const
-    {
-      return elastic;
-    }
   } // namespace materials
 } // namespace slidewave

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
+#include <slidewave/materials/drucker_prager.h>
 #include <slidewave/materials/linear_elastic.h>
 
 namespace slidewave
@@ -183,29 +184,43 @@ namespace slidewave
 
       /** The friction coefficient α_φ (dimensionless). */
       double
-      alpha_phi() const;
+      alpha_phi() const
+      {
+        return cone.alpha_phi();
+      }
 
       /** The dilatancy coefficient α_ψ (dimensionless). */
       double
-      alpha_psi() const;
+      alpha_psi() const
+      {
+        return cone.alpha_psi();
+      }
 
       /** The cohesion term k_c [Pa]. */
       double
-      k_c() const;
+      k_c() const
+      {
+        return cone.k_c();
+      }
 
       /** The mean stress of the apex, c cot φ [Pa]; +infinity for φ = 0. */
       double
-      apex_mean_stress() const;
+      apex_mean_stress() const
+      {
+        return cone.apex_mean_stress();
+      }
 
       /** The elastic moduli (K, G, λ) of the Hencky energy. */
       const LinearElastic &
-      elasticity() const;
+      elasticity() const
+      {
+        return cone.elasticity();
+      }
 
     private:
-      LinearElastic elastic;
-      double        friction_coefficient;
-      double        dilatancy_coefficient;
-      double        cohesion_term;
+      /** The small-strain model's cone and elasticity: its coefficients α_φ, α_ψ, k_c
+       *  and moduli are this model's (its return mapping is not used). */
+      DruckerPrager cone;
     };
   } // namespace materials
 } // namespace slidewave

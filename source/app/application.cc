@@ -16,6 +16,7 @@
 #include <slidewave/coupling/coupled_scene.h>
 #include <slidewave/depth_averaged/depth_averaged_scene.h>
 #include <slidewave/fluid/free_surface_scene.h>
+#include <slidewave/granular/granular_water_scene.h>
 #include <slidewave/soil/material_point_scene.h>
 #include <slidewave/water/water_scene.h>
 #include <sstream>
@@ -341,6 +342,9 @@ namespace slidewave
               scene, prm, validate_only, input_file, out);
           case Physics::free_surface_flow:
             return run_scene<fluid::FreeSurfaceScene>(scene, prm, validate_only, input_file, out);
+          case Physics::granular_water:
+            return run_scene<granular::GranularWaterScene>(
+              scene, prm, validate_only, input_file, out);
           case Physics::none:
             break;
         }
@@ -431,6 +435,7 @@ namespace slidewave
     coupling::CoupledScene::declare_parameters(prm);
     depth_averaged::DepthAveragedScene::declare_parameters(prm);
     fluid::FreeSurfaceScene::declare_parameters(prm);
+    granular::GranularWaterScene::declare_parameters(prm);
   }
 
 

@@ -104,7 +104,8 @@ namespace slidewave
     prm.declare_entry(
       "Physics",
       "none",
-      Selection("none|shallow water|material points|coupled|depth averaged|free surface flow"),
+      Selection(
+        "none|shallow water|material points|coupled|depth averaged|free surface flow|granular water"),
       "The physics this scene switches on. 'shallow water': the 1D "
       "well-balanced finite-volume water column of paper 000 (subsection "
       "'Shallow water'). 'material points': the 2D plane-strain material "
@@ -116,7 +117,10 @@ namespace slidewave
       "a terrain of paper 001 (subsection 'Depth averaged'). 'free surface "
       "flow': water and air by stabilized finite elements with a phase-field "
       "surface on the background grid, paper 002's fluid (subsection 'Free "
-      "surface flow'). A scene must choose one.");
+      "surface flow'). 'granular water': a saturated or dry granular skeleton of material "
+      "points in that flow, on the same grid, the two-phase MPM-FEM of paper 002 "
+      "(subsections 'Material points', 'Free surface flow' and 'Granular water'). A scene "
+      "must choose one.");
     prm.declare_entry("Output directory",
                       "",
                       dealii::Patterns::Anything(),
@@ -156,11 +160,14 @@ namespace slidewave
       physics = Physics::depth_averaged;
     else if (physics_name == "free surface flow")
       physics = Physics::free_surface_flow;
+    else if (physics_name == "granular water")
+      physics = Physics::granular_water;
     else
       throw InputError("Physics",
                        physics_name,
                        "one of 'shallow water', 'material points', 'coupled', 'depth "
-                       "averaged', 'free surface flow' (a scene must choose its physics)");
+                       "averaged', 'free surface flow', 'granular water' (a scene must choose its "
+                       "physics)");
 
     scene_directory  = std::filesystem::path(input_file).parent_path().string();
     output_directory = prm.get("Output directory");

@@ -124,7 +124,14 @@ namespace slidewave
     FreeSurfaceSolver::set_initial_state()
     {
       phase.interpolate(InitialPhase(parameters));
-      if (fluid_fraction)
+      if (solid_velocity)
+        {
+          // No solid until its physics hands its fields over (before every step).
+          fluid_fraction->interpolate(dealii::Functions::ConstantFunction<2>(1.));
+          inverse_permeability->interpolate(dealii::Functions::ZeroFunction<2>());
+          solid_velocity->interpolate(dealii::Functions::ZeroFunction<2>(2));
+        }
+      else if (fluid_fraction)
         {
           // n in (0, 1] and kappa > 0 everywhere: values outside are refused, naming a
           // point where they occur.
@@ -168,6 +175,34 @@ namespace slidewave
           flow.interpolate(velocity, s);
           flow_system.impose_boundary_values(s, time);
         }
+    }
+
+
+
+    void
+    FreeSurfaceSolver::enable_moving_solid()
+    {
+      fluid_fraction       = std::make_unique<grid::FiniteElementField>(grid);
+      inverse_permeability = std::make_unique<grid::FiniteElementField>(grid);
+      solid_velocity       = std::make_unique<grid::FiniteElementField>(
+        grid, dealii::FESystem<2>(dealii::FE_Q<2>(1), 2), 1);
+      PorousMedium medium;
+      medium.fluid_fraction       = fluid_fraction.get();
+      medium.inverse_permeability = inverse_permeability.get();
+      medium.solid_velocity       = solid_velocity.get();
+      flow_system.set_porous_medium(medium);
+    }
+
+
+
+    void
+    FreeSurfaceSolver::initialize(const double start_time)
+    {
+      time = start_time;
+      set_initial_state();
+      last_dt       = 0.;
+      n_steps       = 0;
+      water_outflow = 0.;
     }
 
 
@@ -246,7 +281,9 @@ namespace slidewave
     FluidStepReport
     FreeSurfaceSolver::advance(const double dt)
     {
-      grid.change_if_due(n_steps);
+      // A moving solid's physics drives the grid's changes (between its steps).
+      if (!solid_velocity)
+        grid.change_if_due(n_steps);
       FluidStepReport   report;
       const StepLengths lengths{dt, last_dt};
       report.gamma = profile_velocity();

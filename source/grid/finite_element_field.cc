@@ -152,6 +152,41 @@ namespace slidewave
 
 
 
+    void
+    FiniteElementField::copy_from_grid_nodes(
+      const std::vector<const dealii::LinearAlgebra::distributed::Vector<double> *> &nodal)
+    {
+      Assert(fe->degree == 1 && nodal.size() == fe->n_components(),
+             dealii::ExcMessage("copy_from_grid_nodes() takes a Q1 field and a vector per "
+                                "component"));
+      const dealii::DoFHandler<2>                 &grid_dofs = grid.dof_handler();
+      std::vector<dealii::types::global_dof_index> field_indices(fe->n_dofs_per_cell());
+      std::vector<dealii::types::global_dof_index> grid_indices(
+        grid_dofs.get_fe().n_dofs_per_cell());
+      VectorType &owned = owned_values[0];
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(field_indices);
+            const dealii::DoFHandler<2>::active_cell_iterator grid_cell(&grid.triangulation(),
+                                                                        cell->level(),
+                                                                        cell->index(),
+                                                                        &grid_dofs);
+            grid_cell->get_dof_indices(grid_indices);
+            for (unsigned int k = 0; k < field_indices.size(); ++k)
+              if (owned_dofs.is_element(field_indices[k]))
+                {
+                  // The k-th shape function of the field sits at vertex v, component c.
+                  const auto [c, v] = fe->system_to_component_index(k);
+                  owned[field_indices[k]] = (*nodal[c])(grid_indices[v]);
+                }
+          }
+      owned.compress(dealii::VectorOperation::insert);
+      values_changed(0);
+    }
+
+
+
     double
     FiniteElementField::integral(const unsigned int state) const
     {

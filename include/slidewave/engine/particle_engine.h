@@ -2,6 +2,7 @@
 #define slidewave_engine_particle_engine_h
 
 #include <array>
+#include <optional>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/timer.h>
 #include <slidewave/core/step_timeline.h>
@@ -107,9 +108,39 @@ namespace slidewave
       set_state(const State &state);
 
       /** One step of length @p dt; @p hold_walls: every rigid wall holds (gravity
-       *  loading). */
+       *  loading). The same as begin_step() and finish_step(). */
       void
       advance(double dt, bool hold_walls = false);
+
+      /**
+       * The first half of a step, for a physics coupled at the nodes (the water of a
+       * granular mass, issue 27): the grid's changes when due, the walls, the points to
+       * the grid. The nodal mass, momentum, force and the model's fields then hold this
+       * step's sums (owned nodes), and add_nodal_forces() may add to the force before
+       * finish_step() (collective).
+       */
+      void
+      begin_step(bool hold_walls = false);
+
+      /** The second half of a step of length @p dt begun by begin_step(): the grid update,
+       *  the grid to the points, the stresses and the points' relocation (collective). */
+      void
+      finish_step(double dt);
+
+      /**
+       * Adds @p force (per component, a vector with the nodal workspace's layout whose
+       * owned entries hold the totals) to the nodal force of the owned nodes that carry
+       * mass this step, between begin_step() and finish_step().
+       */
+      void
+      add_nodal_forces(const std::array<grid::NodalWorkspace::Vector, 2> &force);
+
+      /** The velocity conditions of the grid's sides and walls. */
+      const grid::VelocityConstraints &
+      velocity_constraints() const
+      {
+        return constraints;
+      }
 
       /** max_p (c_p + |v_p|) over all ranks (collective). */
       double
@@ -187,6 +218,11 @@ namespace slidewave
           timeline->lap(part);
       }
 
+      /** Starts the timer section @p name of the step (ends the one before), when a
+       *  timer is given. */
+      void
+      start_part(const char *name);
+
       /** Puts the points at their new positions in their cells (collective). */
       void
       relocate();
@@ -203,6 +239,8 @@ namespace slidewave
       unsigned int         n_steps = 0, n_full_sorts = 0;
       dealii::TimerOutput *timer    = nullptr;
       core::StepTimeline  *timeline = nullptr;
+      /** The timer section of the part of the step under way. */
+      std::optional<dealii::TimerOutput::Scope> part;
     };
   } // namespace engine
 } // namespace slidewave

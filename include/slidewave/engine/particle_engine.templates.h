@@ -119,41 +119,82 @@ namespace slidewave
     void
     ParticleEngine<Model>::advance(const double dt, const bool hold_walls)
     {
+      begin_step(hold_walls);
+      finish_step(dt);
+    }
+
+
+
+    template <class Model>
+    void
+    ParticleEngine<Model>::start_part(const char *name)
+    {
+      if (timer != nullptr)
+        {
+          part.reset();
+          part.emplace(*timer, settings.timer_name + ": " + name);
+        }
+    }
+
+
+
+    template <class Model>
+    void
+    ParticleEngine<Model>::begin_step(const bool hold_walls)
+    {
       // A timer section per part of the step when a timer is given.
-      std::optional<dealii::TimerOutput::Scope> part;
-      const auto                                start = [&](const char *name) {
-        if (timer != nullptr)
-          {
-            part.reset();
-            part.emplace(*timer, settings.timer_name + ": " + name);
-          }
-      };
       if (timeline)
         timeline->begin_step(n_steps + 1);
-      start("grid changes");
+      start_part("grid changes");
       grid.change_if_due(n_steps);
       lap(core::StepTimeline::grid_changes);
       ++n_steps;
       constraints.update_walls(current_time, hold_walls);
-      start("particles to grid");
+      start_part("particles to grid");
       kernels.particles_to_grid();
-      start("grid update");
+      part.reset();
+    }
+
+
+
+    template <class Model>
+    void
+    ParticleEngine<Model>::add_nodal_forces(
+      const std::array<grid::NodalWorkspace::Vector, 2> &force)
+    {
+      // Only the nodes of this step's points: the others are not cleared by the next
+      // step's scatter.
+      const unsigned int n_owned = nodes.nodal_mass.locally_owned_size();
+      for (const unsigned int i : nodes.active())
+        if (i < n_owned)
+          for (unsigned int d = 0; d < 2; ++d)
+            nodes.force[d].local_element(i) += force[d].local_element(i);
+    }
+
+
+
+    template <class Model>
+    void
+    ParticleEngine<Model>::finish_step(const double dt)
+    {
+      start_part("grid update");
       kernels.update_grid(dt, current_time);
       // Indexed by the points' local indices (their memory slots), which may have gaps
       // after a relocation.
       kernels.new_positions().resize(cloud.particles().get_property_pool().n_slots());
-      start("grid to particles");
+      start_part("grid to particles");
       kernels.grid_to_particles(dt, /*with_stresses=*/!settings.musl);
       lap(core::StepTimeline::gather);
       if (settings.musl)
         {
-          start("MUSL re-map and stresses");
+          start_part("MUSL re-map and stresses");
           kernels.remap_velocities_to_grid();
           kernels.update_stresses(dt);
           lap(core::StepTimeline::musl_remap);
         }
-      start("sort particles");
+      start_part("sort particles");
       relocate();
+      part.reset();
       current_time += dt;
     }
 

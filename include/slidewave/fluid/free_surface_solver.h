@@ -47,6 +47,41 @@ namespace slidewave
       void
       setup(double start_time);
 
+      /**
+       * A moving porous solid in the flow, whose fields another physics on the grid sets
+       * before every step (the skeleton of a granular mass, issue 27): creates the fluid
+       * fraction, inverse permeability and solid velocity (Q1 fields that follow the
+       * grid), switches the porous terms on, and leaves the grid's changes to that
+       * physics (advance() then changes nothing). Call before setup() or load(), instead
+       * of a fixed porous structure.
+       */
+      void
+      enable_moving_solid();
+
+      /** The moving solid's fields (enable_moving_solid()), for the physics that sets
+       *  them; call values_changed() after writing. */
+      grid::FiniteElementField &
+      solid_fraction_field()
+      {
+        return *fluid_fraction;
+      }
+
+      grid::FiniteElementField &
+      inverse_permeability_field()
+      {
+        return *inverse_permeability;
+      }
+
+      grid::FiniteElementField &
+      solid_velocity_field()
+      {
+        return *solid_velocity;
+      }
+
+      /** setup() on a grid another physics has created (collective). */
+      void
+      initialize(double start_time);
+
       /** Reads a checkpoint written by save() (the grid and every field). */
       void
       load(const std::string &prefix);
@@ -124,6 +159,8 @@ namespace slidewave
       PhaseFieldSystem             phase_system;
       /** The fixed porous structure's fields (only with 'Porous structure/Porosity'). */
       std::unique_ptr<grid::FiniteElementField> fluid_fraction, inverse_permeability;
+      /** The moving solid's velocity (enable_moving_solid()). */
+      std::unique_ptr<grid::FiniteElementField> solid_velocity;
     };
   } // namespace fluid
 } // namespace slidewave

@@ -188,6 +188,18 @@ namespace slidewave
       void
       copy_to_grid_nodes(dealii::LinearAlgebra::distributed::Vector<double> &nodal) const;
 
+      /**
+       * The other way: state 0 of a Q1 field (scalar or vector) from values at the grid's
+       * own nodes, component c from @p nodal[c] (ghosted vectors with the grid's dof
+       * layout, such as what a particle model's points summed into its NodalWorkspace):
+       * how a particle model hands its nodal fields (a solid's volume fraction, velocity,
+       * drag) to a finite-element physics on the same cells. Writes the owned values and
+       * calls values_changed() (collective).
+       */
+      void
+      copy_from_grid_nodes(
+        const std::vector<const dealii::LinearAlgebra::distributed::Vector<double> *> &nodal);
+
       void
       grid_ready() override;
 

@@ -1,0 +1,166 @@
+#ifndef slidewave_granular_granular_water_scene_h
+#define slidewave_granular_granular_water_scene_h
+
+#include <array>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <fstream>
+#include <memory>
+#include <slidewave/core/memory_estimate.h>
+#include <slidewave/core/scene_parameters.h>
+#include <slidewave/core/time_stepped_scene.h>
+#include <slidewave/engine/particle_engine.h>
+#include <slidewave/fluid/free_surface_output.h>
+#include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/fluid/free_surface_solver.h>
+#include <slidewave/granular/granular_water_parameters.h>
+#include <slidewave/granular/porous_skeleton_model.h>
+#include <slidewave/granular/skeleton_fluid_exchange.h>
+#include <slidewave/io/particle_output.h>
+#include <slidewave/soil/material_point_parameters.h>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace granular
+  {
+    /**
+     * A granular skeleton in water and air (Physics = granular water; paper 002): the
+     * skeleton's material points (PorousSkeletonModel on the particle engine, subsection
+     * "Material points") and the free-surface flow with the skeleton as a moving porous
+     * solid (subsection "Free surface flow") on one background grid, exchanged at its
+     * nodes (SkeletonFluidExchange; subsection "Granular water"). One step (§3.5): the
+     * points to the grid (mass, momentum, effective-stress forces, solid volume, drag),
+     * the water's fields from them, the water's step (phase field, then flow), the
+     * water's force on the grains at the nodes, the grains' grid update and the points'
+     * update. doc/granular-water.md.
+     */
+    class GranularWaterScene : public TimeSteppedScene
+    {
+    public:
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      GranularWaterScene(const SceneParameters &scene, dealii::ParameterHandler &prm);
+
+      core::MemoryEstimate
+      memory_estimate() const;
+
+      bool
+      run();
+
+      std::string
+      timer_prefix() const override
+      {
+        return "granular";
+      }
+
+      std::vector<core::OutputFolder>
+      output_folders() const override;
+
+      void
+      set_up(double start_time, dealii::TimerOutput &timer) override;
+
+      void
+      check_set_up() const override;
+
+      std::string
+      description() const override;
+
+      double
+      stable_time_step() override;
+
+      void
+      advance(const StepInfo &info) override;
+
+      void
+      after_step(const StepInfo &info) override;
+
+      void
+      write_output(unsigned int index, double time) override;
+
+      void
+      add_statistics(Statistics &statistics, const StepInfo &info) const override;
+
+      bool
+      finish(const StepInfo &info) override;
+
+      std::string
+      checkpoint_signature() const override;
+
+      std::vector<std::string>
+      growing_files() const override;
+
+      void
+      save(io::CheckpointRecord &record) override;
+
+      void
+      save_data(const std::string &prefix) override;
+
+      void
+      resume(const io::CheckpointRecord &record,
+             const std::string          &prefix,
+             dealii::TimerOutput        &timer) override;
+
+    private:
+      using Engine = engine::ParticleEngine<PorousSkeletonModel>;
+
+      /** The grid, the water's solver and the skeleton's engine, attached in that order. */
+      void
+      create_solvers();
+
+      /** The point forces of 'Top load' on the top row of points. */
+      void
+      apply_top_load();
+
+      /** The largest error of the pore pressure at the nodes of the column against
+       *  Terzaghi's at the current time, relative to the load, and the average degree of
+       *  consolidation from the pore pressure (collective); the owned nodes' (y, p, exact)
+       *  appended to @p samples unless null. */
+      std::array<double, 2>
+      terzaghi_errors(std::vector<double> *samples) const;
+
+      /** terzaghi_profiles.csv: created, or continued by a resumed run (rank 0). */
+      void
+      open_profiles(bool append);
+
+      /** The profile of @p samples (every rank's) at time factor @p tv (collective). */
+      void
+      write_profile(double tv, double time, const std::vector<double> &samples) const;
+
+      /** The largest stable step now: the fixed one, or the least of the water's
+       *  Courant limit, the skeleton's (Eq. 23) and the explicit coupling's (collective). */
+      double
+      step_limit() const;
+
+      /** T_v of time @p t. */
+      double
+      time_factor(double t) const;
+
+      const SceneParameters                &scene;
+      soil::MaterialPointParameters         soil_parameters;
+      fluid::FreeSurfaceParameters          fluid_parameters;
+      GranularWaterParameters               parameters;
+      std::unique_ptr<grid::BackgroundGrid> grid;
+      std::unique_ptr<fluid::FreeSurfaceSolver> fluid_solver;
+      std::unique_ptr<PorousSkeletonModel>      model;
+      std::unique_ptr<Engine>                   engine;
+      std::unique_ptr<SkeletonFluidExchange>    exchange;
+      /** The water's force on the grains at the nodes (reused every step). */
+      std::array<grid::NodalWorkspace::Vector, 2> water_force;
+      io::ParticleOutput                          particle_output;
+      fluid::FreeSurfaceOutput                    fluid_output;
+      dealii::TimerOutput                        *timer = nullptr;
+      fluid::FluidStepReport                      last_report;
+      unsigned int                                check_interval = 10;
+
+      /** Terzaghi: per time factor reached, (T_v, largest pore pressure error, U from
+       *  the pressure, U exact). */
+      std::vector<std::array<double, 4>> profiles;
+      std::unique_ptr<std::ofstream>     profile_file;
+    };
+  } // namespace granular
+} // namespace slidewave
+
+#endif

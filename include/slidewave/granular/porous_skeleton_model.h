@@ -1,0 +1,128 @@
+#ifndef slidewave_granular_porous_skeleton_model_h
+#define slidewave_granular_porous_skeleton_model_h
+
+#include <algorithm>
+#include <deal.II/base/point.h>
+#include <slidewave/granular/drag_law.h>
+#include <slidewave/granular/granular_water_parameters.h>
+#include <slidewave/soil/soil_model.h>
+
+namespace slidewave
+{
+  namespace granular
+  {
+    /**
+     * The solid skeleton of a saturated (or dry) granular mass as a particle model of the
+     * engine (paper 002, §2 and §3.5): the soil's points (SoilModel: effective stress,
+     * constitutive update, volume from the deformation) with what the pore fluid needs of
+     * them. A point's mass is its grains' mass m_p = (1 - n_p) rho^s V_p, so its solid
+     * volume m_p / rho^s is fixed and its porosity follows its volume,
+     * n_p = 1 - m_p / (rho^s V_p) (paper 002, the porosity update of §3.5 with J = V / V_0),
+     * capped at 0.99. Its permeability k_p is the given constant or Kozeny–Carman's of
+     * n_p (DragLaw, Eq. 4) and its Darcy drag coefficient C_p = n_p^2 mu^f / k_p.
+     *
+     * Two nodal fields of its own, summed like the mass:
+     *   field 0, the solid volume  S_I = sum_p N_I(x_p) m_p / rho^s,
+     *   field 1, the drag          D_I = sum_p N_I(x_p) V_p C_p       [kg/s per m],
+     * from which SkeletonFluidExchange makes the fluid's fields: the fluid fraction
+     * n_I = 1 - S_I / A_I (A_I the node's lumped area) and the drag C_I = D_I / A_I.
+     */
+    class PorousSkeletonModel : public soil::SoilModel
+    {
+    public:
+      static constexpr unsigned int n_nodal_fields = 2;
+      static constexpr unsigned int solid_volume   = 0;
+      static constexpr unsigned int drag           = 1;
+
+      PorousSkeletonModel(const soil::MaterialPointParameters &soil_parameters,
+                          const GranularWaterParameters       &parameters,
+                          double                               fluid_density,
+                          double                               fluid_viscosity);
+
+      unsigned int
+      n_used_nodal_fields() const
+      {
+        return n_nodal_fields;
+      }
+
+      bool
+      needs_lumped_area() const
+      {
+        return true;
+      }
+
+      /** What a point scatters: the soil's terms, its solid volume and V_p C_p. */
+      struct ScatterTerms : soil::SoilModel::ScatterTerms
+      {
+        double solid_volume, drag_volume;
+      };
+
+      template <typename Properties>
+      ScatterTerms
+      scatter_terms(const Properties &p, const dealii::Point<2> &location) const
+      {
+        const soil::SoilModel::ScatterTerms soil = soil::SoilModel::scatter_terms(p, location);
+        const double                        solid = soil.m / grain_density;
+        const double                        n     = porosity(solid, soil.V);
+        return {soil, solid, soil.V * drag_coefficient(n)};
+      }
+
+      template <typename Terms>
+      void
+      scatter_fields(const Terms &t, const double N_k, double *sums) const
+      {
+        sums[solid_volume] += N_k * t.solid_volume;
+        sums[drag] += N_k * t.drag_volume;
+      }
+
+      /** n = 1 - solid volume / volume, in [0, 0.99]. */
+      static double
+      porosity(const double solid, const double volume)
+      {
+        return std::clamp(1. - solid / volume, 0., DragLaw::porosity_cap);
+      }
+
+      /** The Darcy drag coefficient n^2 mu^f / k(n) [kg/(m^3 s)] at porosity @p n. */
+      double
+      drag_coefficient(const double n) const
+      {
+        if (n <= 0.)
+          return 0.; // no pores, no flow through them
+        const double k = parameters.permeability_law == PermeabilityLaw::constant ?
+                           parameters.permeability :
+                           law.permeability(n);
+        return n * n * viscosity / k;
+      }
+
+      /** The grains' density rho^s [kg/m^3]. */
+      double
+      grains_density() const
+      {
+        return grain_density;
+      }
+
+      /**
+       * The smallest rho^s (1 - n) n^2 / C = rho^s (1 - n) k / mu^w of the points
+       * (collective). The pore pressure of the new step answers the skeleton's velocity of
+       * the old one: where the drag dominates the water's inertia, the water's continuity
+       * makes p = (C / n^2) Laplace^-1 div v_s, and its force on the grains,
+       * -(1 - n) grad p + C (u - v_s) = -grad p, acts on them as a volumetric damping of
+       * coefficient C / n^2 = mu / k, explicit: stable for steps below twice this time.
+       * (The drag alone, C (u - v_s), is stable below 2 rho^s (1 - n) / C, a larger
+       * bound.)
+       */
+      double
+      coupling_time_scale(const particles::PointCloud &cloud) const;
+
+    private:
+      const GranularWaterParameters &parameters;
+      const double                   grain_density, viscosity;
+      const DragLaw                  law;
+    };
+  } // namespace granular
+
+  extern template class engine::TransferKernels<granular::PorousSkeletonModel>;
+  extern template class engine::ParticleEngine<granular::PorousSkeletonModel>;
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,74 @@
+#ifndef slidewave_granular_skeleton_fluid_exchange_h
+#define slidewave_granular_skeleton_fluid_exchange_h
+
+#include <array>
+#include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/grid/background_grid.h>
+#include <slidewave/grid/finite_element_field.h>
+#include <slidewave/grid/nodal_workspace.h>
+#include <slidewave/grid/velocity_constraints.h>
+
+namespace slidewave
+{
+  namespace granular
+  {
+    /** The fields of the moving skeleton that the water's equations read (paper 002,
+     *  Eqs. 25–31): all Q1 on the shared grid, owned by the fluid's solver. */
+    struct SkeletonFields
+    {
+      grid::FiniteElementField *fluid_fraction       = nullptr;
+      grid::FiniteElementField *inverse_permeability = nullptr;
+      grid::FiniteElementField *solid_velocity       = nullptr;
+    };
+
+    /**
+     * The exchange between the skeleton's points and the water at the nodes of the grid
+     * they share (paper 002, §3.5, steps (i) and (iv)):
+     *
+     * - to the water: from the nodal sums of the skeleton (mass, momentum, solid volume
+     *   S_I, drag D_I; PorousSkeletonModel) the fluid fraction n_I = 1 - S_I / A_I (at
+     *   least 0.01), the inverse permeability 1/kappa_I = D_I / (A_I n_I^2 mu^w), so that
+     *   the water's drag n^2 mu / kappa is the points' drag where the pores hold water,
+     *   and the solid velocity v_I = momentum / mass (zero on empty nodes, the skeleton's
+     *   sides and walls held);
+     * - to the skeleton: the force of the water on the grains at each node,
+     *
+     *     f_I = integral of ( -(1 - n) grad p + C (u - v_s) ) N_I,   C = n^2 mu(phi) / kappa,
+     *
+     *   with the water's new pressure and velocity and the same fields and quadrature as
+     *   the water's own -n grad p and -C (u - v_s) (NavierStokesSystem), so that the two
+     *   phases exchange equal and opposite drag and their pressure forces add up to the
+     *   mixture's -grad p. The drag is explicit in the solid's velocity (stable for steps
+     *   below 2 rho^s (1 - n) / C).
+     */
+    class SkeletonFluidExchange
+    {
+    public:
+      SkeletonFluidExchange(const grid::BackgroundGrid          &grid,
+                            const fluid::FreeSurfaceParameters &fluid_parameters);
+
+      /** The water's fields from the skeleton's nodal sums of this step (after the
+       *  engine's begin_step(); collective). @p empty_mass: nodes with less are empty. */
+      void
+      to_fluid(const grid::NodalWorkspace      &nodes,
+               const grid::VelocityConstraints &constraints,
+               double                           empty_mass,
+               const SkeletonFields            &fields) const;
+
+      /** The water's force on the skeleton at the nodes, from the water's state 0 (its
+       *  new velocity and pressure) and @p phase (state 0), into @p force, vectors of the
+       *  nodal workspace's layout (owned totals; collective). */
+      void
+      to_skeleton(const grid::FiniteElementField       &flow,
+                  const grid::FiniteElementField       &phase,
+                  const SkeletonFields                 &fields,
+                  std::array<grid::NodalWorkspace::Vector, 2> &force) const;
+
+    private:
+      const grid::BackgroundGrid          &grid;
+      const fluid::FreeSurfaceParameters &parameters;
+    };
+  } // namespace granular
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,114 @@
+#include <cmath>
+#include <slidewave/core/input_error.h>
+#include <slidewave/granular/granular_water_parameters.h>
+
+namespace slidewave
+{
+  namespace granular
+  {
+    void
+    GranularWaterParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.declare_entry("Grain density",
+                        "2650",
+                        Double(0.),
+                        "rho^s, the density of the grains [kg/m^3]. A point's mass is its "
+                        "grains' mass: the materials' 'Density' is the dry density "
+                        "(1 - n_0) rho^s, which sets the initial porosity n_0 = 1 - Density / "
+                        "rho^s (must lie in (0, 0.99]).");
+      prm.declare_entry("Permeability law",
+                        "constant",
+                        Selection("constant|Kozeny-Carman"),
+                        "'constant': every point has the intrinsic permeability "
+                        "'Permeability'. 'Kozeny-Carman': k(n) = D50^2 n^3 / (180 (1 - n)^2) "
+                        "of each point's porosity n (capped at 0.99; paper 002, Eq. 4).");
+      prm.declare_entry("Permeability",
+                        "1e-10",
+                        Double(0.),
+                        "k, the intrinsic permeability of the 'constant' law [m^2] (the "
+                        "hydraulic conductivity is k rho^f g / mu^f).");
+      prm.declare_entry("D50",
+                        "1e-3",
+                        Double(0.),
+                        "The grains' mean diameter [m] of the Kozeny-Carman law.");
+      prm.declare_entry("Top load",
+                        "0",
+                        Double(0.),
+                        "A pressure [Pa] on the top row of points of the skeleton, as a "
+                        "downward point force of the load times each point's width "
+                        "(Terzaghi's load p0); 0: none.");
+      prm.enter_subsection("Verification");
+      {
+        prm.declare_entry("Exact solution",
+                          "none",
+                          Selection("none|Terzaghi"),
+                          "'Terzaghi': one-dimensional consolidation of a column of height "
+                          "'Column height' with a drained top and an impervious base under "
+                          "'Top load' (Material 1 linear elastic, no gravity): the pore "
+                          "pressure of the nodes in the column at the 'Time factors' "
+                          "T_v = c_v t / H^2 against the series solution, normalized by the "
+                          "load, and the average degree of consolidation U against "
+                          "1 - sum 2 / M^2 exp(-M^2 T_v).");
+        prm.declare_entry("Column height", "1", Double(0.), "H of the column [m].");
+        prm.declare_entry("Time factors",
+                          "0.05, 0.1, 0.2, 0.5, 1",
+                          Anything(),
+                          "T_v at which the pore pressure is compared (comma-separated, > 0, "
+                          "increasing).");
+        prm.declare_entry("Tolerance",
+                          "0",
+                          Double(0.),
+                          "If > 0, the run fails (exit status 3) when the largest error of "
+                          "the pore pressure over the profiles exceeds it (relative to the "
+                          "load).");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    GranularWaterParameters::parse_parameters(dealii::ParameterHandler &prm,
+                                              const std::string        &path)
+    {
+      grain_density    = prm.get_double("Grain density");
+      permeability_law = prm.get("Permeability law") == "constant" ? PermeabilityLaw::constant :
+                                                                     PermeabilityLaw::kozeny_carman;
+      permeability     = prm.get_double("Permeability");
+      d50              = prm.get_double("D50");
+      top_load         = prm.get_double("Top load");
+      for (const auto &[name, value] : {std::pair<std::string, double>{"Grain density",
+                                                                       grain_density},
+                                        {"Permeability", permeability},
+                                        {"D50", d50}})
+        if (!(value > 0.) || !std::isfinite(value))
+          throw InputError(path + "/" + name, to_string(value), "a finite number > 0");
+      prm.enter_subsection("Verification");
+      {
+        exact_solution = prm.get("Exact solution") == "Terzaghi" ? GranularExactSolution::terzaghi :
+                                                                   GranularExactSolution::none;
+        column_height  = prm.get_double("Column height");
+        tolerance      = prm.get_double("Tolerance");
+        const std::string name = path + "/Verification/Time factors";
+        time_factors           = parse_number_list(name,
+                                         prm.get("Time factors"),
+                                         "comma-separated numbers > 0, increasing");
+        for (unsigned int i = 0; i < time_factors.size(); ++i)
+          if (!(time_factors[i] > 0.) || (i > 0 && !(time_factors[i] > time_factors[i - 1])))
+            throw InputError(name,
+                             prm.get("Time factors"),
+                             "comma-separated numbers > 0, increasing");
+        if (exact_solution == GranularExactSolution::terzaghi && !(top_load > 0.))
+          throw InputError(path + "/Top load",
+                           to_string(top_load),
+                           "a load > 0 with 'Exact solution = Terzaghi'");
+        if (exact_solution == GranularExactSolution::terzaghi && !(column_height > 0.))
+          throw InputError(path + "/Verification/Column height",
+                           to_string(column_height),
+                           "a height > 0 with 'Exact solution = Terzaghi'");
+      }
+      prm.leave_subsection();
+    }
+  } // namespace granular
+} // namespace slidewave

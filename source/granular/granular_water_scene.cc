@@ -1,0 +1,640 @@
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/run_bounds.h>
+#include <slidewave/core/run_control.h>
+#include <slidewave/core/timed_run.h>
+#include <slidewave/granular/granular_water_scene.h>
+#include <slidewave/granular/terzaghi.h>
+#include <slidewave/soil/particle_properties.h>
+#include <sstream>
+
+namespace slidewave
+{
+  namespace granular
+  {
+    namespace
+    {
+      const std::string section       = "Granular water";
+      const std::string soil_section  = "Material points";
+      const std::string fluid_section = "Free surface flow";
+      /** Terzaghi's pore pressure profiles, a row per height at each time factor. */
+      const std::string profile_file_name = "terzaghi_profiles.csv";
+
+      /** Whether @p a and @p b agree to round-off relative to @p scale. */
+      bool
+      same(const double a, const double b, const double scale)
+      {
+        return std::abs(a - b) <= 1e-12 * scale;
+      }
+    } // namespace
+
+
+
+    void
+    GranularWaterScene::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection(section);
+      GranularWaterParameters::declare_parameters(prm);
+      prm.leave_subsection();
+    }
+
+
+
+    GranularWaterScene::GranularWaterScene(const SceneParameters    &scene_parameters,
+                                           dealii::ParameterHandler &prm)
+      : scene(scene_parameters)
+      , particle_output(scene_parameters.output_directory)
+      , fluid_output(scene_parameters.output_directory, {})
+    {
+      prm.enter_subsection(section);
+      parameters.parse_parameters(prm, section);
+      prm.leave_subsection();
+      prm.enter_subsection(soil_section);
+      soil_parameters.parse_parameters(prm, soil_section);
+      check_interval = prm.get_integer("Check interval");
+      prm.leave_subsection();
+      prm.enter_subsection(fluid_section);
+      fluid_parameters.parse_parameters(prm);
+      prm.leave_subsection();
+      soil_parameters.point_forces = parameters.top_load > 0.;
+
+      // One grid for both phases: the skeleton's and the water's must be the same.
+      const double extent = (fluid_parameters.upper_right - fluid_parameters.lower_left).norm();
+      for (unsigned int d = 0; d < 2; ++d)
+        if (!same(soil_parameters.lower_left[d], fluid_parameters.lower_left[d], extent)
+            || !same(soil_parameters.upper_right[d], fluid_parameters.upper_right[d], extent))
+          throw InputError(soil_section + "/Grid",
+                           "a domain unlike '" + fluid_section + "/Grid''s",
+                           "the same lower left and upper right corners in both subsections "
+                           "(the skeleton and the water share one grid)");
+      if (!same(soil_parameters.cell_size, fluid_parameters.cell_size, fluid_parameters.cell_size))
+        throw InputError(soil_section + "/Grid/Cell size",
+                         to_string(soil_parameters.cell_size),
+                         "the same as '" + fluid_section + "/Grid/Cell size' = "
+                           + to_string(fluid_parameters.cell_size)
+                           + " (the skeleton and the water share one grid)");
+      if (fluid_parameters.element_degree != 1)
+        throw InputError(fluid_section + "/Finite elements/Degree",
+                         std::to_string(fluid_parameters.element_degree),
+                         "1 with Physics = granular water (the skeleton's nodes are the "
+                         "vertices)");
+      if (soil_parameters.adaptivity.enabled || fluid_parameters.adaptive)
+        throw InputError(soil_parameters.adaptivity.enabled ? soil_section + "/Adaptive grid/Enable" :
+                                                              fluid_section
+                                                                + "/Adaptive grid/Enable",
+                         "true",
+                         "false with Physics = granular water (not yet adaptive)");
+      if (!fluid_parameters.porosity.empty())
+        throw InputError(fluid_section + "/Porous structure/Porosity",
+                         fluid_parameters.porosity,
+                         "empty with Physics = granular water (the skeleton is the porous "
+                         "solid)");
+      if (soil_parameters.initial_stress == soil::InitialStress::geostatic
+          || soil_parameters.initial_stress == soil::InitialStress::gravity_loading)
+        throw InputError(soil_section + "/Initial stress/Type",
+                         soil_parameters.initial_stress == soil::InitialStress::geostatic ?
+                           "geostatic" :
+                           "gravity loading",
+                         "none or uniform with Physics = granular water (the buoyant "
+                         "geostatic state is not yet built)");
+      if (soil_parameters.prescribed_velocity)
+        throw InputError(soil_section + "/Prescribed velocity",
+                         "(set)",
+                         "none with Physics = granular water");
+      // The grains are denser than the skeleton: 0 < n_0 <= 0.99.
+      for (const auto &material : soil_parameters.materials)
+        {
+          const double n0 = 1. - material.density / parameters.grain_density;
+          if (!(n0 > 0. && n0 <= 0.99))
+            throw InputError(soil_section + "/Material '" + material.name + "'/Density",
+                             to_string(material.density),
+                             "a dry density (1 - n_0) rho^s between 0.01 and 1 times '"
+                               + section + "/Grain density' = "
+                               + to_string(parameters.grain_density)
+                               + " (an initial porosity in (0, 0.99])");
+        }
+      if (parameters.exact_solution == GranularExactSolution::terzaghi)
+        {
+          if (soil_parameters.materials.empty()
+              || soil_parameters.materials[0].model != materials::MaterialModel::linear_elastic)
+            throw InputError(soil_section + "/Material 1/Model",
+                             soil_parameters.materials.empty() ? "(none)" :
+                                                                 soil_parameters.materials[0].name,
+                             "a linear elastic material with 'Exact solution = Terzaghi'");
+          if (parameters.permeability_law != PermeabilityLaw::constant)
+            throw InputError(section + "/Permeability law",
+                             "Kozeny-Carman",
+                             "constant with 'Exact solution = Terzaghi' (its c_v is constant)");
+        }
+      core::check_step_count(scene,
+                             soil_parameters.fixed_time_step,
+                             soil_section + "/Fixed time step",
+                             to_string(soil_parameters.fixed_time_step),
+                             "'Fixed time step'");
+    }
+
+
+
+    bool
+    GranularWaterScene::run()
+    {
+      return run_with_timer(scene.test_mode, [this](dealii::TimerOutput &timer_output) {
+        return RunControl(scene).run(*this, timer_output);
+      });
+    }
+
+
+
+    core::MemoryEstimate
+    GranularWaterScene::memory_estimate() const
+    {
+      core::MemoryEstimate estimate;
+      soil_parameters.add_to_memory_estimate(estimate, soil_section);
+      const double nx = std::round((fluid_parameters.upper_right[0] - fluid_parameters.lower_left[0])
+                                   / fluid_parameters.cell_size),
+                   ny = std::round((fluid_parameters.upper_right[1] - fluid_parameters.lower_left[1])
+                                   / fluid_parameters.cell_size);
+      // Flow (Q1^2-Q1), phase field and the skeleton's fields (fluid fraction, inverse
+      // permeability, velocity): eight unknowns per node.
+      estimate.add("water unknowns",
+                   8. * (nx + 1.) * (ny + 1.),
+                   core::MemoryEstimate::bytes_per_dof,
+                   fluid_section + "/Grid/Cell size",
+                   to_string(fluid_parameters.cell_size));
+      return estimate;
+    }
+
+
+
+    std::vector<core::OutputFolder>
+    GranularWaterScene::output_folders() const
+    {
+      return {{"particles", "the skeleton's points"}, {"free_surface", "the water's fields"}};
+    }
+
+
+
+    void
+    GranularWaterScene::create_solvers()
+    {
+      grid         = fluid::FreeSurfaceSolver::make_grid(fluid_parameters);
+      fluid_solver = std::make_unique<fluid::FreeSurfaceSolver>(fluid_parameters, *grid);
+      fluid_solver->enable_moving_solid();
+      model = std::make_unique<PorousSkeletonModel>(soil_parameters,
+                                                    parameters,
+                                                    fluid_parameters.fluid.water_density,
+                                                    fluid_parameters.fluid.water_viscosity);
+      Engine::Settings settings;
+      settings.shape_function       = soil_parameters.shape_function;
+      settings.flip_fraction        = soil_parameters.flip_fraction;
+      settings.musl                 = soil_parameters.update_scheme != soil::UpdateScheme::usl;
+      settings.full_sort_every_step = soil_parameters.full_sort_every_step;
+      settings.particle_weight      = soil_parameters.adaptivity.particle_weight;
+      settings.timer_name           = "granular: skeleton";
+      engine                        = std::make_unique<Engine>(
+        *grid, *model, soil_parameters.boundaries, soil_parameters.walls, settings);
+      exchange = std::make_unique<SkeletonFluidExchange>(*grid, fluid_parameters);
+    }
+
+
+
+    void
+    GranularWaterScene::set_up(const double start_time, dealii::TimerOutput &timer_output)
+    {
+      timer = &timer_output;
+      dealii::TimerOutput::Scope scope(timer_output, "granular: setup");
+      create_solvers();
+      // The points create the grid (partitioned by the points to come), then the water.
+      engine->create_points(start_time,
+                            soil_parameters.regions,
+                            soil_parameters.particles_per_direction,
+                            [this](std::vector<double>    &properties,
+                                   const dealii::Point<2> &position,
+                                   const unsigned int      region_index,
+                                   const double            hx,
+                                   const double            hy) {
+                              model->fill_new_point(properties, position, region_index, hx, hy);
+                              return true;
+                            });
+      fluid_solver->initialize(start_time);
+      if (soil_parameters.initial_stress == soil::InitialStress::uniform)
+        model->set_uniform_stress(engine->point_cloud());
+      if (parameters.top_load > 0.)
+        apply_top_load();
+      open_profiles(false);
+    }
+
+
+
+    void
+    GranularWaterScene::apply_top_load()
+    {
+      double top = -std::numeric_limits<double>::max();
+      for (const auto &particle : engine->point_cloud().particles())
+        top = std::max(top, particle.get_location()[1]);
+      top = dealii::Utilities::MPI::max(top, MPI_COMM_WORLD);
+      // The top row: within half a point spacing of the highest point.
+      const double row  = 0.5 * soil_parameters.cell_size / soil_parameters.particles_per_direction;
+      const double load = parameters.top_load;
+      model->set_point_forces(engine->point_cloud(),
+                              [&](const dealii::Particles::ParticleAccessor<2> &particle) {
+                                dealii::Tensor<1, 2> force;
+                                if (particle.get_location()[1] > top - row)
+                                  force[1] = -load * 2.
+                                             * particle.get_properties()[soil::property::domain_half_x];
+                                return force;
+                              });
+    }
+
+
+
+    void
+    GranularWaterScene::check_set_up() const
+    {
+      core::check_step_count(scene,
+                             step_limit(),
+                             fluid_section + "/Time stepping/Maximum time step",
+                             to_string(fluid_parameters.maximum_time_step),
+                             "the first step");
+    }
+
+
+
+    std::string
+    GranularWaterScene::description() const
+    {
+      return "Granular water: " + std::to_string(grid->triangulation().n_global_active_cells())
+             + " cells, "
+             + std::to_string(engine->point_cloud().particles().n_global_particles())
+             + " skeleton points, " + std::to_string(fluid_solver->flow_field().dof_handler().n_dofs())
+             + " flow unknowns; output in " + scene.output_directory;
+    }
+
+
+
+    double
+    GranularWaterScene::stable_time_step()
+    {
+      return step_limit();
+    }
+
+
+
+    double
+    GranularWaterScene::step_limit() const
+    {
+      if (soil_parameters.fixed_time_step > 0.)
+        return soil_parameters.fixed_time_step;
+      // The water's Courant limit, the skeleton's (Eq. 23) and the explicit coupling's
+      // (below 2 rho^s (1 - n) k / mu: half of it).
+      const double speed = engine->max_signal_speed();
+      const double skeleton
+        = speed > 0. ? soil_parameters.time_step_multiplier * soil_parameters.cell_size / speed :
+                       std::numeric_limits<double>::infinity();
+      return std::min({fluid_solver->stable_time_step(),
+                       skeleton,
+                       model->coupling_time_scale(engine->point_cloud())});
+    }
+
+
+
+    void
+    GranularWaterScene::advance(const StepInfo &info)
+    {
+      const grid::NodalWorkspace &nodes = engine->nodal_workspace();
+      {
+        dealii::TimerOutput::Scope scope(*timer, "granular: skeleton to grid");
+        engine->begin_step();
+      }
+      {
+        dealii::TimerOutput::Scope scope(*timer, "granular: exchange");
+        exchange->to_fluid(nodes,
+                           engine->velocity_constraints(),
+                           model->empty_node_mass(),
+                           {&fluid_solver->solid_fraction_field(),
+                            &fluid_solver->inverse_permeability_field(),
+                            &fluid_solver->solid_velocity_field()});
+      }
+      {
+        dealii::TimerOutput::Scope scope(*timer, "granular: water");
+        last_report = fluid_solver->advance(info.dt);
+      }
+      {
+        dealii::TimerOutput::Scope scope(*timer, "granular: exchange");
+        if (water_force[0].get_partitioner() != nodes.nodal_mass.get_partitioner())
+          for (auto &f : water_force)
+            f.reinit(nodes.nodal_mass);
+        exchange->to_skeleton(fluid_solver->flow_field(),
+                              fluid_solver->phase_field(),
+                              {&fluid_solver->solid_fraction_field(),
+                               &fluid_solver->inverse_permeability_field(),
+                               &fluid_solver->solid_velocity_field()},
+                              water_force);
+        engine->add_nodal_forces(water_force);
+      }
+      dealii::TimerOutput::Scope scope(*timer, "granular: skeleton update");
+      engine->finish_step(info.dt);
+    }
+
+
+
+    void
+    GranularWaterScene::after_step(const StepInfo &info)
+    {
+      dealii::TimerOutput::Scope scope(*timer, "granular: checks");
+      const std::string where
+        = "at step " + std::to_string(info.step) + ", t = " + to_string(info.time) + " s: ";
+      if (!fluid_solver->state_is_finite())
+        throw RunFailure(where + "the water's velocity, pressure or phase field is not finite "
+                                 "(reduce the time step)");
+      if (info.step % check_interval == 0 || info.is_output_time || info.at_end)
+        {
+          const std::string bad = model->find_invalid_particle(engine->point_cloud());
+          if (!bad.empty())
+            throw RunFailure(where + bad);
+        }
+      if (parameters.exact_solution == GranularExactSolution::terzaghi)
+        while (profiles.size() < parameters.time_factors.size()
+               && time_factor(info.time) >= parameters.time_factors[profiles.size()] * (1. - 1e-12))
+          {
+            std::vector<double> samples;
+            const auto          e  = terzaghi_errors(&samples);
+            const double        tv = time_factor(info.time);
+            profiles.push_back({{tv, e[0], e[1], terzaghi_average_degree(tv)}});
+            write_profile(tv, info.time, samples);
+          }
+    }
+
+
+
+    double
+    GranularWaterScene::time_factor(const double t) const
+    {
+      const auto  &material = soil_parameters.materials[0];
+      const double c_v      = consolidation_coefficient(material.youngs_modulus,
+                                                   material.poisson_ratio,
+                                                   parameters.permeability,
+                                                   fluid_parameters.fluid.water_viscosity);
+      const double H        = parameters.column_height;
+      return c_v * (t - scene.start_time) / (H * H);
+    }
+
+
+
+    std::array<double, 2>
+    GranularWaterScene::terzaghi_errors(std::vector<double> *samples) const
+    {
+      const grid::FiniteElementField &flow = fluid_solver->flow_field();
+      const double                    H    = parameters.column_height;
+      const double                    base = fluid_parameters.lower_left[1];
+      const double                    p0   = parameters.top_load;
+      const double                    tv   = time_factor(engine->time());
+      const auto                     &fe   = flow.finite_element();
+      std::vector<dealii::types::global_dof_index> indices(fe.n_dofs_per_cell());
+      const dealii::QGauss<2>                      quadrature(2);
+      dealii::FEValues<2> fv(fe, quadrature, dealii::update_values | dealii::update_JxW_values);
+      const dealii::FEValuesExtractors::Scalar pressure(2);
+      std::vector<double>                      p(quadrature.size());
+      double                                   largest = 0., integral = 0., area = 0.;
+      for (const auto &cell : flow.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned() && cell->center()[1] < base + H)
+          {
+            cell->get_dof_indices(indices);
+            for (unsigned int k = 0; k < indices.size(); ++k)
+              if (fe.system_to_component_index(k).first == 2)
+                {
+                  const double y     = cell->vertex(fe.system_to_component_index(k).second)[1];
+                  const double exact = p0 * terzaghi_pore_pressure((base + H - y) / H, tv);
+                  const double value = flow.values(0)[indices[k]];
+                  largest            = std::max(largest, std::abs(value - exact) / p0);
+                  if (samples)
+                    samples->insert(samples->end(), {y, value, exact});
+                }
+            fv.reinit(cell);
+            fv[pressure].get_function_values(flow.values(0), p);
+            for (unsigned int q = 0; q < p.size(); ++q)
+              {
+                integral += p[q] * fv.JxW(q);
+                area += fv.JxW(q);
+              }
+          }
+      largest  = dealii::Utilities::MPI::max(largest, MPI_COMM_WORLD);
+      integral = dealii::Utilities::MPI::sum(integral, MPI_COMM_WORLD);
+      area     = dealii::Utilities::MPI::sum(area, MPI_COMM_WORLD);
+      return {{largest, 1. - integral / (p0 * area)}};
+    }
+
+
+
+    void
+    GranularWaterScene::open_profiles(const bool append)
+    {
+      if (parameters.exact_solution != GranularExactSolution::terzaghi
+          || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      const std::string file = scene.output_directory + "/" + profile_file_name;
+      profile_file = std::make_unique<std::ofstream>(file, append ? std::ios::app : std::ios::out);
+      require_written(*profile_file, file);
+      profile_file->precision(10);
+      if (!append)
+        *profile_file << "time_factor,time,y,pore_pressure,exact\n";
+    }
+
+
+
+    void
+    GranularWaterScene::write_profile(const double               tv,
+                                      const double               time,
+                                      const std::vector<double> &samples) const
+    {
+      // Every node's (y, p, exact) on rank 0, sorted by height and averaged over each row
+      // of nodes (the nodes of a row share one exact value).
+      const auto all = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, samples, 0);
+      if (!profile_file)
+        return;
+      std::map<long long, std::array<double, 4>> rows; // y / h rounded: sum y, p, exact, count
+      const double h = fluid_parameters.cell_size;
+      for (const auto &part : all)
+        for (std::size_t k = 0; k + 2 < part.size(); k += 3)
+          {
+            auto &row = rows[std::llround(part[k] / h * 1e3)];
+            row[0] += part[k];
+            row[1] += part[k + 1];
+            row[2] += part[k + 2];
+            row[3] += 1.;
+          }
+      for (const auto &[key, row] : rows)
+        *profile_file << tv << ',' << time << ',' << row[0] / row[3] << ',' << row[1] / row[3]
+                      << ',' << row[2] / row[3] << '\n';
+      profile_file->flush();
+      require_written(*profile_file, scene.output_directory + "/" + profile_file_name);
+    }
+
+
+
+    void
+    GranularWaterScene::write_output(const unsigned int index, const double time)
+    {
+      if (scene.test_mode)
+        return;
+      dealii::TimerOutput::Scope scope(*timer, "granular: output");
+      particle_output.write(engine->point_cloud().particles(), model->layout(), index, time);
+      fluid_output.write(*fluid_solver, fluid_parameters.write_surface, index, time);
+    }
+
+
+
+    void
+    GranularWaterScene::add_statistics(Statistics &statistics, const StepInfo &info) const
+    {
+      const auto skeleton = model->integrals(engine->point_cloud());
+      statistics.add_value("time", info.time);
+      statistics.add_value("step", info.step);
+      statistics.add_value("dt", info.dt);
+      statistics.add_value("water_volume", fluid_solver->water_volume());
+      statistics.add_value("water_max_speed", fluid_solver->max_speed());
+      statistics.add_value("skeleton_kinetic_energy", skeleton.kinetic_energy);
+      statistics.add_value("skeleton_max_speed", skeleton.max_speed);
+      statistics.add_value("skeleton_momentum_y", skeleton.momentum_y);
+      statistics.add_value("flow_iterations", last_report.flow.iterations);
+      if (parameters.exact_solution == GranularExactSolution::terzaghi)
+        {
+          const auto   e  = terzaghi_errors(nullptr);
+          const double tv = time_factor(info.time);
+          statistics.add_value("time_factor", tv);
+          statistics.add_value("pore_pressure_error", e[0]);
+          statistics.add_value("consolidation_degree", e[1]);
+          statistics.add_value("consolidation_degree_exact", terzaghi_average_degree(tv));
+        }
+    }
+
+
+
+    bool
+    GranularWaterScene::finish(const StepInfo &)
+    {
+      if (parameters.exact_solution != GranularExactSolution::terzaghi)
+        return true;
+      double largest = profiles.size() < parameters.time_factors.size() ? 1. : 0.;
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::printf("Terzaghi consolidation (error of the nodes' pore pressure relative to the "
+                    "load p0 = %g Pa):\n",
+                    parameters.top_load);
+      for (const auto &[tv, error, degree, exact] : profiles)
+        {
+          largest = std::max(largest, error);
+          if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            std::printf("  T_v = %.4f: largest error %.3e; U %.5f against %.5f (error %.2e)\n",
+                        tv,
+                        error,
+                        degree,
+                        exact,
+                        degree - exact);
+        }
+      const bool ok = !(parameters.tolerance > 0.) || largest <= parameters.tolerance;
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          std::printf("Terzaghi: largest pore pressure error %.3e", largest);
+          if (parameters.tolerance > 0.)
+            std::printf(" <= %g: %s", parameters.tolerance, ok ? "yes" : "no");
+          std::printf("\n");
+          std::fflush(stdout);
+        }
+      return ok;
+    }
+
+
+
+    std::string
+    GranularWaterScene::checkpoint_signature() const
+    {
+      std::ostringstream out;
+      out.precision(12);
+      out << "granular water; grid " << fluid_parameters.lower_left << " to "
+          << fluid_parameters.upper_right << ", cell size " << fluid_parameters.cell_size
+          << "; grains " << parameters.grain_density << "; materials "
+          << soil_parameters.materials.size();
+      return out.str();
+    }
+
+
+
+    std::vector<std::string>
+    GranularWaterScene::growing_files() const
+    {
+      if (parameters.exact_solution != GranularExactSolution::terzaghi)
+        return {};
+      return {profile_file_name};
+    }
+
+
+
+    void
+    GranularWaterScene::save(io::CheckpointRecord &record)
+    {
+      const Engine::State state = engine->state();
+      record.put("skeleton/time", state.time);
+      record.put("skeleton/lost_mass", state.lost_mass);
+      record.put("skeleton/steps", state.n_steps);
+      record.put("fluid/time", fluid_solver->time);
+      record.put("fluid/last_dt", fluid_solver->last_dt);
+      record.put("fluid/steps", fluid_solver->n_steps);
+      record.put("fluid/water_outflow", fluid_solver->water_outflow);
+      record.put("fluid/last_iterations", static_cast<double>(last_report.flow.iterations));
+      record.put_files("skeleton/particle_files", particle_output.files);
+      record.put_files("fluid/field_files", fluid_output.files);
+      std::vector<double> flat;
+      for (const auto &row : profiles)
+        flat.insert(flat.end(), row.begin(), row.end());
+      record.put("granular/profiles", flat);
+    }
+
+
+
+    void
+    GranularWaterScene::save_data(const std::string &prefix)
+    {
+      engine->save(prefix);
+    }
+
+
+
+    void
+    GranularWaterScene::resume(const io::CheckpointRecord &record,
+                               const std::string          &prefix,
+                               dealii::TimerOutput        &timer_output)
+    {
+      timer = &timer_output;
+      dealii::TimerOutput::Scope scope(timer_output, "granular: setup");
+      create_solvers();
+      engine->load(prefix);
+      engine->set_state({record.get("skeleton/time"),
+                         record.get("skeleton/lost_mass"),
+                         record.get_unsigned("skeleton/steps")});
+      fluid_solver->time           = record.get("fluid/time");
+      fluid_solver->last_dt        = record.get("fluid/last_dt");
+      fluid_solver->n_steps        = record.get_unsigned("fluid/steps");
+      fluid_solver->water_outflow  = record.get("fluid/water_outflow");
+      last_report.flow.iterations  = static_cast<unsigned int>(record.get("fluid/last_iterations"));
+      particle_output.files        = record.get_files("skeleton/particle_files");
+      fluid_output.files           = record.get_files("fluid/field_files");
+      const auto &flat             = record.get_vector("granular/profiles");
+      if (flat.size() % 4 != 0)
+        throw InputError("Checkpoint/Resume",
+                         "granular/profiles",
+                         "rows of four numbers (damaged checkpoint)");
+      profiles.clear();
+      for (std::size_t k = 0; k < flat.size(); k += 4)
+        profiles.push_back({{flat[k], flat[k + 1], flat[k + 2], flat[k + 3]}});
+      open_profiles(true);
+    }
+  } // namespace granular
+} // namespace slidewave

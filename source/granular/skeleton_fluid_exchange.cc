@@ -1,0 +1,134 @@
+#include <algorithm>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <slidewave/granular/skeleton_fluid_exchange.h>
+#include <vector>
+
+namespace slidewave
+{
+  namespace granular
+  {
+    namespace
+    {
+      /** The smallest fluid fraction handed to the water (grains packed past 99 %). */
+      constexpr double min_fluid_fraction = 0.01;
+
+      /** The cell of @p field on the same cell as @p cell. */
+      template <class Cell>
+      dealii::DoFHandler<2>::active_cell_iterator
+      on(const Cell &cell, const grid::FiniteElementField &field)
+      {
+        return dealii::DoFHandler<2>::active_cell_iterator(&cell->get_triangulation(),
+                                                           cell->level(),
+                                                           cell->index(),
+                                                           &field.dof_handler());
+      }
+    } // namespace
+
+
+
+    SkeletonFluidExchange::SkeletonFluidExchange(const grid::BackgroundGrid          &grid,
+                                                 const fluid::FreeSurfaceParameters &parameters)
+      : grid(grid)
+      , parameters(parameters)
+    {
+    }
+
+
+
+    void
+    SkeletonFluidExchange::to_fluid(const grid::NodalWorkspace      &nodes,
+                                    const grid::VelocityConstraints &constraints,
+                                    const double                     empty_mass,
+                                    const SkeletonFields            &fields) const
+    {
+      using Vector = grid::NodalWorkspace::Vector;
+      Vector fraction(nodes.nodal_mass), inverse_permeability(nodes.nodal_mass),
+        vx(nodes.nodal_mass), vy(nodes.nodal_mass);
+      const unsigned int n_owned = nodes.nodal_mass.locally_owned_size();
+      const double       mu      = parameters.fluid.water_viscosity;
+      const Vector      &solid   = nodes.fields[0];
+      const Vector      &drag    = nodes.fields[1];
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          const double inverse_area = nodes.inverse_area[i];
+          const double n = std::clamp(1. - solid.local_element(i) * inverse_area,
+                                      min_fluid_fraction,
+                                      1.);
+          fraction.local_element(i)             = n;
+          inverse_permeability.local_element(i) = drag.local_element(i) * inverse_area / (n * n * mu);
+          const double m                        = nodes.nodal_mass.local_element(i);
+          vx.local_element(i) = m > empty_mass ? nodes.momentum[0].local_element(i) / m : 0.;
+          vy.local_element(i) = m > empty_mass ? nodes.momentum[1].local_element(i) / m : 0.;
+        }
+      // The skeleton's sides and walls hold its velocity: the water sees it held too.
+      constraints.apply(vx, vy);
+      for (Vector *v : {&fraction, &inverse_permeability, &vx, &vy})
+        v->update_ghost_values();
+      fields.fluid_fraction->copy_from_grid_nodes({&fraction});
+      fields.inverse_permeability->copy_from_grid_nodes({&inverse_permeability});
+      fields.solid_velocity->copy_from_grid_nodes({&vx, &vy});
+    }
+
+
+
+    void
+    SkeletonFluidExchange::to_skeleton(const grid::FiniteElementField              &flow,
+                                       const grid::FiniteElementField              &phase,
+                                       const SkeletonFields                        &fields,
+                                       std::array<grid::NodalWorkspace::Vector, 2> &force) const
+    {
+      // The same quadrature as the water's assembly (Q1: 2 x 2 Gauss points).
+      const dealii::QGauss<2>                  quadrature(flow.finite_element().degree + 1);
+      const unsigned int                       n_q = quadrature.size();
+      const dealii::FEValuesExtractors::Vector velocity(0);
+      const dealii::FEValuesExtractors::Scalar pressure(2);
+      dealii::FEValues<2>                      fv_flow(flow.finite_element(),
+                                  quadrature,
+                                  dealii::update_values | dealii::update_gradients);
+      dealii::FEValues<2> fv_scalar(phase.finite_element(), quadrature, dealii::update_values);
+      dealii::FEValues<2> fv_solid(fields.solid_velocity->finite_element(),
+                                   quadrature,
+                                   dealii::update_values);
+      dealii::FEValues<2> fv_grid(grid.dof_handler().get_fe(),
+                                  quadrature,
+                                  dealii::update_values | dealii::update_JxW_values);
+      std::vector<dealii::Tensor<1, 2>> grad_p(n_q), u(n_q), v_s(n_q);
+      std::vector<double>               n(n_q), inverse_permeability(n_q), phi(n_q);
+      std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
+      for (unsigned int d = 0; d < 2; ++d)
+        force[d] = 0.;
+      const auto &fluid = parameters.fluid;
+      for (const auto &cell : grid.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fv_scalar.reinit(on(cell, *fields.fluid_fraction));
+            fv_scalar.get_function_values(fields.fluid_fraction->values(0), n);
+            if (*std::min_element(n.begin(), n.end()) >= 1.)
+              continue; // no grains in the cell
+            fv_scalar.get_function_values(fields.inverse_permeability->values(0),
+                                          inverse_permeability);
+            fv_scalar.reinit(on(cell, phase));
+            fv_scalar.get_function_values(phase.values(0), phi);
+            fv_flow.reinit(on(cell, flow));
+            fv_flow[pressure].get_function_gradients(flow.values(0), grad_p);
+            fv_flow[velocity].get_function_values(flow.values(0), u);
+            fv_solid.reinit(on(cell, *fields.solid_velocity));
+            fv_solid[velocity].get_function_values(fields.solid_velocity->values(0), v_s);
+            fv_grid.reinit(cell);
+            cell->get_dof_indices(indices);
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const double C = n[q] * n[q] * fluid.viscosity(phi[q]) * inverse_permeability[q];
+                const dealii::Tensor<1, 2> traction
+                  = (-(1. - n[q]) * grad_p[q] + C * (u[q] - v_s[q])) * fv_grid.JxW(q);
+                for (unsigned int i = 0; i < indices.size(); ++i)
+                  for (unsigned int d = 0; d < 2; ++d)
+                    force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
+              }
+          }
+      for (unsigned int d = 0; d < 2; ++d)
+        force[d].compress(dealii::VectorOperation::add);
+    }
+  } // namespace granular
+} // namespace slidewave

@@ -535,6 +535,12 @@ namespace slidewave
                            + " (reduce 'Time stepping/Courant number' or 'Maximum time "
                              "step', or raise 'Linear solver/Maximum iterations')");
         }
+      catch (const dealii::ExceptionBase &)
+        {
+          // AztecOO's breakdown: a system with non-finite or degenerate entries.
+          throw RunFailure("the flow's linear solver (GMRES) broke down: the system is "
+                           "degenerate or not finite (reduce the time step)");
+        }
       report.assembly_time       = assembly_time;
       report.preconditioner_time = preconditioner_time;
       report.solve_time          = timer.wall_time() - assembly_time - preconditioner_time;

@@ -259,6 +259,15 @@ namespace slidewave
     void
     GranularWaterScene::check_set_up() const
     {
+      const double limit = soil::max_time_step_multiplier * stability_limit();
+      if (soil_parameters.fixed_time_step > limit)
+        throw InputError(soil_section + "/Fixed time step",
+                         to_string(soil_parameters.fixed_time_step),
+                         "a time step at most the stability limit of this scene, "
+                         "min(h / max(c_p + |v_p|), rho^s (1 - n) k / mu) / sqrt(2) = "
+                           + to_string(limit)
+                           + " s (the skeleton's Courant limit and the explicit coupling's, "
+                             "doc/granular-water.md)");
       core::check_step_count(scene,
                              step_limit(),
                              fluid_section + "/Time stepping/Maximum time step",
@@ -289,19 +298,26 @@ namespace slidewave
 
 
     double
+    GranularWaterScene::stability_limit() const
+    {
+      // The skeleton's P-wave crossing a cell (Eq. 23 with alpha = 1) and the explicit
+      // coupling's time scale rho^s (1 - n) k / mu (measured: the Terzaghi column blows up
+      // at 0.9 of it, doc/granular-water.md).
+      const double speed    = engine->max_signal_speed();
+      const double skeleton = speed > 0. ? soil_parameters.cell_size / speed :
+                                           std::numeric_limits<double>::infinity();
+      return std::min(skeleton, model->coupling_time_scale(engine->point_cloud()));
+    }
+
+
+
+    double
     GranularWaterScene::step_limit() const
     {
       if (soil_parameters.fixed_time_step > 0.)
         return soil_parameters.fixed_time_step;
-      // The water's Courant limit, the skeleton's (Eq. 23) and the explicit coupling's
-      // (below 2 rho^s (1 - n) k / mu: half of it).
-      const double speed = engine->max_signal_speed();
-      const double skeleton
-        = speed > 0. ? soil_parameters.time_step_multiplier * soil_parameters.cell_size / speed :
-                       std::numeric_limits<double>::infinity();
-      return std::min({fluid_solver->stable_time_step(),
-                       skeleton,
-                       model->coupling_time_scale(engine->point_cloud())});
+      return std::min(fluid_solver->stable_time_step(),
+                      soil_parameters.time_step_multiplier * stability_limit());
     }
 
 

@@ -129,8 +129,13 @@ namespace slidewave
       void
       write_profile(double tv, double time, const std::vector<double> &samples) const;
 
-      /** The largest stable step now: the fixed one, or the least of the water's
-       *  Courant limit, the skeleton's (Eq. 23) and the explicit coupling's (collective). */
+      /** min(h / max(c_p + |v_p|), the coupling's time scale): the skeleton's limits
+       *  before the multiplier (collective). */
+      double
+      stability_limit() const;
+
+      /** The step: the fixed one, or the least of the water's Courant limit and 'Time
+       *  step multiplier' times stability_limit() (collective). */
       double
       step_limit() const;
 

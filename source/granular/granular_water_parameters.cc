@@ -42,14 +42,21 @@ namespace slidewave
       {
         prm.declare_entry("Exact solution",
                           "none",
-                          Selection("none|Terzaghi"),
+                          Selection("none|Terzaghi|at rest"),
                           "'Terzaghi': one-dimensional consolidation of a column of height "
                           "'Column height' with a drained top and an impervious base under "
                           "'Top load' (Material 1 linear elastic, no gravity): the pore "
                           "pressure of the nodes in the column at the 'Time factors' "
                           "T_v = c_v t / H^2 against the series solution, normalized by the "
                           "load, and the average degree of consolidation U against "
-                          "1 - sum 2 / M^2 exp(-M^2 T_v).");
+                          "1 - sum 2 / M^2 exp(-M^2 T_v). 'at rest': a saturated column of "
+                          "height 'Column height' under water up to the grid's open top, "
+                          "settled under gravity by the end: the pore pressure of the nodes "
+                          "against rho^w g (top - y), relative to rho^w g H, and the points' "
+                          "effective stresses against the buoyant geostatic state "
+                          "sigma'_yy = -(rho_dry - (1 - n_0) rho^w) g (H - y), sigma'_xx = "
+                          "nu / (1 - nu) sigma'_yy (Material 1 linear elastic), relative "
+                          "to its value at the base.");
         prm.declare_entry("Column height", "1", Double(0.), "H of the column [m].");
         prm.declare_entry("Time factors",
                           "0.05, 0.1, 0.2, 0.5, 1",
@@ -86,8 +93,10 @@ namespace slidewave
           throw InputError(path + "/" + name, to_string(value), "a finite number > 0");
       prm.enter_subsection("Verification");
       {
-        exact_solution = prm.get("Exact solution") == "Terzaghi" ? GranularExactSolution::terzaghi :
-                                                                   GranularExactSolution::none;
+        const std::string exact = prm.get("Exact solution");
+        exact_solution          = exact == "Terzaghi" ? GranularExactSolution::terzaghi :
+                                  exact == "at rest"  ? GranularExactSolution::at_rest :
+                                                        GranularExactSolution::none;
         column_height  = prm.get_double("Column height");
         tolerance      = prm.get_double("Tolerance");
         const std::string name = path + "/Verification/Time factors";
@@ -103,10 +112,10 @@ namespace slidewave
           throw InputError(path + "/Top load",
                            to_string(top_load),
                            "a load > 0 with 'Exact solution = Terzaghi'");
-        if (exact_solution == GranularExactSolution::terzaghi && !(column_height > 0.))
+        if (exact_solution != GranularExactSolution::none && !(column_height > 0.))
           throw InputError(path + "/Verification/Column height",
                            to_string(column_height),
-                           "a height > 0 with 'Exact solution = Terzaghi'");
+                           "a height > 0 with an exact solution");
       }
       prm.leave_subsection();
     }

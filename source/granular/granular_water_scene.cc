@@ -12,7 +12,6 @@
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/granular/granular_water_scene.h>
-#include <slidewave/granular/terzaghi.h>
 #include <slidewave/soil/particle_properties.h>
 #include <sstream>
 
@@ -25,8 +24,6 @@ namespace slidewave
       const std::string section       = "Granular water";
       const std::string soil_section  = "Material points";
       const std::string fluid_section = "Free surface flow";
-      /** Terzaghi's pore pressure profiles, a row per height at each time factor. */
-      const std::string profile_file_name = "terzaghi_profiles.csv";
 
       /** Whether @p a and @p b agree to round-off relative to @p scale. */
       bool
@@ -53,6 +50,7 @@ namespace slidewave
       : scene(scene_parameters)
       , particle_output(scene_parameters.output_directory)
       , fluid_output(scene_parameters.output_directory, {})
+      , verification(scene_parameters, soil_parameters, fluid_parameters, parameters)
     {
       prm.enter_subsection(section);
       parameters.parse_parameters(prm, section);
@@ -121,14 +119,14 @@ namespace slidewave
                                + to_string(parameters.grain_density)
                                + " (an initial porosity in (0, 0.99])");
         }
-      if (parameters.exact_solution == GranularExactSolution::terzaghi)
+      if (parameters.exact_solution != GranularExactSolution::none)
         {
           if (soil_parameters.materials.empty()
               || soil_parameters.materials[0].model != materials::MaterialModel::linear_elastic)
             throw InputError(soil_section + "/Material 1/Model",
                              soil_parameters.materials.empty() ? "(none)" :
                                                                  soil_parameters.materials[0].name,
-                             "a linear elastic material with 'Exact solution = Terzaghi'");
+                             "a linear elastic material with an exact solution");
           if (parameters.permeability_law != PermeabilityLaw::constant)
             throw InputError(section + "/Permeability law",
                              "Kozeny-Carman",
@@ -229,7 +227,7 @@ namespace slidewave
         model->set_uniform_stress(engine->point_cloud());
       if (parameters.top_load > 0.)
         apply_top_load();
-      open_profiles(false);
+      verification.open_files(false);
     }
 
 
@@ -377,121 +375,7 @@ namespace slidewave
           if (!bad.empty())
             throw RunFailure(where + bad);
         }
-      if (parameters.exact_solution == GranularExactSolution::terzaghi)
-        while (profiles.size() < parameters.time_factors.size()
-               && time_factor(info.time) >= parameters.time_factors[profiles.size()] * (1. - 1e-12))
-          {
-            std::vector<double> samples;
-            const auto          e  = terzaghi_errors(&samples);
-            const double        tv = time_factor(info.time);
-            profiles.push_back({{tv, e[0], e[1], terzaghi_average_degree(tv)}});
-            write_profile(tv, info.time, samples);
-          }
-    }
-
-
-
-    double
-    GranularWaterScene::time_factor(const double t) const
-    {
-      const auto  &material = soil_parameters.materials[0];
-      const double c_v      = consolidation_coefficient(material.youngs_modulus,
-                                                   material.poisson_ratio,
-                                                   parameters.permeability,
-                                                   fluid_parameters.fluid.water_viscosity);
-      const double H        = parameters.column_height;
-      return c_v * (t - scene.start_time) / (H * H);
-    }
-
-
-
-    std::array<double, 2>
-    GranularWaterScene::terzaghi_errors(std::vector<double> *samples) const
-    {
-      const grid::FiniteElementField &flow = fluid_solver->flow_field();
-      const double                    H    = parameters.column_height;
-      const double                    base = fluid_parameters.lower_left[1];
-      const double                    p0   = parameters.top_load;
-      const double                    tv   = time_factor(engine->time());
-      const auto                     &fe   = flow.finite_element();
-      std::vector<dealii::types::global_dof_index> indices(fe.n_dofs_per_cell());
-      const dealii::QGauss<2>                      quadrature(2);
-      dealii::FEValues<2> fv(fe, quadrature, dealii::update_values | dealii::update_JxW_values);
-      const dealii::FEValuesExtractors::Scalar pressure(2);
-      std::vector<double>                      p(quadrature.size());
-      double                                   largest = 0., integral = 0., area = 0.;
-      for (const auto &cell : flow.dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned() && cell->center()[1] < base + H)
-          {
-            cell->get_dof_indices(indices);
-            for (unsigned int k = 0; k < indices.size(); ++k)
-              if (fe.system_to_component_index(k).first == 2)
-                {
-                  const double y     = cell->vertex(fe.system_to_component_index(k).second)[1];
-                  const double exact = p0 * terzaghi_pore_pressure((base + H - y) / H, tv);
-                  const double value = flow.values(0)[indices[k]];
-                  largest            = std::max(largest, std::abs(value - exact) / p0);
-                  if (samples)
-                    samples->insert(samples->end(), {y, value, exact});
-                }
-            fv.reinit(cell);
-            fv[pressure].get_function_values(flow.values(0), p);
-            for (unsigned int q = 0; q < p.size(); ++q)
-              {
-                integral += p[q] * fv.JxW(q);
-                area += fv.JxW(q);
-              }
-          }
-      largest  = dealii::Utilities::MPI::max(largest, MPI_COMM_WORLD);
-      integral = dealii::Utilities::MPI::sum(integral, MPI_COMM_WORLD);
-      area     = dealii::Utilities::MPI::sum(area, MPI_COMM_WORLD);
-      return {{largest, 1. - integral / (p0 * area)}};
-    }
-
-
-
-    void
-    GranularWaterScene::open_profiles(const bool append)
-    {
-      if (parameters.exact_solution != GranularExactSolution::terzaghi
-          || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
-        return;
-      const std::string file = scene.output_directory + "/" + profile_file_name;
-      profile_file = std::make_unique<std::ofstream>(file, append ? std::ios::app : std::ios::out);
-      require_written(*profile_file, file);
-      profile_file->precision(10);
-      if (!append)
-        *profile_file << "time_factor,time,y,pore_pressure,exact\n";
-    }
-
-
-
-    void
-    GranularWaterScene::write_profile(const double               tv,
-                                      const double               time,
-                                      const std::vector<double> &samples) const
-    {
-      // Every node's (y, p, exact) on rank 0, sorted by height and averaged over each row
-      // of nodes (the nodes of a row share one exact value).
-      const auto all = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, samples, 0);
-      if (!profile_file)
-        return;
-      std::map<long long, std::array<double, 4>> rows; // y / h rounded: sum y, p, exact, count
-      const double h = fluid_parameters.cell_size;
-      for (const auto &part : all)
-        for (std::size_t k = 0; k + 2 < part.size(); k += 3)
-          {
-            auto &row = rows[std::llround(part[k] / h * 1e3)];
-            row[0] += part[k];
-            row[1] += part[k + 1];
-            row[2] += part[k + 2];
-            row[3] += 1.;
-          }
-      for (const auto &[key, row] : rows)
-        *profile_file << tv << ',' << time << ',' << row[0] / row[3] << ',' << row[1] / row[3]
-                      << ',' << row[2] / row[3] << '\n';
-      profile_file->flush();
-      require_written(*profile_file, scene.output_directory + "/" + profile_file_name);
+      verification.after_step(info.time, fluid_solver->flow_field());
     }
 
 
@@ -521,15 +405,7 @@ namespace slidewave
       statistics.add_value("skeleton_max_speed", skeleton.max_speed);
       statistics.add_value("skeleton_momentum_y", skeleton.momentum_y);
       statistics.add_value("flow_iterations", last_report.flow.iterations);
-      if (parameters.exact_solution == GranularExactSolution::terzaghi)
-        {
-          const auto   e  = terzaghi_errors(nullptr);
-          const double tv = time_factor(info.time);
-          statistics.add_value("time_factor", tv);
-          statistics.add_value("pore_pressure_error", e[0]);
-          statistics.add_value("consolidation_degree", e[1]);
-          statistics.add_value("consolidation_degree_exact", terzaghi_average_degree(tv));
-        }
+      verification.add_statistics(statistics, info.time, fluid_solver->flow_field());
     }
 
 
@@ -537,34 +413,7 @@ namespace slidewave
     bool
     GranularWaterScene::finish(const StepInfo &)
     {
-      if (parameters.exact_solution != GranularExactSolution::terzaghi)
-        return true;
-      double largest = profiles.size() < parameters.time_factors.size() ? 1. : 0.;
-      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        std::printf("Terzaghi consolidation (error of the nodes' pore pressure relative to the "
-                    "load p0 = %g Pa):\n",
-                    parameters.top_load);
-      for (const auto &[tv, error, degree, exact] : profiles)
-        {
-          largest = std::max(largest, error);
-          if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-            std::printf("  T_v = %.4f: largest error %.3e; U %.5f against %.5f (error %.2e)\n",
-                        tv,
-                        error,
-                        degree,
-                        exact,
-                        degree - exact);
-        }
-      const bool ok = !(parameters.tolerance > 0.) || largest <= parameters.tolerance;
-      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        {
-          std::printf("Terzaghi: largest pore pressure error %.3e", largest);
-          if (parameters.tolerance > 0.)
-            std::printf(" <= %g: %s", parameters.tolerance, ok ? "yes" : "no");
-          std::printf("\n");
-          std::fflush(stdout);
-        }
-      return ok;
+      return verification.finish(fluid_solver->flow_field(), engine->point_cloud());
     }
 
 
@@ -586,9 +435,7 @@ namespace slidewave
     std::vector<std::string>
     GranularWaterScene::growing_files() const
     {
-      if (parameters.exact_solution != GranularExactSolution::terzaghi)
-        return {};
-      return {profile_file_name};
+      return verification.growing_files();
     }
 
 
@@ -607,10 +454,7 @@ namespace slidewave
       record.put("fluid/last_iterations", static_cast<double>(last_report.flow.iterations));
       record.put_files("skeleton/particle_files", particle_output.files);
       record.put_files("fluid/field_files", fluid_output.files);
-      std::vector<double> flat;
-      for (const auto &row : profiles)
-        flat.insert(flat.end(), row.begin(), row.end());
-      record.put("granular/profiles", flat);
+      verification.save(record);
     }
 
 
@@ -642,15 +486,8 @@ namespace slidewave
       last_report.flow.iterations  = static_cast<unsigned int>(record.get("fluid/last_iterations"));
       particle_output.files        = record.get_files("skeleton/particle_files");
       fluid_output.files           = record.get_files("fluid/field_files");
-      const auto &flat             = record.get_vector("granular/profiles");
-      if (flat.size() % 4 != 0)
-        throw InputError("Checkpoint/Resume",
-                         "granular/profiles",
-                         "rows of four numbers (damaged checkpoint)");
-      profiles.clear();
-      for (std::size_t k = 0; k < flat.size(); k += 4)
-        profiles.push_back({{flat[k], flat[k + 1], flat[k + 2], flat[k + 3]}});
-      open_profiles(true);
+      verification.load(record);
+      verification.open_files(true);
     }
   } // namespace granular
 } // namespace slidewave

@@ -20,7 +20,8 @@ namespace slidewave
     enum class GranularExactSolution
     {
       none,
-      terzaghi ///< one-dimensional consolidation under a top load (paper 002, §4.1)
+      terzaghi, ///< one-dimensional consolidation under a top load (paper 002, §4.1)
+      at_rest   ///< a saturated column settled under gravity: hydrostatic and geostatic
     };
 
     /**

@@ -4,7 +4,6 @@
 #include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
-#include <fstream>
 #include <memory>
 #include <slidewave/core/memory_estimate.h>
 #include <slidewave/core/scene_parameters.h>
@@ -13,6 +12,7 @@
 #include <slidewave/fluid/free_surface_output.h>
 #include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/fluid/free_surface_solver.h>
+#include <slidewave/granular/granular_verification.h>
 #include <slidewave/granular/granular_water_parameters.h>
 #include <slidewave/granular/porous_skeleton_model.h>
 #include <slidewave/granular/skeleton_fluid_exchange.h>
@@ -114,21 +114,6 @@ namespace slidewave
       void
       apply_top_load();
 
-      /** The largest error of the pore pressure at the nodes of the column against
-       *  Terzaghi's at the current time, relative to the load, and the average degree of
-       *  consolidation from the pore pressure (collective); the owned nodes' (y, p, exact)
-       *  appended to @p samples unless null. */
-      std::array<double, 2>
-      terzaghi_errors(std::vector<double> *samples) const;
-
-      /** terzaghi_profiles.csv: created, or continued by a resumed run (rank 0). */
-      void
-      open_profiles(bool append);
-
-      /** The profile of @p samples (every rank's) at time factor @p tv (collective). */
-      void
-      write_profile(double tv, double time, const std::vector<double> &samples) const;
-
       /** min(h / max(c_p + |v_p|), the coupling's time scale): the skeleton's limits
        *  before the multiplier (collective). */
       double
@@ -138,10 +123,6 @@ namespace slidewave
        *  step multiplier' times stability_limit() (collective). */
       double
       step_limit() const;
-
-      /** T_v of time @p t. */
-      double
-      time_factor(double t) const;
 
       const SceneParameters                &scene;
       soil::MaterialPointParameters         soil_parameters;
@@ -159,11 +140,7 @@ namespace slidewave
       dealii::TimerOutput                        *timer = nullptr;
       fluid::FluidStepReport                      last_report;
       unsigned int                                check_interval = 10;
-
-      /** Terzaghi: per time factor reached, (T_v, largest pore pressure error, U from
-       *  the pressure, U exact). */
-      std::vector<std::array<double, 4>> profiles;
-      std::unique_ptr<std::ofstream>     profile_file;
+      GranularVerification                        verification;
     };
   } // namespace granular
 } // namespace slidewave

@@ -1,0 +1,104 @@
+#ifndef slidewave_granular_granular_verification_h
+#define slidewave_granular_granular_verification_h
+
+#include <array>
+#include <fstream>
+#include <memory>
+#include <slidewave/core/scene_parameters.h>
+#include <slidewave/core/statistics.h>
+#include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/grid/finite_element_field.h>
+#include <slidewave/granular/granular_water_parameters.h>
+#include <slidewave/io/checkpoint_record.h>
+#include <slidewave/particles/point_cloud.h>
+#include <slidewave/soil/material_point_parameters.h>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace granular
+  {
+    /**
+     * The exact solutions of a granular-water scene ('Granular water/Verification'):
+     *
+     * - Terzaghi: at each 'Time factors' T_v the largest error of the nodes' pore pressure
+     *   in the column against the series (terzaghi.h), relative to the load, and the
+     *   average degree of consolidation U = 1 - integral p / (p0 area) against the exact
+     *   one; each profile (nodes' rows averaged) into terzaghi_profiles.csv;
+     * - at rest: at the end, the nodes' pore pressure against rho^w g (top - y), relative to
+     *   rho^w g H, and the points' effective stresses against the buoyant geostatic state,
+     *   relative to its value at the base.
+     *
+     * Its state (the profiles so far) goes into the checkpoints.
+     */
+    class GranularVerification
+    {
+    public:
+      GranularVerification(const SceneParameters               &scene,
+                           const soil::MaterialPointParameters &soil_parameters,
+                           const fluid::FreeSurfaceParameters  &fluid_parameters,
+                           const GranularWaterParameters       &parameters);
+
+      /** terzaghi_profiles.csv: created, or continued by a resumed run (rank 0). */
+      void
+      open_files(bool append);
+
+      /** Records the profiles due by @p time from the water's @p flow (collective). */
+      void
+      after_step(double time, const grid::FiniteElementField &flow);
+
+      /** The verification's columns of a statistics row (collective). */
+      void
+      add_statistics(Statistics &statistics, double time, const grid::FiniteElementField &flow) const;
+
+      /** Prints the comparison (rank 0); returns whether it is within 'Tolerance'
+       *  (collective). */
+      bool
+      finish(const grid::FiniteElementField &flow, const particles::PointCloud &cloud) const;
+
+      /** The files that grow during the run (for the checkpoints). */
+      std::vector<std::string>
+      growing_files() const;
+
+      void
+      save(io::CheckpointRecord &record) const;
+
+      void
+      load(const io::CheckpointRecord &record);
+
+    private:
+      /** T_v of time @p t. */
+      double
+      time_factor(double t) const;
+
+      /** Terzaghi: the largest relative error of the nodes' pore pressure and U from the
+       *  pore pressure at @p time (collective); the owned nodes' (y, p, exact) appended to
+       *  @p samples unless null. */
+      std::array<double, 2>
+      terzaghi_errors(const grid::FiniteElementField &flow,
+                      double                          time,
+                      std::vector<double>            *samples) const;
+
+      /** The profile of @p samples (every rank's) at @p tv (collective). */
+      void
+      write_profile(double tv, double time, const std::vector<double> &samples) const;
+
+      /** At rest: the pore pressure's and the effective stresses' errors (collective). */
+      std::array<double, 2>
+      at_rest_errors(const grid::FiniteElementField &flow,
+                     const particles::PointCloud    &cloud) const;
+
+      const SceneParameters               &scene;
+      const soil::MaterialPointParameters &soil_parameters;
+      const fluid::FreeSurfaceParameters  &fluid_parameters;
+      const GranularWaterParameters       &parameters;
+      /** Per time factor reached: T_v, largest pore pressure error, U from the pressure,
+       *  U exact. */
+      std::vector<std::array<double, 4>> profiles;
+      std::unique_ptr<std::ofstream>     profile_file;
+    };
+  } // namespace granular
+} // namespace slidewave
+
+#endif

@@ -1,0 +1,324 @@
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <map>
+#include <slidewave/core/input_error.h>
+#include <slidewave/granular/granular_verification.h>
+#include <slidewave/granular/terzaghi.h>
+#include <slidewave/soil/particle_properties.h>
+
+namespace slidewave
+{
+  namespace granular
+  {
+    namespace
+    {
+      /** Terzaghi's pore pressure profiles, a row per height at each time factor. */
+      const std::string profile_file_name = "terzaghi_profiles.csv";
+
+      bool
+      is_root()
+      {
+        return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      }
+
+      /** Calls @p f(y, p) for the pressure dofs of every owned cell of @p flow (a node
+       *  shared by cells is visited once per cell: the callers take maxima). */
+      template <class Function>
+      void
+      for_each_pressure_node(const grid::FiniteElementField &flow, const Function &f)
+      {
+        const auto                                  &fe = flow.finite_element();
+        std::vector<dealii::types::global_dof_index> indices(fe.n_dofs_per_cell());
+        for (const auto &cell : flow.dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(indices);
+              for (unsigned int k = 0; k < indices.size(); ++k)
+                if (fe.system_to_component_index(k).first == 2)
+                  f(cell->vertex(fe.system_to_component_index(k).second)[1],
+                    flow.values(0)[indices[k]]);
+            }
+      }
+    } // namespace
+
+
+
+    GranularVerification::GranularVerification(const SceneParameters               &scene,
+                                               const soil::MaterialPointParameters &soil_parameters,
+                                               const fluid::FreeSurfaceParameters  &fluid_parameters,
+                                               const GranularWaterParameters       &parameters)
+      : scene(scene)
+      , soil_parameters(soil_parameters)
+      , fluid_parameters(fluid_parameters)
+      , parameters(parameters)
+    {
+    }
+
+
+
+    void
+    GranularVerification::open_files(const bool append)
+    {
+      if (parameters.exact_solution != GranularExactSolution::terzaghi || !is_root())
+        return;
+      const std::string file = scene.output_directory + "/" + profile_file_name;
+      profile_file = std::make_unique<std::ofstream>(file, append ? std::ios::app : std::ios::out);
+      require_written(*profile_file, file);
+      profile_file->precision(10);
+      if (!append)
+        *profile_file << "time_factor,time,y,pore_pressure,exact\n";
+    }
+
+
+
+    std::vector<std::string>
+    GranularVerification::growing_files() const
+    {
+      if (parameters.exact_solution != GranularExactSolution::terzaghi)
+        return {};
+      return {profile_file_name};
+    }
+
+
+
+    double
+    GranularVerification::time_factor(const double t) const
+    {
+      const auto  &material = soil_parameters.materials[0];
+      const double c_v      = consolidation_coefficient(material.youngs_modulus,
+                                                   material.poisson_ratio,
+                                                   parameters.permeability,
+                                                   fluid_parameters.fluid.water_viscosity);
+      const double H        = parameters.column_height;
+      return c_v * (t - scene.start_time) / (H * H);
+    }
+
+
+
+    void
+    GranularVerification::after_step(const double time, const grid::FiniteElementField &flow)
+    {
+      if (parameters.exact_solution != GranularExactSolution::terzaghi)
+        return;
+      while (profiles.size() < parameters.time_factors.size()
+             && time_factor(time) >= parameters.time_factors[profiles.size()] * (1. - 1e-12))
+        {
+          std::vector<double> samples;
+          const auto          e  = terzaghi_errors(flow, time, &samples);
+          const double        tv = time_factor(time);
+          profiles.push_back({{tv, e[0], e[1], terzaghi_average_degree(tv)}});
+          write_profile(tv, time, samples);
+        }
+    }
+
+
+
+    std::array<double, 2>
+    GranularVerification::terzaghi_errors(const grid::FiniteElementField &flow,
+                                          const double                    time,
+                                          std::vector<double>            *samples) const
+    {
+      const double H    = parameters.column_height;
+      const double base = fluid_parameters.lower_left[1];
+      const double p0   = parameters.top_load;
+      const double tv   = time_factor(time);
+      double       largest = 0.;
+      for_each_pressure_node(flow, [&](const double y, const double p) {
+        if (y > base + H)
+          return;
+        const double exact = p0 * terzaghi_pore_pressure((base + H - y) / H, tv);
+        largest            = std::max(largest, std::abs(p - exact) / p0);
+        if (samples)
+          samples->insert(samples->end(), {y, p, exact});
+      });
+      // U from the pore pressure: 1 - its integral over the column / (p0 area).
+      const dealii::QGauss<2>                  quadrature(2);
+      dealii::FEValues<2>                      fv(flow.finite_element(),
+                             quadrature,
+                             dealii::update_values | dealii::update_JxW_values);
+      const dealii::FEValuesExtractors::Scalar pressure(2);
+      std::vector<double>                      p(quadrature.size());
+      double                                   integral = 0., area = 0.;
+      for (const auto &cell : flow.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned() && cell->center()[1] < base + H)
+          {
+            fv.reinit(cell);
+            fv[pressure].get_function_values(flow.values(0), p);
+            for (unsigned int q = 0; q < p.size(); ++q)
+              {
+                integral += p[q] * fv.JxW(q);
+                area += fv.JxW(q);
+              }
+          }
+      largest  = dealii::Utilities::MPI::max(largest, MPI_COMM_WORLD);
+      integral = dealii::Utilities::MPI::sum(integral, MPI_COMM_WORLD);
+      area     = dealii::Utilities::MPI::sum(area, MPI_COMM_WORLD);
+      return {{largest, 1. - integral / (p0 * area)}};
+    }
+
+
+
+    void
+    GranularVerification::write_profile(const double               tv,
+                                        const double               time,
+                                        const std::vector<double> &samples) const
+    {
+      // Every node's (y, p, exact) on rank 0, sorted by height and averaged over each row
+      // of nodes (the nodes of a row share one exact value).
+      const auto all = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, samples, 0);
+      if (!profile_file)
+        return;
+      std::map<long long, std::array<double, 4>> rows; // y / h rounded: sum y, p, exact, count
+      const double h = fluid_parameters.cell_size;
+      for (const auto &part : all)
+        for (std::size_t k = 0; k + 2 < part.size(); k += 3)
+          {
+            auto &row = rows[std::llround(part[k] / h * 1e3)];
+            row[0] += part[k];
+            row[1] += part[k + 1];
+            row[2] += part[k + 2];
+            row[3] += 1.;
+          }
+      for (const auto &[key, row] : rows)
+        *profile_file << tv << ',' << time << ',' << row[0] / row[3] << ',' << row[1] / row[3]
+                      << ',' << row[2] / row[3] << '\n';
+      profile_file->flush();
+      require_written(*profile_file, scene.output_directory + "/" + profile_file_name);
+    }
+
+
+
+    std::array<double, 2>
+    GranularVerification::at_rest_errors(const grid::FiniteElementField &flow,
+                                         const particles::PointCloud    &cloud) const
+    {
+      const double g     = fluid_parameters.fluid.gravity.norm();
+      const double rho_w = fluid_parameters.fluid.water_density;
+      const double top   = fluid_parameters.upper_right[1];
+      const double base  = fluid_parameters.lower_left[1];
+      const double H     = parameters.column_height;
+      double       pore  = 0.;
+      for_each_pressure_node(flow, [&](const double y, const double p) {
+        pore = std::max(pore, std::abs(p - rho_w * g * (top - y)) / (rho_w * g * H));
+      });
+      // The buoyant weight of the skeleton per unit volume: its grains' weight less the
+      // water they displace, (rho_dry - (1 - n_0) rho^w) g.
+      const auto  &material = soil_parameters.materials[0];
+      const double solid    = material.density / parameters.grain_density;
+      const double buoyant  = (material.density - solid * rho_w) * g;
+      const double K0       = material.poisson_ratio / (1. - material.poisson_ratio);
+      double       stress   = 0.;
+      for (const auto &particle : cloud.particles())
+        {
+          const auto   q     = particle.get_properties();
+          const double exact = -buoyant * (base + H - q[soil::property::initial_y]);
+          stress             = std::max({stress,
+                                          std::abs(q[soil::property::stress_yy] - exact),
+                                          std::abs(q[soil::property::stress_xx] - K0 * exact)});
+        }
+      return {{dealii::Utilities::MPI::max(pore, MPI_COMM_WORLD),
+               dealii::Utilities::MPI::max(stress, MPI_COMM_WORLD) / (buoyant * H)}};
+    }
+
+
+
+    void
+    GranularVerification::add_statistics(Statistics                     &statistics,
+                                         const double                    time,
+                                         const grid::FiniteElementField &flow) const
+    {
+      if (parameters.exact_solution != GranularExactSolution::terzaghi)
+        return;
+      const auto   e  = terzaghi_errors(flow, time, nullptr);
+      const double tv = time_factor(time);
+      statistics.add_value("time_factor", tv);
+      statistics.add_value("pore_pressure_error", e[0]);
+      statistics.add_value("consolidation_degree", e[1]);
+      statistics.add_value("consolidation_degree_exact", terzaghi_average_degree(tv));
+    }
+
+
+
+    bool
+    GranularVerification::finish(const grid::FiniteElementField &flow,
+                                 const particles::PointCloud    &cloud) const
+    {
+      double largest = 0.;
+      if (parameters.exact_solution == GranularExactSolution::terzaghi)
+        {
+          largest = profiles.size() < parameters.time_factors.size() ? 1. : 0.;
+          if (is_root())
+            std::printf("Terzaghi consolidation (error of the nodes' pore pressure relative "
+                        "to the load p0 = %g Pa):\n",
+                        parameters.top_load);
+          for (const auto &[tv, error, degree, exact] : profiles)
+            {
+              largest = std::max(largest, error);
+              if (is_root())
+                std::printf("  T_v = %.4f: largest error %.3e; U %.5f against %.5f (error "
+                            "%.2e)\n",
+                            tv,
+                            error,
+                            degree,
+                            exact,
+                            degree - exact);
+            }
+          if (is_root())
+            std::printf("Terzaghi: largest pore pressure error %.3e", largest);
+        }
+      else if (parameters.exact_solution == GranularExactSolution::at_rest)
+        {
+          const auto e = at_rest_errors(flow, cloud);
+          largest      = std::max(e[0], e[1]);
+          if (is_root())
+            std::printf("Saturated column at rest: pore pressure against hydrostatic %.3e "
+                        "(of rho g H), effective stresses against the buoyant geostatic "
+                        "state %.3e (of its value at the base); largest %.3e",
+                        e[0],
+                        e[1],
+                        largest);
+        }
+      else
+        return true;
+      const bool ok = !(parameters.tolerance > 0.) || largest <= parameters.tolerance;
+      if (is_root())
+        {
+          if (parameters.tolerance > 0.)
+            std::printf(" <= %g: %s", parameters.tolerance, ok ? "yes" : "no");
+          std::printf("\n");
+          std::fflush(stdout);
+        }
+      return ok;
+    }
+
+
+
+    void
+    GranularVerification::save(io::CheckpointRecord &record) const
+    {
+      std::vector<double> flat;
+      for (const auto &row : profiles)
+        flat.insert(flat.end(), row.begin(), row.end());
+      record.put("granular/profiles", flat);
+    }
+
+
+
+    void
+    GranularVerification::load(const io::CheckpointRecord &record)
+    {
+      const auto &flat = record.get_vector("granular/profiles");
+      if (flat.size() % 4 != 0)
+        throw InputError("Checkpoint/Resume",
+                         "granular/profiles",
+                         "rows of four numbers (damaged checkpoint)");
+      profiles.clear();
+      for (std::size_t k = 0; k < flat.size(); k += 4)
+        profiles.push_back({{flat[k], flat[k + 1], flat[k + 2], flat[k + 3]}});
+    }
+  } // namespace granular
+} // namespace slidewave

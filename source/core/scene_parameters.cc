@@ -104,8 +104,8 @@ namespace slidewave
     prm.declare_entry(
       "Physics",
       "none",
-      Selection(
-        "none|shallow water|material points|coupled|depth averaged|free surface flow|granular water"),
+      Selection("none|shallow water|material points|coupled|depth averaged|free surface "
+                "flow|granular water"),
       "The physics this scene switches on. 'shallow water': the 1D "
       "well-balanced finite-volume water column of paper 000 (subsection "
       "'Shallow water'). 'material points': the 2D plane-strain material "

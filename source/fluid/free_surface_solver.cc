@@ -184,8 +184,10 @@ namespace slidewave
     {
       fluid_fraction       = std::make_unique<grid::FiniteElementField>(grid);
       inverse_permeability = std::make_unique<grid::FiniteElementField>(grid);
-      solid_velocity       = std::make_unique<grid::FiniteElementField>(
-        grid, dealii::FESystem<2>(dealii::FE_Q<2>(1), 2), 1);
+      solid_velocity
+        = std::make_unique<grid::FiniteElementField>(grid,
+                                                     dealii::FESystem<2>(dealii::FE_Q<2>(1), 2),
+                                                     1);
       PorousMedium medium;
       medium.fluid_fraction       = fluid_fraction.get();
       medium.inverse_permeability = inverse_permeability.get();

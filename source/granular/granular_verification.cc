@@ -49,8 +49,8 @@ namespace slidewave
 
     GranularVerification::GranularVerification(const SceneParameters               &scene,
                                                const soil::MaterialPointParameters &soil_parameters,
-                                               const fluid::FreeSurfaceParameters  &fluid_parameters,
-                                               const GranularWaterParameters       &parameters)
+                                               const fluid::FreeSurfaceParameters &fluid_parameters,
+                                               const GranularWaterParameters      &parameters)
       : scene(scene)
       , soil_parameters(soil_parameters)
       , fluid_parameters(fluid_parameters)
@@ -122,10 +122,10 @@ namespace slidewave
                                           const double                    time,
                                           std::vector<double>            *samples) const
     {
-      const double H    = parameters.column_height;
-      const double base = fluid_parameters.lower_left[1];
-      const double p0   = parameters.top_load;
-      const double tv   = time_factor(time);
+      const double H       = parameters.column_height;
+      const double base    = fluid_parameters.lower_left[1];
+      const double p0      = parameters.top_load;
+      const double tv      = time_factor(time);
       double       largest = 0.;
       for_each_pressure_node(flow, [&](const double y, const double p) {
         if (y > base + H)
@@ -173,7 +173,7 @@ namespace slidewave
       if (!profile_file)
         return;
       std::map<long long, std::array<double, 4>> rows; // y / h rounded: sum y, p, exact, count
-      const double h = fluid_parameters.cell_size;
+      const double                               h = fluid_parameters.cell_size;
       for (const auto &part : all)
         for (std::size_t k = 0; k + 2 < part.size(); k += 3)
           {
@@ -217,8 +217,8 @@ namespace slidewave
           const auto   q     = particle.get_properties();
           const double exact = -buoyant * (base + H - q[soil::property::initial_y]);
           stress             = std::max({stress,
-                                          std::abs(q[soil::property::stress_yy] - exact),
-                                          std::abs(q[soil::property::stress_xx] - K0 * exact)});
+                                         std::abs(q[soil::property::stress_yy] - exact),
+                                         std::abs(q[soil::property::stress_xx] - K0 * exact)});
         }
       return {{dealii::Utilities::MPI::max(pore, MPI_COMM_WORLD),
                dealii::Utilities::MPI::max(stress, MPI_COMM_WORLD) / (buoyant * H)}};

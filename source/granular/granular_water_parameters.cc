@@ -85,10 +85,10 @@ namespace slidewave
       permeability     = prm.get_double("Permeability");
       d50              = prm.get_double("D50");
       top_load         = prm.get_double("Top load");
-      for (const auto &[name, value] : {std::pair<std::string, double>{"Grain density",
-                                                                       grain_density},
-                                        {"Permeability", permeability},
-                                        {"D50", d50}})
+      for (const auto &[name, value] :
+           {std::pair<std::string, double>{"Grain density", grain_density},
+            {"Permeability", permeability},
+            {"D50", d50}})
         if (!(value > 0.) || !std::isfinite(value))
           throw InputError(path + "/" + name, to_string(value), "a finite number > 0");
       prm.enter_subsection("Verification");
@@ -97,10 +97,10 @@ namespace slidewave
         exact_solution          = exact == "Terzaghi" ? GranularExactSolution::terzaghi :
                                   exact == "at rest"  ? GranularExactSolution::at_rest :
                                                         GranularExactSolution::none;
-        column_height  = prm.get_double("Column height");
-        tolerance      = prm.get_double("Tolerance");
-        const std::string name = path + "/Verification/Time factors";
-        time_factors           = parse_number_list(name,
+        column_height           = prm.get_double("Column height");
+        tolerance               = prm.get_double("Tolerance");
+        const std::string name  = path + "/Verification/Time factors";
+        time_factors            = parse_number_list(name,
                                          prm.get("Time factors"),
                                          "comma-separated numbers > 0, increasing");
         for (unsigned int i = 0; i < time_factors.size(); ++i)

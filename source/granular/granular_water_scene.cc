@@ -76,8 +76,8 @@ namespace slidewave
       if (!same(soil_parameters.cell_size, fluid_parameters.cell_size, fluid_parameters.cell_size))
         throw InputError(soil_section + "/Grid/Cell size",
                          to_string(soil_parameters.cell_size),
-                         "the same as '" + fluid_section + "/Grid/Cell size' = "
-                           + to_string(fluid_parameters.cell_size)
+                         "the same as '" + fluid_section
+                           + "/Grid/Cell size' = " + to_string(fluid_parameters.cell_size)
                            + " (the skeleton and the water share one grid)");
       if (fluid_parameters.element_degree != 1)
         throw InputError(fluid_section + "/Finite elements/Degree",
@@ -85,9 +85,9 @@ namespace slidewave
                          "1 with Physics = granular water (the skeleton's nodes are the "
                          "vertices)");
       if (soil_parameters.adaptivity.enabled || fluid_parameters.adaptive)
-        throw InputError(soil_parameters.adaptivity.enabled ? soil_section + "/Adaptive grid/Enable" :
-                                                              fluid_section
-                                                                + "/Adaptive grid/Enable",
+        throw InputError(soil_parameters.adaptivity.enabled ?
+                           soil_section + "/Adaptive grid/Enable" :
+                           fluid_section + "/Adaptive grid/Enable",
                          "true",
                          "false with Physics = granular water (not yet adaptive)");
       if (!fluid_parameters.porosity.empty())
@@ -114,9 +114,8 @@ namespace slidewave
           if (!(n0 > 0. && n0 <= 0.99))
             throw InputError(soil_section + "/Material '" + material.name + "'/Density",
                              to_string(material.density),
-                             "a dry density (1 - n_0) rho^s between 0.01 and 1 times '"
-                               + section + "/Grain density' = "
-                               + to_string(parameters.grain_density)
+                             "a dry density (1 - n_0) rho^s between 0.01 and 1 times '" + section
+                               + "/Grain density' = " + to_string(parameters.grain_density)
                                + " (an initial porosity in (0, 0.99])");
         }
       if (parameters.exact_solution != GranularExactSolution::none)
@@ -156,10 +155,11 @@ namespace slidewave
     {
       core::MemoryEstimate estimate;
       soil_parameters.add_to_memory_estimate(estimate, soil_section);
-      const double nx = std::round((fluid_parameters.upper_right[0] - fluid_parameters.lower_left[0])
-                                   / fluid_parameters.cell_size),
-                   ny = std::round((fluid_parameters.upper_right[1] - fluid_parameters.lower_left[1])
-                                   / fluid_parameters.cell_size);
+      const double nx
+        = std::round((fluid_parameters.upper_right[0] - fluid_parameters.lower_left[0])
+                     / fluid_parameters.cell_size),
+        ny = std::round((fluid_parameters.upper_right[1] - fluid_parameters.lower_left[1])
+                        / fluid_parameters.cell_size);
       // Flow (Q1^2-Q1), phase field and the skeleton's fields (fluid fraction, inverse
       // permeability, velocity): eight unknowns per node.
       estimate.add("water unknowns",
@@ -246,8 +246,9 @@ namespace slidewave
                               [&](const dealii::Particles::ParticleAccessor<2> &particle) {
                                 dealii::Tensor<1, 2> force;
                                 if (particle.get_location()[1] > top - row)
-                                  force[1] = -load * 2.
-                                             * particle.get_properties()[soil::property::domain_half_x];
+                                  force[1]
+                                    = -load * 2.
+                                      * particle.get_properties()[soil::property::domain_half_x];
                                 return force;
                               });
     }
@@ -279,9 +280,9 @@ namespace slidewave
     GranularWaterScene::description() const
     {
       return "Granular water: " + std::to_string(grid->triangulation().n_global_active_cells())
-             + " cells, "
-             + std::to_string(engine->point_cloud().particles().n_global_particles())
-             + " skeleton points, " + std::to_string(fluid_solver->flow_field().dof_handler().n_dofs())
+             + " cells, " + std::to_string(engine->point_cloud().particles().n_global_particles())
+             + " skeleton points, "
+             + std::to_string(fluid_solver->flow_field().dof_handler().n_dofs())
              + " flow unknowns; output in " + scene.output_directory;
     }
 
@@ -301,9 +302,9 @@ namespace slidewave
       // The skeleton's P-wave crossing a cell (Eq. 23 with alpha = 1) and the explicit
       // coupling's time scale rho^s (1 - n) k / mu (measured: the Terzaghi column blows up
       // at 0.9 of it, doc/granular-water.md).
-      const double speed    = engine->max_signal_speed();
-      const double skeleton = speed > 0. ? soil_parameters.cell_size / speed :
-                                           std::numeric_limits<double>::infinity();
+      const double speed = engine->max_signal_speed();
+      const double skeleton
+        = speed > 0. ? soil_parameters.cell_size / speed : std::numeric_limits<double>::infinity();
       return std::min(skeleton, model->coupling_time_scale(engine->point_cloud()));
     }
 
@@ -364,11 +365,12 @@ namespace slidewave
     GranularWaterScene::after_step(const StepInfo &info)
     {
       dealii::TimerOutput::Scope scope(*timer, "granular: checks");
-      const std::string where
+      const std::string          where
         = "at step " + std::to_string(info.step) + ", t = " + to_string(info.time) + " s: ";
       if (!fluid_solver->state_is_finite())
-        throw RunFailure(where + "the water's velocity, pressure or phase field is not finite "
-                                 "(reduce the time step)");
+        throw RunFailure(where
+                         + "the water's velocity, pressure or phase field is not finite "
+                           "(reduce the time step)");
       if (info.step % check_interval == 0 || info.is_output_time || info.at_end)
         {
           const std::string bad = model->find_invalid_particle(engine->point_cloud());
@@ -479,13 +481,13 @@ namespace slidewave
       engine->set_state({record.get("skeleton/time"),
                          record.get("skeleton/lost_mass"),
                          record.get_unsigned("skeleton/steps")});
-      fluid_solver->time           = record.get("fluid/time");
-      fluid_solver->last_dt        = record.get("fluid/last_dt");
-      fluid_solver->n_steps        = record.get_unsigned("fluid/steps");
-      fluid_solver->water_outflow  = record.get("fluid/water_outflow");
-      last_report.flow.iterations  = static_cast<unsigned int>(record.get("fluid/last_iterations"));
-      particle_output.files        = record.get_files("skeleton/particle_files");
-      fluid_output.files           = record.get_files("fluid/field_files");
+      fluid_solver->time          = record.get("fluid/time");
+      fluid_solver->last_dt       = record.get("fluid/last_dt");
+      fluid_solver->n_steps       = record.get_unsigned("fluid/steps");
+      fluid_solver->water_outflow = record.get("fluid/water_outflow");
+      last_report.flow.iterations = static_cast<unsigned int>(record.get("fluid/last_iterations"));
+      particle_output.files       = record.get_files("skeleton/particle_files");
+      fluid_output.files          = record.get_files("fluid/field_files");
       verification.load(record);
       verification.open_files(true);
     }

@@ -11,7 +11,7 @@ namespace slidewave
     PorousSkeletonModel::PorousSkeletonModel(const soil::MaterialPointParameters &soil_parameters,
                                              const GranularWaterParameters       &parameters,
                                              const double                         fluid_density,
-                                             const double fluid_viscosity)
+                                             const double                         fluid_viscosity)
       : soil::SoilModel(soil_parameters)
       , parameters(parameters)
       , grain_density(parameters.grain_density)

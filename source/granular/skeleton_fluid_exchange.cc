@@ -27,7 +27,7 @@ namespace slidewave
 
 
 
-    SkeletonFluidExchange::SkeletonFluidExchange(const grid::BackgroundGrid          &grid,
+    SkeletonFluidExchange::SkeletonFluidExchange(const grid::BackgroundGrid         &grid,
                                                  const fluid::FreeSurfaceParameters &parameters)
       : grid(grid)
       , parameters(parameters)
@@ -52,12 +52,12 @@ namespace slidewave
       for (unsigned int i = 0; i < n_owned; ++i)
         {
           const double inverse_area = nodes.inverse_area[i];
-          const double n = std::clamp(1. - solid.local_element(i) * inverse_area,
-                                      min_fluid_fraction,
-                                      1.);
-          fraction.local_element(i)             = n;
-          inverse_permeability.local_element(i) = drag.local_element(i) * inverse_area / (n * n * mu);
-          const double m                        = nodes.nodal_mass.local_element(i);
+          const double n
+            = std::clamp(1. - solid.local_element(i) * inverse_area, min_fluid_fraction, 1.);
+          fraction.local_element(i) = n;
+          inverse_permeability.local_element(i)
+            = drag.local_element(i) * inverse_area / (n * n * mu);
+          const double m      = nodes.nodal_mass.local_element(i);
           vx.local_element(i) = m > empty_mass ? nodes.momentum[0].local_element(i) / m : 0.;
           vy.local_element(i) = m > empty_mass ? nodes.momentum[1].local_element(i) / m : 0.;
         }
@@ -93,8 +93,8 @@ namespace slidewave
       dealii::FEValues<2> fv_grid(grid.dof_handler().get_fe(),
                                   quadrature,
                                   dealii::update_values | dealii::update_JxW_values);
-      std::vector<dealii::Tensor<1, 2>> grad_p(n_q), u(n_q), v_s(n_q);
-      std::vector<double>               n(n_q), inverse_permeability(n_q), phi(n_q);
+      std::vector<dealii::Tensor<1, 2>>            grad_p(n_q), u(n_q), v_s(n_q);
+      std::vector<double>                          n(n_q), inverse_permeability(n_q), phi(n_q);
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
       for (unsigned int d = 0; d < 2; ++d)
         force[d] = 0.;

@@ -31,7 +31,8 @@ namespace slidewave
     double
     terzaghi_pore_pressure(const double depth_ratio, const double time_factor)
     {
-      return series(time_factor, [&](const double M) { return 2. / M * std::sin(M * depth_ratio); });
+      return series(time_factor,
+                    [&](const double M) { return 2. / M * std::sin(M * depth_ratio); });
     }
 
 
@@ -50,9 +51,8 @@ namespace slidewave
                               const double permeability,
                               const double viscosity)
     {
-      const double nu = poisson_ratio;
-      const double constrained_modulus
-        = youngs_modulus * (1. - nu) / ((1. + nu) * (1. - 2. * nu));
+      const double nu                  = poisson_ratio;
+      const double constrained_modulus = youngs_modulus * (1. - nu) / ((1. + nu) * (1. - 2. * nu));
       return permeability * constrained_modulus / viscosity;
     }
   } // namespace granular

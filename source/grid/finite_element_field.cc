@@ -177,7 +177,7 @@ namespace slidewave
               if (owned_dofs.is_element(field_indices[k]))
                 {
                   // The k-th shape function of the field sits at vertex v, component c.
-                  const auto [c, v] = fe->system_to_component_index(k);
+                  const auto [c, v]       = fe->system_to_component_index(k);
                   owned[field_indices[k]] = (*nodal[c])(grid_indices[v]);
                 }
           }

@@ -15,8 +15,8 @@ namespace slidewave
     none,
     shallow_water,
     material_points,
-    coupled,          ///< material points under shallow water (paper 000, Algorithm 1)
-    depth_averaged,   ///< depth-averaged material points over a terrain (paper 001)
+    coupled,           ///< material points under shallow water (paper 000, Algorithm 1)
+    depth_averaged,    ///< depth-averaged material points over a terrain (paper 001)
     free_surface_flow, ///< water and air by stabilized finite elements (paper 002's fluid)
     granular_water     ///< a granular skeleton of material points in that flow (paper 002)
   };

@@ -2,9 +2,9 @@
 #define slidewave_engine_particle_engine_h
 
 #include <array>
-#include <optional>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/timer.h>
+#include <optional>
 #include <slidewave/core/step_timeline.h>
 #include <slidewave/engine/transfer_kernels.h>
 #include <slidewave/grid/background_grid.h>

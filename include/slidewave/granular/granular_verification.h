@@ -7,8 +7,8 @@
 #include <slidewave/core/scene_parameters.h>
 #include <slidewave/core/statistics.h>
 #include <slidewave/fluid/free_surface_parameters.h>
-#include <slidewave/grid/finite_element_field.h>
 #include <slidewave/granular/granular_water_parameters.h>
+#include <slidewave/grid/finite_element_field.h>
 #include <slidewave/io/checkpoint_record.h>
 #include <slidewave/particles/point_cloud.h>
 #include <slidewave/soil/material_point_parameters.h>
@@ -50,7 +50,9 @@ namespace slidewave
 
       /** The verification's columns of a statistics row (collective). */
       void
-      add_statistics(Statistics &statistics, double time, const grid::FiniteElementField &flow) const;
+      add_statistics(Statistics                     &statistics,
+                     double                          time,
+                     const grid::FiniteElementField &flow) const;
 
       /** Prints the comparison (rank 0); returns whether it is within 'Tolerance'
        *  (collective). */

@@ -124,11 +124,11 @@ namespace slidewave
       double
       step_limit() const;
 
-      const SceneParameters                &scene;
-      soil::MaterialPointParameters         soil_parameters;
-      fluid::FreeSurfaceParameters          fluid_parameters;
-      GranularWaterParameters               parameters;
-      std::unique_ptr<grid::BackgroundGrid> grid;
+      const SceneParameters                    &scene;
+      soil::MaterialPointParameters             soil_parameters;
+      fluid::FreeSurfaceParameters              fluid_parameters;
+      GranularWaterParameters                   parameters;
+      std::unique_ptr<grid::BackgroundGrid>     grid;
       std::unique_ptr<fluid::FreeSurfaceSolver> fluid_solver;
       std::unique_ptr<PorousSkeletonModel>      model;
       std::unique_ptr<Engine>                   engine;

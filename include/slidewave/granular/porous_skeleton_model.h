@@ -61,7 +61,7 @@ namespace slidewave
       ScatterTerms
       scatter_terms(const Properties &p, const dealii::Point<2> &location) const
       {
-        const soil::SoilModel::ScatterTerms soil = soil::SoilModel::scatter_terms(p, location);
+        const soil::SoilModel::ScatterTerms soil  = soil::SoilModel::scatter_terms(p, location);
         const double                        solid = soil.m / grain_density;
         const double                        n     = porosity(solid, soil.V);
         return {soil, solid, soil.V * drag_coefficient(n)};

@@ -44,7 +44,7 @@ namespace slidewave
     class SkeletonFluidExchange
     {
     public:
-      SkeletonFluidExchange(const grid::BackgroundGrid          &grid,
+      SkeletonFluidExchange(const grid::BackgroundGrid         &grid,
                             const fluid::FreeSurfaceParameters &fluid_parameters);
 
       /** The water's fields from the skeleton's nodal sums of this step (after the
@@ -59,13 +59,13 @@ namespace slidewave
        *  new velocity and pressure) and @p phase (state 0), into @p force, vectors of the
        *  nodal workspace's layout (owned totals; collective). */
       void
-      to_skeleton(const grid::FiniteElementField       &flow,
-                  const grid::FiniteElementField       &phase,
-                  const SkeletonFields                 &fields,
+      to_skeleton(const grid::FiniteElementField              &flow,
+                  const grid::FiniteElementField              &phase,
+                  const SkeletonFields                        &fields,
                   std::array<grid::NodalWorkspace::Vector, 2> &force) const;
 
     private:
-      const grid::BackgroundGrid          &grid;
+      const grid::BackgroundGrid         &grid;
       const fluid::FreeSurfaceParameters &parameters;
     };
   } // namespace granular

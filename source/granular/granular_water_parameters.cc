@@ -38,6 +38,17 @@ namespace slidewave
                         "A pressure [Pa] on the top row of points of the skeleton, as a "
                         "downward point force of the load times each point's width "
                         "(Terzaghi's load p0); 0: none.");
+      prm.declare_entry("Sub-cycling",
+                        "false",
+                        Bool(),
+                        "true: the skeleton takes several explicit steps (each within its "
+                        "P-wave limit) inside one step of the water, whose step is then "
+                        "limited only by its Courant number and the explicit coupling's "
+                        "rho^s (1 - n) k / mu: fewer water solves where the skeleton's wave "
+                        "speed, not the coupling, limits the step (permeable sands). The "
+                        "water sees the skeleton of the start of its step; the skeleton "
+                        "feels the water's new pressure and velocity with its own current "
+                        "velocity in the drag at every sub-step. false: one step each.");
       prm.enter_subsection("Verification");
       {
         prm.declare_entry("Exact solution",
@@ -85,6 +96,7 @@ namespace slidewave
       permeability     = prm.get_double("Permeability");
       d50              = prm.get_double("D50");
       top_load         = prm.get_double("Top load");
+      sub_cycling      = prm.get_bool("Sub-cycling");
       for (const auto &[name, value] :
            {std::pair<std::string, double>{"Grain density", grain_density},
             {"Permeability", permeability},

@@ -258,7 +258,11 @@ namespace slidewave
     void
     GranularWaterScene::check_set_up() const
     {
-      const double limit = soil::max_time_step_multiplier * stability_limit();
+      // (With sub-cycling the skeleton's sub-steps keep within its P-wave limit.)
+      const double limit
+        = soil::max_time_step_multiplier
+          * (parameters.sub_cycling ? model->coupling_time_scale(engine->point_cloud()) :
+                                      stability_limit());
       if (soil_parameters.fixed_time_step > limit)
         throw InputError(soil_section + "/Fixed time step",
                          to_string(soil_parameters.fixed_time_step),
@@ -297,15 +301,22 @@ namespace slidewave
 
 
     double
+    GranularWaterScene::skeleton_limit() const
+    {
+      // The skeleton's P-wave crossing a cell (Eq. 23 with alpha = 1).
+      const double speed = engine->max_signal_speed();
+      return speed > 0. ? soil_parameters.cell_size / speed :
+                          std::numeric_limits<double>::infinity();
+    }
+
+
+
+    double
     GranularWaterScene::stability_limit() const
     {
-      // The skeleton's P-wave crossing a cell (Eq. 23 with alpha = 1) and the explicit
-      // coupling's time scale rho^s (1 - n) k / mu (measured: the Terzaghi column blows up
-      // at 0.9 of it, doc/granular-water.md).
-      const double speed = engine->max_signal_speed();
-      const double skeleton
-        = speed > 0. ? soil_parameters.cell_size / speed : std::numeric_limits<double>::infinity();
-      return std::min(skeleton, model->coupling_time_scale(engine->point_cloud()));
+      // The skeleton's limit and the explicit coupling's time scale rho^s (1 - n) k / mu
+      // (measured: the Terzaghi column blows up at 0.9 of it, doc/granular-water.md).
+      return std::min(skeleton_limit(), model->coupling_time_scale(engine->point_cloud()));
     }
 
 
@@ -315,8 +326,12 @@ namespace slidewave
     {
       if (soil_parameters.fixed_time_step > 0.)
         return soil_parameters.fixed_time_step;
+      // With sub-cycling the water's step need not wait for the skeleton's P-wave.
+      const double limit = parameters.sub_cycling ?
+                             model->coupling_time_scale(engine->point_cloud()) :
+                             stability_limit();
       return std::min(fluid_solver->stable_time_step(),
-                      soil_parameters.time_step_multiplier * stability_limit());
+                      soil_parameters.time_step_multiplier * limit);
     }
 
 
@@ -324,39 +339,51 @@ namespace slidewave
     void
     GranularWaterScene::advance(const StepInfo &info)
     {
+      // The skeleton's sub-steps within the water's step (one without sub-cycling).
+      const unsigned int n_sub
+        = parameters.sub_cycling ? static_cast<unsigned int>(std::ceil(
+            info.dt / (soil_parameters.time_step_multiplier * skeleton_limit()) - 1e-12)) :
+                                   1;
+      n_substeps                        = std::max(n_sub, 1u);
+      const double                dt    = info.dt / n_substeps;
       const grid::NodalWorkspace &nodes = engine->nodal_workspace();
-      {
-        dealii::TimerOutput::Scope scope(*timer, "granular: skeleton to grid");
-        engine->begin_step();
-      }
-      {
-        dealii::TimerOutput::Scope scope(*timer, "granular: exchange");
-        exchange->to_fluid(nodes,
-                           engine->velocity_constraints(),
-                           model->empty_node_mass(),
-                           {&fluid_solver->solid_fraction_field(),
-                            &fluid_solver->inverse_permeability_field(),
-                            &fluid_solver->solid_velocity_field()});
-      }
-      {
-        dealii::TimerOutput::Scope scope(*timer, "granular: water");
-        last_report = fluid_solver->advance(info.dt);
-      }
-      {
-        dealii::TimerOutput::Scope scope(*timer, "granular: exchange");
-        if (water_force[0].get_partitioner() != nodes.nodal_mass.get_partitioner())
-          for (auto &f : water_force)
-            f.reinit(nodes.nodal_mass);
-        exchange->to_skeleton(fluid_solver->flow_field(),
-                              fluid_solver->phase_field(),
-                              {&fluid_solver->solid_fraction_field(),
-                               &fluid_solver->inverse_permeability_field(),
-                               &fluid_solver->solid_velocity_field()},
-                              water_force);
-        engine->add_nodal_forces(water_force);
-      }
-      dealii::TimerOutput::Scope scope(*timer, "granular: skeleton update");
-      engine->finish_step(info.dt);
+      const SkeletonFields        fields{&fluid_solver->solid_fraction_field(),
+                                  &fluid_solver->inverse_permeability_field(),
+                                  &fluid_solver->solid_velocity_field()};
+      for (unsigned int k = 0; k < n_substeps; ++k)
+        {
+          {
+            dealii::TimerOutput::Scope scope(*timer, "granular: skeleton to grid");
+            engine->begin_step();
+          }
+          {
+            // The skeleton's fields now: the water's step reads them (first sub-step), the
+            // water's force on the grains the skeleton's velocity in the drag (each).
+            dealii::TimerOutput::Scope scope(*timer, "granular: exchange");
+            exchange->to_fluid(nodes,
+                               engine->velocity_constraints(),
+                               model->empty_node_mass(),
+                               fields);
+          }
+          if (k == 0)
+            {
+              dealii::TimerOutput::Scope scope(*timer, "granular: water");
+              last_report = fluid_solver->advance(info.dt);
+            }
+          {
+            dealii::TimerOutput::Scope scope(*timer, "granular: exchange");
+            if (water_force[0].get_partitioner() != nodes.nodal_mass.get_partitioner())
+              for (auto &f : water_force)
+                f.reinit(nodes.nodal_mass);
+            exchange->to_skeleton(fluid_solver->flow_field(),
+                                  fluid_solver->phase_field(),
+                                  fields,
+                                  water_force);
+            engine->add_nodal_forces(water_force);
+          }
+          dealii::TimerOutput::Scope scope(*timer, "granular: skeleton update");
+          engine->finish_step(dt);
+        }
     }
 
 
@@ -407,6 +434,8 @@ namespace slidewave
       statistics.add_value("skeleton_max_speed", skeleton.max_speed);
       statistics.add_value("skeleton_momentum_y", skeleton.momentum_y);
       statistics.add_value("flow_iterations", last_report.flow.iterations);
+      if (parameters.sub_cycling)
+        statistics.add_value("skeleton_substeps", n_substeps);
       verification.add_statistics(statistics, info.time, fluid_solver->flow_field());
     }
 

@@ -49,6 +49,9 @@ namespace slidewave
       double d50 = 1e-3;
       /** A pressure [Pa] on the top row of points (Terzaghi's load; 0: none). */
       double top_load = 0.;
+      /** Several skeleton steps inside one water step (the water's step limited by its
+       *  Courant number and the coupling, the skeleton's by its P-wave). */
+      bool sub_cycling = false;
 
       GranularExactSolution exact_solution = GranularExactSolution::none;
       /** The height of the consolidating column [m] (its base at the grid's bottom). */

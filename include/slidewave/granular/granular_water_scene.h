@@ -114,13 +114,18 @@ namespace slidewave
       void
       apply_top_load();
 
-      /** min(h / max(c_p + |v_p|), the coupling's time scale): the skeleton's limits
-       *  before the multiplier (collective). */
+      /** h / max(c_p + |v_p|): the skeleton's P-wave limit before the multiplier
+       *  (collective). */
+      double
+      skeleton_limit() const;
+
+      /** min(skeleton_limit(), the coupling's time scale) (collective). */
       double
       stability_limit() const;
 
-      /** The step: the fixed one, or the least of the water's Courant limit and 'Time
-       *  step multiplier' times stability_limit() (collective). */
+      /** The step (of the water, with sub-cycling): the fixed one, or the least of the
+       *  water's Courant limit and 'Time step multiplier' times stability_limit() (times
+       *  the coupling's time scale only, with sub-cycling) (collective). */
       double
       step_limit() const;
 
@@ -140,7 +145,9 @@ namespace slidewave
       dealii::TimerOutput                        *timer = nullptr;
       fluid::FluidStepReport                      last_report;
       unsigned int                                check_interval = 10;
-      GranularVerification                        verification;
+      /** The skeleton's sub-steps in the last step. */
+      unsigned int         n_substeps = 1;
+      GranularVerification verification;
     };
   } // namespace granular
 } // namespace slidewave

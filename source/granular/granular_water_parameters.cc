@@ -32,6 +32,14 @@ namespace slidewave
                         "1e-3",
                         Double(0.),
                         "The grains' mean diameter [m] of the Kozeny-Carman law.");
+      prm.declare_entry("Drag law",
+                        "Forchheimer",
+                        Selection("Darcy|Forchheimer"),
+                        "'Forchheimer' (paper 002, Eq. 3): C = n^2 mu / k + n^3 rho^w F / "
+                        "sqrt(k) |v^w - v^s|, F = 1.75 / sqrt(150 n^3) (Ergun's "
+                        "coefficients), each point's relative speed that of the last step at "
+                        "its nodes. 'Darcy': C = n^2 mu / k, linear in the relative velocity "
+                        "(the limit of slow seepage, Re_p << 10).");
       prm.declare_entry("Top load",
                         "0",
                         Double(0.),
@@ -96,6 +104,7 @@ namespace slidewave
       permeability     = prm.get_double("Permeability");
       d50              = prm.get_double("D50");
       top_load         = prm.get_double("Top load");
+      forchheimer      = prm.get("Drag law") == "Forchheimer";
       sub_cycling      = prm.get_bool("Sub-cycling");
       for (const auto &[name, value] :
            {std::pair<std::string, double>{"Grain density", grain_density},

@@ -380,9 +380,16 @@ namespace slidewave
                                   fields,
                                   water_force);
             engine->add_nodal_forces(water_force);
+            if (parameters.forchheimer)
+              exchange->relative_speed(fluid_solver->flow_field(),
+                                       fields,
+                                       nodes,
+                                       engine->model_field(PorousSkeletonModel::relative_speed));
           }
           dealii::TimerOutput::Scope scope(*timer, "granular: skeleton update");
           engine->finish_step(dt);
+          if (parameters.forchheimer)
+            engine->model_field(PorousSkeletonModel::relative_speed).zero_out_ghost_values();
         }
     }
 

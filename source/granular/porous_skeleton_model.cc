@@ -17,7 +17,11 @@ namespace slidewave
       , grain_density(parameters.grain_density)
       , viscosity(fluid_viscosity)
       , law(fluid_density, fluid_viscosity, parameters.d50)
+      , porous_layout(soil::SoilModel::layout())
+      , speed_index(porous_layout.size())
     {
+      if (parameters.forchheimer)
+        porous_layout.add_scalar("relative_speed");
     }
 
 
@@ -31,7 +35,7 @@ namespace slidewave
           const auto   p     = particle.get_properties();
           const double solid = p[soil::property::mass] / grain_density;
           const double n     = porosity(solid, p[soil::property::volume]);
-          const double C     = drag_coefficient(n);
+          const double C     = drag_coefficient(n, parameters.forchheimer ? p[speed_index] : 0.);
           if (C > 0.)
             smallest = std::min(smallest, grain_density * (1. - n) * n * n / C);
         }

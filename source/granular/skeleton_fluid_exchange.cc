@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <slidewave/granular/skeleton_fluid_exchange.h>
@@ -129,6 +130,46 @@ namespace slidewave
           }
       for (unsigned int d = 0; d < 2; ++d)
         force[d].compress(dealii::VectorOperation::add);
+    }
+
+
+
+    void
+    SkeletonFluidExchange::relative_speed(const grid::FiniteElementField &flow,
+                                          const SkeletonFields           &fields,
+                                          const grid::NodalWorkspace     &nodes,
+                                          grid::NodalWorkspace::Vector   &speed) const
+    {
+      grid::NodalWorkspace::Vector all(nodes.nodal_mass);
+      const auto                  &u   = flow.values(0);
+      const auto                  &v_s = fields.solid_velocity->values(0);
+      for (const auto &cell : grid.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const auto flow_cell  = on(cell, flow);
+            const auto solid_cell = on(cell, *fields.solid_velocity);
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const auto node = cell->vertex_dof_index(v, 0);
+                if (!all.in_local_range(node))
+                  continue;
+                // The vertex's dofs of FESystem(Q1^2, Q1) and of Q1^2, by component.
+                double w2 = 0.;
+                for (unsigned int d = 0; d < 2; ++d)
+                  {
+                    const double w = u[flow_cell->vertex_dof_index(v, d)]
+                                     - v_s[solid_cell->vertex_dof_index(v, d)];
+                    w2 += w * w;
+                  }
+                all(node) = std::sqrt(w2);
+              }
+          }
+      // Only this step's nodes: the others must stay zero for the next scatter.
+      const unsigned int n_owned = nodes.nodal_mass.locally_owned_size();
+      for (const unsigned int i : nodes.active())
+        if (i < n_owned)
+          speed.local_element(i) = all.local_element(i);
+      speed.update_ghost_values();
     }
   } // namespace granular
 } // namespace slidewave

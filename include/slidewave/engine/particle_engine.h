@@ -135,6 +135,15 @@ namespace slidewave
       void
       add_nodal_forces(const std::array<grid::NodalWorkspace::Vector, 2> &force);
 
+      /** The model's nodal field @p f, writable: a physics coupled at the nodes writes a
+       *  field the points gather (between begin_step() and finish_step()) and leaves its
+       *  ghost entries zero after finish_step(), as the next scatter expects. */
+      grid::NodalWorkspace::Vector &
+      model_field(const unsigned int f)
+      {
+        return nodes.fields[f];
+      }
+
       /** The velocity conditions of the grid's sides and walls. */
       const grid::VelocityConstraints &
       velocity_constraints() const

@@ -45,8 +45,10 @@ namespace slidewave
       PermeabilityLaw permeability_law = PermeabilityLaw::constant;
       /** k [m^2] of the constant law. */
       double permeability = 1e-10;
-      /** D50 [m] of Kozeny–Carman. */
+      /** D50 [m] of Kozeny–Carman (and the DragLaw's Reynolds number). */
       double d50 = 1e-3;
+      /** The drag's Forchheimer term (Eq. 3) on top of Darcy's. */
+      bool forchheimer = true;
       /** A pressure [Pa] on the top row of points (Terzaghi's load; 0: none). */
       double top_load = 0.;
       /** Several skeleton steps inside one water step (the water's step limited by its

@@ -26,23 +26,36 @@ namespace slidewave
      *   field 1, the drag          D_I = sum_p N_I(x_p) V_p C_p       [kg/s per m],
      * from which SkeletonFluidExchange makes the fluid's fields: the fluid fraction
      * n_I = 1 - S_I / A_I (A_I the node's lumped area) and the drag C_I = D_I / A_I.
+     * With the Forchheimer drag (Eq. 3), a third field that the points do not sum but
+     * read: the relative speed |u - v_s| of the water's last step at the nodes, which the
+     * exchange writes and each point gathers into its property 'relative_speed' for the
+     * next step's C_p.
      */
     class PorousSkeletonModel : public soil::SoilModel
     {
     public:
-      static constexpr unsigned int n_nodal_fields = 2;
+      static constexpr unsigned int n_nodal_fields = 3;
       static constexpr unsigned int solid_volume   = 0;
       static constexpr unsigned int drag           = 1;
+      static constexpr unsigned int relative_speed = 2;
 
       PorousSkeletonModel(const soil::MaterialPointParameters &soil_parameters,
                           const GranularWaterParameters       &parameters,
                           double                               fluid_density,
                           double                               fluid_viscosity);
 
+      /** The relative speed only with the Forchheimer drag. */
       unsigned int
       n_used_nodal_fields() const
       {
-        return n_nodal_fields;
+        return parameters.forchheimer ? 3 : 2;
+      }
+
+      /** The soil's properties, and 'relative_speed' with the Forchheimer drag. */
+      const particles::PropertyLayout &
+      layout() const
+      {
+        return porous_layout;
       }
 
       bool
@@ -64,7 +77,9 @@ namespace slidewave
         const soil::SoilModel::ScatterTerms soil  = soil::SoilModel::scatter_terms(p, location);
         const double                        solid = soil.m / grain_density;
         const double                        n     = porosity(solid, soil.V);
-        return {soil, solid, soil.V * drag_coefficient(n)};
+        return {soil,
+                solid,
+                soil.V * drag_coefficient(n, parameters.forchheimer ? p[speed_index] : 0.)};
       }
 
       template <typename Terms>
@@ -75,6 +90,23 @@ namespace slidewave
         sums[drag] += N_k * t.drag_volume;
       }
 
+      /** The relative speed of the water's last step at the point (Forchheimer). */
+      template <typename Properties>
+      void
+      gather_fields(const grid::NodeWeights    &w,
+                    const grid::NodalWorkspace &nodes,
+                    Properties                 &p,
+                    bool /*before_update*/) const
+      {
+        if (!parameters.forchheimer)
+          return;
+        const auto &speed = nodes.fields[relative_speed];
+        double      value = 0.;
+        for (unsigned int k = 0; k < w.n; ++k)
+          value += w.value[k] * speed.local_element(w.node[k]);
+        p[speed_index] = value;
+      }
+
       /** n = 1 - solid volume / volume, in [0, 0.99]. */
       static double
       porosity(const double solid, const double volume)
@@ -82,16 +114,17 @@ namespace slidewave
         return std::clamp(1. - solid / volume, 0., DragLaw::porosity_cap);
       }
 
-      /** The Darcy drag coefficient n^2 mu^f / k(n) [kg/(m^3 s)] at porosity @p n. */
+      /** The drag coefficient [kg/(m^3 s)] at porosity @p n and relative speed
+       *  @p speed: Darcy's n^2 mu^w / k(n), plus Forchheimer's term (DragLaw) when on. */
       double
-      drag_coefficient(const double n) const
+      drag_coefficient(const double n, const double speed) const
       {
         if (n <= 0.)
           return 0.; // no pores, no flow through them
         const double k = parameters.permeability_law == PermeabilityLaw::constant ?
                            parameters.permeability :
                            law.permeability(n);
-        return n * n * viscosity / k;
+        return parameters.forchheimer ? law.drag_coefficient(n, k, speed) : n * n * viscosity / k;
       }
 
       /** The grains' density rho^s [kg/m^3]. */
@@ -118,6 +151,9 @@ namespace slidewave
       const GranularWaterParameters &parameters;
       const double                   grain_density, viscosity;
       const DragLaw                  law;
+      particles::PropertyLayout      porous_layout;
+      /** The index of 'relative_speed' among the points' properties. */
+      unsigned int speed_index;
     };
   } // namespace granular
 

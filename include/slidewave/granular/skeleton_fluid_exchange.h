@@ -64,6 +64,16 @@ namespace slidewave
                   const SkeletonFields                        &fields,
                   std::array<grid::NodalWorkspace::Vector, 2> &force) const;
 
+      /** The relative speed |u - v_s| of the water's state 0 and the skeleton's velocity
+       *  field at the owned nodes of this step's points, into @p speed (the skeleton's
+       *  nodal field the points gather for the Forchheimer drag), ghosts updated
+       *  (collective). */
+      void
+      relative_speed(const grid::FiniteElementField &flow,
+                     const SkeletonFields           &fields,
+                     const grid::NodalWorkspace     &nodes,
+                     grid::NodalWorkspace::Vector   &speed) const;
+
     private:
       const grid::BackgroundGrid         &grid;
       const fluid::FreeSurfaceParameters &parameters;

@@ -513,7 +513,9 @@ def main(argv=None):
         runs = results[case]
         first = runs[0]
         row = {"problem": q, "line": l, "shape": shape, "flip_fraction": flip,
-               "depth_update": update, "particles_per_direction": ppd, "cell_size": c}
+               "depth_update": update, "particles_per_direction": ppd, "cell_size": c,
+               "advance_wall_s": None, "advance_min_s": None, "advance_max_s": None,
+               "total_wall_s": None, "background_load": None, "repeats": 0}
         row.update({k: first[k] for k in ("status", "columns", "cells", "steps", "error",
                                           "front", "front_exact", "front_error_percent")})
         ok = [r for r in runs if r["status"] == "ok"]

@@ -40,7 +40,13 @@ so only interleaved runs compare):
   (two busy cores with no decomposition and no communication at all);
 * GIMP ('Depth averaged/Shape functions' = gimp) on 1 and 2 ranks at cell 0.125 m, 4 x 4
   (``--gimp-size``);
+* the defaults since issue 28 (shape ``defaults``: GIMP with 'Depth update = projection'
+  instead of the scene's Q1 and 'strain') on 1 and 2 ranks at every size
+  (``--defaults-sizes``);
 * the later window above.
+
+``--skip ceiling,gimp,late`` leaves those cases out (e.g. for a quick comparison of the
+defaults with Q1).
 
 Overrides for every run: 'Depth averaged/Verification/Conservation check' = false,
 'Depth averaged/Output grid' = false, 'Time/Output interval' = 100 (points written at the
@@ -154,10 +160,14 @@ def settings_for(cell, ppd, end_time, shape, detailed):
         "Depth averaged/Fixed time step": repr(dt),
         "Depth averaged/Grid/Cell size": repr(cell),
         "Depth averaged/Release/Particles per direction": ppd,
-        "Depth averaged/Shape functions": shape,
+        # 'defaults': the defaults since issue 28, GIMP with 'Depth update = projection'
+        # (the scene itself sets Q1 and 'strain', the paper's choices).
+        "Depth averaged/Shape functions": "gimp" if shape == "defaults" else shape,
         "Depth averaged/Verification/Conservation check": "false",
         "Depth averaged/Output grid": "false",
     }
+    if shape == "defaults":
+        s["Depth averaged/Depth update"] = "projection"
     if detailed:
         s["Depth averaged/Detailed timing"] = "true"
     return dt, s
@@ -278,13 +288,13 @@ def run_retrying(exe, prm, case, mpirun, wait_s):
 # Tables
 # --------------------------------------------------------------------------------------
 
-HEADER = (f"{'round':>6} {'case':<18} {'shape':<5} {'C[m]':>6} {'n':>2} {'columns':>9} "
+HEADER = (f"{'round':>6} {'case':<18} {'shape':<8} {'C[m]':>6} {'n':>2} {'columns':>9} "
           f"{'cells':>7} {'steps':>5} {'advance[s]':>10} {'dt[s]':>6} {'total[s]':>8} "
           f"{'pt-steps/s':>10} {'/core':>9} {'RSS/rank[MB]':>12} {'B/point':>8} {'bg':>4}")
 
 
 def row_line(row):
-    line = (f"{str(row['round']):>6} {row['case']:<18} {row['shape']:<5} "
+    line = (f"{str(row['round']):>6} {row['case']:<18} {row['shape']:<8} "
             f"{row['cell_size']:>6g} {row['particles_per_direction']:>2} "
             f"{fmt(row.get('columns'), 'd'):>9} {fmt(row.get('cells'), 'd'):>7} "
             f"{fmt(row.get('steps'), 'd'):>5} {fmt(row.get('advance_wall_s'), '.4g'):>10} "
@@ -365,7 +375,7 @@ def throughput_table(medians, title):
                + (" quiet runs 1 rank / 2 ranks / ceiling |" if quiet else ""))
     out.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
                + ("---:|" if quiet else ""))
-    for shape in ("q1", "gimp"):
+    for shape in ("q1", "gimp", "defaults"):
         for cell, ppd in sizes:
             one, two, ceil = (find("1 rank", shape, cell, ppd), find("2 ranks", shape, cell, ppd),
                               find("2 copies (ceiling)", shape, cell, ppd))
@@ -415,7 +425,7 @@ def summary(medians, quiet=None, quiet_load=None):
     out.append("| shape | cell [m] | points/cell | columns | 1 rank [MB] | B/point (1 rank) "
                "| 2 ranks: largest rank [MB] | B/point (2 ranks) |")
     out.append("|---|---:|---:|---:|---:|---:|---:|---:|")
-    for shape in ("q1", "gimp"):
+    for shape in ("q1", "gimp", "defaults"):
         for cell, ppd in sizes:
             one, two = find("1 rank", shape, cell, ppd), find("2 ranks", shape, cell, ppd)
             if not (one or two):
@@ -428,7 +438,7 @@ def summary(medians, quiet=None, quiet_load=None):
                        f"{fmt(two and two['bytes_per_point'], '.0f')} |")
 
     lines = []
-    for shape in ("q1", "gimp"):
+    for shape in ("q1", "gimp", "defaults"):
         for ppd in sorted({p for _, p in sizes}):
             series = sorted((find("1 rank", shape, c, p) for c, p in sizes if p == ppd),
                             key=lambda r: r["columns"] if r else 0)
@@ -573,6 +583,11 @@ def main(argv=None):
                    help="sizes with the two-copies ceiling (default: the largest and 0.125:4)")
     p.add_argument("--gimp-size", type=parse_sizes, default=[(0.125, 4)],
                    help="sizes also run with GIMP ('' for none)")
+    p.add_argument("--defaults-sizes", type=parse_sizes,
+                   help="CELL:N,... where the defaults (GIMP, 'Depth update = projection', "
+                        "shape 'defaults') run on 1 and 2 ranks (default: every size)")
+    p.add_argument("--skip", type=lambda t: [k.strip() for k in t.split(",") if k.strip()],
+                   default=[], help="comma-separated cases to leave out: ceiling, gimp, late")
     p.add_argument("--late-size", type=parse_sizes, default=[(0.125, 4)],
                    help="sizes also run to --late-end-time, 1 and 2 ranks ('' for none)")
     p.add_argument("--late-end-time", type=float, default=LATE_END_TIME,
@@ -621,12 +636,15 @@ def main(argv=None):
     for cell, ppd in sizes:
         add("alone", "q1", 1, cell, ppd, args.end_time)
         add("mpi", "q1", 2, cell, ppd, args.end_time)
-        if (cell, ppd) in ceiling_sizes:
+        if (cell, ppd) in ceiling_sizes and "ceiling" not in args.skip:
             add("ceiling", "q1", 1, cell, ppd, args.end_time)
-        if (cell, ppd) in args.gimp_size:
+        if (cell, ppd) in args.gimp_size and "gimp" not in args.skip:
             add("alone", "gimp", 1, cell, ppd, args.end_time)
             add("mpi", "gimp", 2, cell, ppd, args.end_time)
-        if (cell, ppd) in args.late_size:
+        if args.defaults_sizes is None or (cell, ppd) in args.defaults_sizes:
+            add("alone", "defaults", 1, cell, ppd, args.end_time)
+            add("mpi", "defaults", 2, cell, ppd, args.end_time)
+        if (cell, ppd) in args.late_size and "late" not in args.skip:
             add("alone", "q1", 1, cell, ppd, args.late_end_time, late=True)
             add("mpi", "q1", 2, cell, ppd, args.late_end_time, late=True)
 

@@ -1,76 +1,77 @@
 #!/usr/bin/python3
-"""Work-precision of the depth-averaged material points in their shallow-water limit.
+"""Work-precision of the depth-averaged material points on every exact solution they have.
 
-Runs the dam break along a straight channel of ``prm/dam-break-channel.prm``
-(``Physics = depth averaged``, paper 001; mu = tau_Y = 0 and no basal friction, so the
-exact solution is a shallow-water dam break) in two variants:
+Error against wall time, for each numerical option varied one at a time from the defaults
+(issue 28: GIMP, 'Depth update = projection', 4 x 4 columns per cell, PIC), on five exact
+problems:
 
-* Ritter: 1 m of water left of x = 50 m, a dry bed right of it (the scene as shipped);
-* Stoker: 0.5 m of water right of the dam ('Depth averaged/Release/Depth' =
-  ``x < 50 ? 1 : 0.5`` and 'Depth averaged/Verification/Right depth' = 0.5);
+* ``rigid``: the rigid translation of ``tests/depth_averaged/rigid_translation_q1_strain.prm``
+  (a weightless uniform layer 0.5 m deep over [1, 3] x [1, 2] moving at (1, 0.5) m/s for
+  2 s; exact: every column keeps its depth), cell sizes 0.25, 0.125, 0.0625 m; error: the
+  relative L1 error of the columns' depth;
+* ``Stoker`` and ``Ritter``: the dam break of ``prm/dam-break-channel.prm`` (mu = tau_Y = 0,
+  no friction: shallow water) on the channel [0, 100] x [0, 4 C], 1 m of water left of
+  x = 50 m, 0.5 m (Stoker) or a dry bed (Ritter) right of it, t = 4 s, cell sizes C = 1 to
+  0.0625 m; error: the relative L1 error of the nodal depth; for Ritter also the front;
+* ``slope``: the dry-bed dam break on a 40 deg plane with Coulomb friction phi = 20 deg of
+  ``prm/dam-break-on-slope.prm`` (Mangeney et al. 2000; reservoir 1 m deep over [8, 28]),
+  on [0, 64] x [0, 4 C], t = 2 s, C = 0.5 to 0.0625 m; error: the relative L1 error of the
+  nodal depth, and the front;
+* ``block``: the slab sliding on 40 deg with phi = 15 deg of
+  ``tests/depth_averaged/sliding_block_40.prm``, C = 0.5 m, 1 s; error: the relative error
+  of the horizontal acceleration momentum_x / (M t) (round-off for every option).
 
-on the channel [0, 100] x [0, W] with W = 4 cells ('Grid/Upper right' = 100, W and
-'Release/Rectangle' = 0, 0, 100, W), cell sizes C = 1, 0.5, 0.25, 0.125, 0.0625 m
-(``--quick``: down to 0.125 m; ``--cell-sizes``), to t = 4 s (no wave reaches a wall).
+The front is where the nodal depth first exceeds 1 % of the release depth, against the
+same point of the exact solution, in per cent of the exact distance travelled (the line
+"Front (the last node deeper than 1 % ...)" of the program).
 
-Lines (``--lines``; the default set varies one option at a time from the paper's choice,
-plus two combinations; ``--lines all`` runs the full product of the 16):
+Lines (``--lines``), named shape-transfer-update-N:
 
-==================  ===============  =============  ============  ==========
-line                Shape functions  FLIP fraction  Depth update  points/dir
-==================  ===============  =============  ============  ==========
-q1-pic-strain-2     q1               0 (PIC)        strain        2  (paper 001)
-gimp-pic-strain-2   gimp             0              strain        2
-q1-flip-strain-2    q1               0.99 (FLIP)    strain        2
-q1-pic-proj-2       q1               0              projection    2
-q1-pic-strain-4     q1               0              strain        4
-q1-pic-proj-4       q1               0              projection    4
-gimp-pic-proj-4     gimp             0              projection    4
-==================  ===============  =============  ============  ==========
+====================  ===============  =============  ============  ==========
+line                  Shape functions  FLIP fraction  Depth update  points/dir
+====================  ===============  =============  ============  ==========
+gimp-pic-proj-4       gimp             0 (PIC)        projection    4  (the defaults)
+q1-pic-proj-4         q1               0              projection    4
+cpgimp-pic-proj-4     cpgimp           0              projection    4
+gimp-pic-strain-4     gimp             0              strain        4
+gimp-flip-proj-4      gimp             1 (FLIP)       projection    4
+gimp-pic-proj-2       gimp             0              projection    2
+gimp-pic-proj-8       gimp             0              projection    8
+gimp-flip-proj-8      gimp             1              projection    8
+q1-pic-strain-2       q1               0              strain        2  (paper 001, old defaults)
+====================  ===============  =============  ============  ==========
 
-(the names: shape, pic/flip, strain/proj, 'Release/Particles per direction').
+(``flipNN`` is a FLIP fraction 0.NN, e.g. gimp-flip95-proj-8.)
 
-Measurements
-------------
-* error: the line "Dam break (Ritter|Stoker) at t = 4 s: relative L1 error of the depth =
-  X" printed at the end, sum_i |h_i - h(x_i, t)| a_i / sum_i h(x_i, t) a_i over the grid
-  nodes;
-* ``advance[s]``: wall time of the time loop's steps, the 'depth averaged: advance' row of
-  the timer table (the stable-time-step reduction 'depth averaged: time step', the checks,
-  statistics and output are outside it); ``total[s]``: the process's wall time, start-up
-  included;
-* steps: the 'step' column of the last row of OUTPUT/statistics.csv (the same as the calls
-  of 'depth averaged: advance');
-* order: the observed order of the error against the next coarser cell size,
-  log(e_coarse / e_fine) / log(C_coarse / C_fine); the summary gives it between the two
-  finest resolutions of each line.
+Measurements: the error lines the program prints at the end; ``advance[s]``: the
+'depth averaged: advance' row of the timer table (the time loop's steps; start-up, the
+stable-step reduction, checks and output are outside it); ``total[s]``: the process;
+``order``: log(e_coarse / e_fine) / log(C_coarse / C_fine) against the next coarser C.
+Every run has its own temporary output directory (particles only at the start and the end,
+no statistics rows between, no grid output), removed afterwards. Every run is started
+with ``nice`` (``--nice``, default 10; the machine is shared). The study is repeated
+``--repeat`` times (default 3) in rounds (every run once, then every run again), so that a
+drift of the machine's speed touches all runs alike; the times reported are the medians
+over the rounds, and each row records the median background load (cores busy with other
+work during the run). The errors do not change between rounds (the script says so if they
+do). A run that fails is recorded with the reason; the study goes on.
 
-Particles are written only at the start and the end ('Time/Output interval' = 100),
-statistics only there too ('Time/Statistics interval' = 100000), no grid output ('Depth
-averaged/Output grid' = false). Every run has its own temporary output directory, removed
-afterwards. The study is repeated ``--repeat`` times (default 3, ``--quick`` 1) in rounds
-(every run once, then every run again), so that a drift of the machine's speed touches all
-runs alike; the times reported are the medians over the rounds. The errors do not change
-between repetitions (the script says so if they do). A run that fails is recorded with the
-reason; the study goes on.
-
-Output: a line per run while it goes, then markdown tables (error per cell size, observed
-order between the two finest resolutions, advance time at the finest) per problem; CSV
-(``--csv``, default benchmarks/results/depth_averaged_work_precision.csv) and the figure
-(``--png``, default doc/figures/depth-averaged-work-precision.png): error against advance
-wall time, log-log, one panel Ritter, one Stoker. ``--plot-only`` redraws the figure from
-the CSV.
+Output: a line per run while it goes, markdown tables per problem, the CSV ``--csv``
+(default benchmarks/results/depth_averaged_work_precision.csv) and the figure ``--png``
+(default doc/figures/depth-averaged-work-precision.png): error against advance wall time,
+log-log, one panel per problem, and the front error of Ritter and of the slope.
+``--plot-only`` redraws the figure and the tables from the CSV.
 
 Usage:
-    /usr/bin/python3 benchmarks/depth_averaged_work_precision.py            # about 7 minutes
-    /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --quick    # about 1 minute
-    /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --lines all --repeat 1
+    /usr/bin/python3 benchmarks/depth_averaged_work_precision.py               # ~40 minutes
+    /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --quick       # ~4 minutes
+    /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --problems Ritter,slope \\
+        --lines gimp-pic-proj-4,gimp-flip95-proj-8 --repeat 1
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --plot-only
 """
 
 import argparse
 import csv
-import itertools
 import os
 import re
 import resource
@@ -87,24 +88,45 @@ from benchmark_common import (add_orders, cpu_busy_seconds, find_executable, fmt
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-CELL_SIZES = [1.0, 0.5, 0.25, 0.125, 0.0625]
-QUICK_CELL_SIZES = [1.0, 0.5, 0.25, 0.125]
-WIDTH_CELLS = 4
-END_TIME = 4.0
-PROBLEMS = ["Ritter", "Stoker"]
+PROBLEMS = ["rigid", "Stoker", "Ritter", "slope", "block"]
+CELL_SIZES = {"rigid": [0.25, 0.125, 0.0625], "Stoker": [1.0, 0.5, 0.25, 0.125, 0.0625],
+              "Ritter": [1.0, 0.5, 0.25, 0.125, 0.0625], "slope": [0.5, 0.25, 0.125, 0.0625],
+              "block": [0.5]}
+QUICK_CELL_SIZES = {"rigid": [0.25, 0.125], "Stoker": [1.0, 0.5, 0.25],
+                    "Ritter": [1.0, 0.5, 0.25], "slope": [0.5, 0.25], "block": [0.5]}
+SCENES = {"rigid": os.path.join("tests", "depth_averaged", "rigid_translation_q1_strain.prm"),
+          "Stoker": os.path.join("prm", "dam-break-channel.prm"),
+          "Ritter": os.path.join("prm", "dam-break-channel.prm"),
+          "slope": os.path.join("prm", "dam-break-on-slope.prm"),
+          "block": os.path.join("tests", "depth_averaged", "sliding_block_40.prm")}
+TITLES = {"rigid": "rigid translation (weightless layer, 2 s): L1 of the columns' depth",
+          "Stoker": "Stoker (1 m | 0.5 m, t = 4 s): L1 of the nodal depth",
+          "Ritter": "Ritter (1 m | dry, t = 4 s): L1 of the nodal depth",
+          "slope": "dam break on 40 deg, phi = 20 deg (t = 2 s): L1 of the nodal depth",
+          "block": "sliding block on 40 deg: error of the acceleration"}
+FRONT_PROBLEMS = ["Ritter", "slope"]
 
-SHAPES = ["q1", "gimp"]
-FLIP = {"pic": 0.0, "flip": 0.99}
+SHAPES = ["q1", "gimp", "cpgimp"]
 UPDATES = {"strain": "strain", "proj": "projection"}
-PPD = [2, 4]
 
-DEFAULT_LINES = ["q1-pic-strain-2", "gimp-pic-strain-2", "q1-flip-strain-2",
-                 "q1-pic-proj-2", "q1-pic-strain-4", "q1-pic-proj-4", "gimp-pic-proj-4"]
-ALL_LINES = [f"{s}-{f}-{u}-{n}" for s, f, u, n in
-             itertools.product(SHAPES, FLIP, UPDATES, PPD)]
+DEFAULT_LINES = ["gimp-pic-proj-4", "q1-pic-proj-4", "cpgimp-pic-proj-4", "gimp-pic-strain-4",
+                 "gimp-flip-proj-4", "gimp-pic-proj-2", "gimp-pic-proj-8", "gimp-flip-proj-8",
+                 "q1-pic-strain-2"]
+QUICK_LINES = ["gimp-pic-proj-4", "q1-pic-strain-2"]
 
-_ERROR_RE = re.compile(r"Dam break \((Ritter|Stoker)\) at t = [0-9.eE+-]+ s: relative L1 "
-                       r"error of the depth = ([0-9.eE+-]+|nan|inf|-?nan)")
+_RIGID_RE = re.compile(r"Rigid translation at t = [0-9.eE+-]+ s: relative L1 error of the "
+                       r"columns' depth = ([0-9.eE+-]+|nan|inf)")
+_DAM_RE = re.compile(r"Dam break \((?:Ritter|Stoker)\) at t = [0-9.eE+-]+ s: relative L1 "
+                     r"error of the depth = ([0-9.eE+-]+|nan|inf|-?nan)")
+_SLOPE_RE = re.compile(r"Dam break on a [0-9.]+ deg slope \(Mangeney et al. 2000\) at t = "
+                       r"[0-9.eE+-]+ s: relative L1 error of the depth = ([0-9.eE+-]+|nan|inf)")
+_BLOCK_RE = re.compile(r"Sliding block on a [0-9.]+ deg slope at t = [0-9.eE+-]+ s: .* "
+                       r"relative error ([0-9.eE+-]+|nan|inf)")
+ERROR_RE = {"rigid": _RIGID_RE, "Stoker": _DAM_RE, "Ritter": _DAM_RE, "slope": _SLOPE_RE,
+            "block": _BLOCK_RE}
+_FRONT_RE = re.compile(r"Front \(the last node deeper than 1 % of the left depth\) x = "
+                       r"([0-9.eE+-]+) m, exact ([0-9.eE+-]+) m: error [0-9.eE+-]+ m, "
+                       r"([0-9.eE+-]+) % of")
 _HEADER_RE = re.compile(r"Depth-averaged flow: (\d+) columns on (\d+) cells")
 # Rows of the timer table of rank 0, e.g. "| depth averaged: advance  |  69 |  0.00929s |  18% |"
 _TIMER_RE = re.compile(
@@ -113,36 +135,53 @@ _TIMER_RE = re.compile(
 
 CSV_COLUMNS = ["problem", "line", "shape", "flip_fraction", "depth_update",
                "particles_per_direction", "cell_size", "columns", "cells", "steps", "error",
-               "order", "advance_wall_s", "advance_min_s", "advance_max_s", "total_wall_s",
-               "repeats", "background_load", "status"]
+               "order", "front", "front_exact", "front_error_percent", "advance_wall_s",
+               "advance_min_s", "advance_max_s", "total_wall_s", "repeats", "background_load",
+               "status"]
 
 
 def parse_line(name):
     """(shape, FLIP fraction, depth update, points per direction) of a line name."""
-    shape, flip, update, ppd = name.split("-")
-    return shape, FLIP[flip], UPDATES[update], int(ppd)
+    shape, transfer, update, ppd = name.split("-")
+    if shape not in SHAPES:
+        raise ValueError(shape)
+    if transfer == "pic":
+        flip = 0.0
+    elif transfer == "flip":
+        flip = 1.0
+    elif re.fullmatch(r"flip\d\d", transfer):
+        flip = int(transfer[4:]) / 100.
+    else:
+        raise ValueError(transfer)
+    return shape, flip, UPDATES[update], int(ppd)
 
 
 def settings_for(problem, line, cell_size):
-    """--set overrides of prm/dam-break-channel.prm for one run."""
+    """--set overrides of the problem's scene for one run."""
     shape, flip, update, ppd = parse_line(line)
-    width = float(f"{WIDTH_CELLS * cell_size:.12g}")
     s = {
-        "Time/End time": repr(END_TIME),
         "Time/Output interval": 100,
         "Time/Statistics interval": 100000,
+        "Test/Enable": "false",
         "Depth averaged/Output grid": "false",
         "Depth averaged/Grid/Cell size": repr(cell_size),
-        "Depth averaged/Grid/Upper right": f"100, {width!r}",
-        "Depth averaged/Release/Rectangle": f"0, 0, 100, {width!r}",
         "Depth averaged/Shape functions": shape,
         "Depth averaged/FLIP fraction": repr(flip),
         "Depth averaged/Depth update": update,
         "Depth averaged/Release/Particles per direction": ppd,
+        "Depth averaged/Verification/Tolerance": 0,
     }
+    width = float(f"{4 * cell_size:.12g}")
+    if problem in ("Stoker", "Ritter"):
+        s["Time/End time"] = "4.0"
+        s["Depth averaged/Grid/Upper right"] = f"100, {width!r}"
+        s["Depth averaged/Release/Rectangle"] = f"0, 0, 100, {width!r}"
     if problem == "Stoker":
         s["Depth averaged/Release/Depth"] = "x < 50 ? 1 : 0.5"
         s["Depth averaged/Verification/Right depth"] = 0.5
+    if problem == "slope":
+        s["Depth averaged/Grid/Upper right"] = f"64, {width!r}"
+        s["Depth averaged/Release/Rectangle"] = f"8, 0, 28, {width!r}"
     return s
 
 
@@ -152,15 +191,17 @@ def children_cpu_seconds():
     return r.ru_utime + r.ru_stime
 
 
-def run_slidewave(exe, prm, settings, problem):
+def run_slidewave(exe, problem, line, cell_size, niceness):
     """One run in a fresh temporary directory; returns a dict (status 'ok' or a reason)."""
     workdir = tempfile.mkdtemp(prefix="slidewave-da-wp-", dir="/tmp")
-    outdir = os.path.join(workdir, "out")
-    cmd = [exe]
-    for key, value in list(settings.items()) + [("Output directory", outdir)]:
+    cmd = (["nice", "-n", str(niceness)] if niceness else []) + [exe]
+    settings = settings_for(problem, line, cell_size)
+    for key, value in list(settings.items()) + [("Output directory",
+                                                 os.path.join(workdir, "out"))]:
         cmd += ["--set", f"{key}={value}"]
-    cmd.append(os.path.abspath(prm))
+    cmd.append(os.path.join(REPO, SCENES[problem]))
     r = {"status": "ok", "columns": None, "cells": None, "steps": None, "error": None,
+         "front": None, "front_exact": None, "front_error_percent": None,
          "advance_wall_s": None, "total_wall_s": None, "background_load": None}
     try:
         t0, busy0, own0 = time.perf_counter(), cpu_busy_seconds(), children_cpu_seconds()
@@ -178,23 +219,19 @@ def run_slidewave(exe, prm, settings, problem):
         timers = {n: (int(c), float(w)) for n, c, w in _TIMER_RE.findall(out)}
         if "depth averaged: advance" in timers:
             r["steps"], r["advance_wall_s"] = timers["depth averaged: advance"]
-        m = _ERROR_RE.search(out)
+        m = ERROR_RE[problem].search(out)
         if m:
-            r["error"] = float(m.group(2))
-            if m.group(1) != problem:
-                r["status"] = f"failed: the program solved {m.group(1)}, not {problem}"
-        stats = os.path.join(outdir, "statistics.csv")
-        if os.path.isfile(stats):
-            with open(stats, newline="") as f:
-                rows = list(csv.DictReader(f))
-            if rows and rows[-1].get("step"):
-                r["steps"] = int(rows[-1]["step"])
+            r["error"] = float(m.group(1))
+        m = _FRONT_RE.search(out)
+        if m:
+            r["front"], r["front_exact"] = float(m.group(1)), float(m.group(2))
+            r["front_error_percent"] = float(m.group(3))
         if proc.returncode != 0:
             reason = [l for l in out.strip().splitlines() if l.startswith("slidewave:")]
             text = reason[-1] if reason else " | ".join(out.strip().splitlines()[-2:])
             r["status"] = f"failed (exit {proc.returncode}): {text[:200]}"
         elif r["error"] is None:
-            r["status"] = "failed: no dam-break error line in the output"
+            r["status"] = "failed: no error line in the output"
         elif r["advance_wall_s"] is None:
             r["status"] = "failed: no 'depth averaged: advance' row in the timer table"
     finally:
@@ -202,19 +239,13 @@ def run_slidewave(exe, prm, settings, problem):
     return r
 
 
-def run_retrying(exe, prm, settings, problem, wait_s):
-    """run_slidewave, run again once after a failure that is not the program's own
-    (the executable being rebuilt meanwhile: missing, busy, or no timer table)."""
-    return retry_once(lambda: run_slidewave(exe, prm, settings, problem), exe, wait_s)
-
-
 # --------------------------------------------------------------------------------------
 # Tables and figure
 # --------------------------------------------------------------------------------------
 
 HEADER = (f"{'problem':<7} {'line':<18} {'C[m]':>6} {'columns':>7} {'cells':>6} "
-          f"{'steps':>5} {'advance[s]':>10} {'total[s]':>8} {'L1 error':>10} {'order':>6} "
-          f"{'bg':>4}")
+          f"{'steps':>5} {'advance[s]':>10} {'total[s]':>8} {'error':>10} {'order':>6} "
+          f"{'front%':>7} {'bg':>4}")
 
 
 def row_line(row):
@@ -222,41 +253,57 @@ def row_line(row):
             f"{fmt(row['columns'], 'd'):>7} {fmt(row['cells'], 'd'):>6} "
             f"{fmt(row['steps'], 'd'):>5} {fmt(row['advance_wall_s'], '.4g'):>10} "
             f"{fmt(row['total_wall_s'], '.2f'):>8} {fmt(row['error'], '.4e'):>10} "
-            f"{fmt(row['order'], '.2f'):>6} {fmt(row['background_load'], '.1f'):>4}")
+            f"{fmt(row['order'], '.2f'):>6} {fmt(row['front_error_percent'], '.1f'):>7} "
+            f"{fmt(row['background_load'], '.1f'):>4}")
     if row["status"] != "ok":
         line += f"  {row['status']}"
     return line
 
 
-def markdown(rows):
-    """Markdown tables: per problem, one row per line."""
-    out = []
-    sizes = sorted({r["cell_size"] for r in rows}, reverse=True)
-    lines_order = []
+def ordered_lines(rows):
+    lines = []
     for r in rows:
-        if r["line"] not in lines_order:
-            lines_order.append(r["line"])
+        if r["line"] not in lines:
+            lines.append(r["line"])
+    return lines
+
+
+def markdown(rows):
+    """Markdown tables: per problem, one row per line (error per cell size, the observed
+    order between the two finest, the median advance time at the finest; the front error
+    per cell size for the dry-bed problems)."""
+    out = []
     for problem in [p for p in PROBLEMS if any(r["problem"] == p for r in rows)]:
-        out.append(f"\n**{problem}** (relative L1 error of the depth at t = 4 s; order = "
-                   f"observed order between the two finest cell sizes; advance = median "
-                   f"time-loop wall time at the finest)\n")
+        sizes = sorted({r["cell_size"] for r in rows if r["problem"] == problem},
+                       reverse=True)
+        out.append(f"\n**{problem}**: {TITLES[problem]}; order between the two finest; "
+                   "advance = median time-loop wall time at the finest\n")
         out.append("| line | " + " | ".join(f"C = {c:g}" for c in sizes)
-                   + " | order (finest) | advance [s] (finest) |")
+                   + " | order | advance [s] |")
         out.append("|---|" + "---:|" * (len(sizes) + 2))
-        for line in lines_order:
+        for line in ordered_lines(rows):
             group = {r["cell_size"]: r for r in rows
                      if r["problem"] == problem and r["line"] == line}
             if not group:
                 continue
-            cells = []
-            for c in sizes:
-                r = group.get(c)
-                cells.append("-" if r is None else
-                             (fmt(r["error"], ".3e") if r["status"] == "ok" else "failed"))
-            finest = group.get(min(group))
+            cells = ["-" if c not in group else
+                     (fmt(group[c]["error"], ".3g") if group[c]["status"] == "ok"
+                      else "failed") for c in sizes]
+            finest = group[min(group)]
             out.append(f"| {line} | " + " | ".join(cells) +
                        f" | {fmt(finest['order'], '.2f')} | "
                        f"{fmt(finest['advance_wall_s'], '.3g')} |")
+        if problem in FRONT_PROBLEMS:
+            out.append(f"\n**{problem}, front** (per cent of the distance travelled)\n")
+            out.append("| line | " + " | ".join(f"C = {c:g}" for c in sizes) + " |")
+            out.append("|---|" + "---:|" * len(sizes))
+            for line in ordered_lines(rows):
+                group = {r["cell_size"]: r for r in rows
+                         if r["problem"] == problem and r["line"] == line}
+                if group:
+                    out.append(f"| {line} | " + " | ".join(
+                        "-" if c not in group else
+                        fmt(group[c]["front_error_percent"], "+.1f") for c in sizes) + " |")
     return "\n".join(out)
 
 
@@ -271,8 +318,9 @@ def read_csv(path):
     with open(path, newline="") as f:
         for r in csv.DictReader(f):
             row = dict(r)
-            for k in ("flip_fraction", "cell_size", "error", "order", "advance_wall_s",
-                      "advance_min_s", "advance_max_s", "total_wall_s", "background_load"):
+            for k in ("flip_fraction", "cell_size", "error", "order", "front", "front_exact",
+                      "front_error_percent", "advance_wall_s", "advance_min_s",
+                      "advance_max_s", "total_wall_s", "background_load"):
                 row[k] = to_number(r[k], float)
             for k in ("particles_per_direction", "columns", "cells", "steps", "repeats"):
                 row[k] = to_number(r[k], int)
@@ -281,12 +329,27 @@ def read_csv(path):
 
 
 def line_style(line):
-    """Colour by shape/points, line style by depth update, marker by PIC/FLIP."""
+    """Colour by the option that differs from the defaults, dashes for FLIP, marker by
+    columns per cell."""
     shape, flip, update, ppd = parse_line(line)
-    colour = {("q1", 2): "tab:red", ("q1", 4): "tab:orange",
-              ("gimp", 2): "tab:blue", ("gimp", 4): "tab:purple"}[(shape, ppd)]
-    style = "-" if update == "strain" else "--"
-    marker = "o" if flip == 0 else "^"
+    if line == "gimp-pic-proj-4":
+        colour = "black"
+    elif line == "q1-pic-strain-2":
+        colour = "tab:red"
+    elif shape == "q1":
+        colour = "tab:orange"
+    elif shape == "cpgimp":
+        colour = "tab:olive"
+    elif update == "strain":
+        colour = "tab:green"
+    elif ppd == 2:
+        colour = "tab:cyan"
+    elif ppd >= 8:
+        colour = "tab:purple"
+    else:
+        colour = "tab:blue"
+    style = "-" if flip == 0 else "--"
+    marker = {2: "v", 4: "o", 8: "s"}.get(ppd, "D")
     return colour, style, marker
 
 
@@ -295,55 +358,67 @@ def plot(rows, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    problems = [p for p in PROBLEMS if any(r["problem"] == p for r in rows)]
-    fig, axes = plt.subplots(1, len(problems), figsize=(6.4 * len(problems), 6.0),
+    panels = [(p, "error") for p in PROBLEMS if p != "block"
+              and any(r["problem"] == p for r in rows)]
+    panels += [(p, "front") for p in FRONT_PROBLEMS if any(r["problem"] == p for r in rows)]
+    ncols = 3
+    nrows = (len(panels) + ncols - 1) // ncols
+    fig, axes = plt.subplots(nrows, ncols, figsize=(5.6 * ncols, 4.6 * nrows + 1.2),
                              squeeze=False)
-    fig.subplots_adjust(left=0.07, right=0.98, top=0.89, bottom=0.22, wspace=0.22)
-    lines_order = []
-    for r in rows:
-        if r["line"] not in lines_order:
-            lines_order.append(r["line"])
+    fig.subplots_adjust(left=0.06, right=0.985, top=0.93, bottom=0.14, wspace=0.24,
+                        hspace=0.32)
+    lines = ordered_lines(rows)
     handles = {}
-    for ax, problem in zip(axes[0], problems):
-        for line in lines_order:
+    for ax, (problem, what) in zip(axes.flat, panels):
+        for line in lines:
             group = sorted((r for r in rows if r["problem"] == problem and r["line"] == line
-                            and r["status"] == "ok" and r["error"] and r["advance_wall_s"]),
+                            and r["status"] == "ok" and r["error"] is not None
+                            and r["advance_wall_s"]),
                            key=lambda r: -r["cell_size"])
             if not group:
                 continue
             colour, style, marker = line_style(line)
-            handles[line], = ax.loglog([r["advance_wall_s"] for r in group],
-                                       [r["error"] for r in group], color=colour, ls=style,
-                                       marker=marker, ms=5, lw=1.4, label=line)
-            finest = group[-1]
-            if finest.get("order") is not None:
-                ax.annotate(f"{finest['order']:+.2f}", (finest["advance_wall_s"],
-                                                       finest["error"]),
-                            textcoords="offset points", xytext=(5, -3), fontsize=7,
-                            color=colour, fontweight="bold")
-            if line == lines_order[0]:
-                for r in group[:-1]:
-                    ax.annotate(f"C = {r['cell_size']:g}", (r["advance_wall_s"], r["error"]),
-                                textcoords="offset points", xytext=(-6, 6), fontsize=7,
-                                color=colour)
-        ax.set_title(f"{problem}: h_l = 1 m, h_r = "
-                     f"{'0 (dry bed)' if problem == 'Ritter' else '0.5 m'}, t = 4 s",
-                     fontsize=10)
-        ax.set_xlabel("wall time of the time loop ('depth averaged: advance') [s]")
-        ax.set_ylabel("relative L1 error of the nodal depth")
+            x = [r["advance_wall_s"] for r in group]
+            if what == "error":
+                y = [max(r["error"], 1e-16) for r in group]
+                handles[line], = ax.loglog(x, y, color=colour, ls=style, marker=marker,
+                                           ms=5, lw=1.4, label=line)
+                finest = group[-1]
+                if finest.get("order") is not None and finest["error"] > 1e-9:
+                    ax.annotate(f"{finest['order']:+.2f}", (x[-1], y[-1]),
+                                textcoords="offset points", xytext=(5, -3), fontsize=7,
+                                color=colour, fontweight="bold")
+            else:
+                y = [r["front_error_percent"] for r in group]
+                handles[line], = ax.semilogx(x, y, color=colour, ls=style, marker=marker,
+                                             ms=5, lw=1.4, label=line)
+            if line == "gimp-pic-proj-4":
+                for xi, yi, r in zip(x, y, group):
+                    ax.annotate(f"{r['cell_size']:g}", (xi, yi), textcoords="offset points",
+                                xytext=(-4, 6), fontsize=7, color=colour)
+        if what == "error":
+            ax.set_title(TITLES[problem], fontsize=9)
+            ax.set_ylabel("relative error")
+        else:
+            ax.set_title(f"{problem}: front (h > 1 % of the release depth)", fontsize=9)
+            ax.set_ylabel("front error [% of the distance travelled]")
+            ax.axhspan(-2, 2, color="0.85", zorder=0)
+            ax.axhline(0, color="0.4", lw=0.8)
+        ax.set_xlabel("wall time of the time loop [s]")
         ax.grid(True, which="both", alpha=0.3)
         ax.margins(x=0.12)
-    fig.legend([handles[l] for l in lines_order if l in handles],
-               [l for l in lines_order if l in handles], loc="lower center",
-               ncol=min(4, len(handles)), fontsize=8,
-               title="shape - PIC (FLIP fraction 0) / FLIP (0.99) - depth update strain / "
-                     "projection - points per cell direction; bold numbers: observed order "
-                     "between the two finest cell sizes", title_fontsize=8)
-    fig.suptitle("Depth-averaged MPM, shallow-water limit: dam break on [0, 100] x "
-                 "[0, 4 C] m, cell sizes C (labels on the first line),\n"
-                 "error against the median wall time of the repetitions", fontsize=10)
+    for ax in list(axes.flat)[len(panels):]:
+        ax.axis("off")
+    fig.legend([handles[l] for l in lines if l in handles], [l for l in lines if l in handles],
+               loc="lower center", ncol=min(5, len(handles)), fontsize=8,
+               title="shape - PIC / FLIP (fraction 1; flipNN: 0.NN) - depth update strain / "
+                     "projection - columns per cell direction; black: the defaults; bold "
+                     "numbers: observed order between the two finest cells; small numbers: "
+                     "the cell size [m]; grey band: the issue's 2 %", title_fontsize=8)
+    fig.suptitle("Depth-averaged MPM: error against the median wall time of the time loop "
+                 "(2-core machine shared with builds; nice 10)", fontsize=10)
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    fig.savefig(path, dpi=120)
+    fig.savefig(path, dpi=110)
     plt.close(fig)
 
 
@@ -353,27 +428,26 @@ def plot(rows, path):
 
 def main(argv=None):
     p = argparse.ArgumentParser(
-        description="Work-precision of the depth-averaged material points on the Ritter "
-                    "and Stoker dam breaks (see the module docstring).",
+        description="Work-precision of the depth-averaged material points on their exact "
+                    "solutions (see the module docstring).",
         formatter_class=argparse.ArgumentDefaultsHelpFormatter)
     p.add_argument("--exe", default=os.path.join(REPO, "build", "slidewave"),
                    help="SlideWave executable")
-    p.add_argument("--prm", default=os.path.join(REPO, "prm", "dam-break-channel.prm"),
-                   help="dam-break channel scene")
     p.add_argument("--wait", type=float, default=60.0,
                    help="seconds to wait for the executable to appear (also before the "
                         "one retry of a run that failed for no reason of its own)")
     p.add_argument("--quick", action="store_true",
-                   help="cell sizes 1 to 0.125 m, one repetition")
-    p.add_argument("--cell-sizes",
-                   type=lambda s: [float(c) for c in s.split(",") if c.strip()],
-                   help="comma-separated cell sizes [m] (default 1,0.5,0.25,0.125,0.0625)")
-    p.add_argument("--lines", default=",".join(DEFAULT_LINES),
-                   help="comma-separated lines shape-pic|flip-strain|proj-N, or 'all'")
-    p.add_argument("--problems", default=",".join(PROBLEMS), help="Ritter, Stoker")
-    p.add_argument("--repeat", type=int, help="rounds of the study (default 3; --quick 1); "
-                   "the median time is reported")
-    p.add_argument("--idle-wait", type=float, default=20.0,
+                   help="two lines, coarse cells, one round")
+    p.add_argument("--lines", help="comma-separated shape-pic|flip|flipNN-strain|proj-N "
+                   "(default: the nine of the docstring)")
+    p.add_argument("--problems", default=",".join(PROBLEMS),
+                   help="rigid, Stoker, Ritter, slope, block")
+    p.add_argument("--finest", type=float, default=0.,
+                   help="leave out cell sizes below this [m]")
+    p.add_argument("--repeat", type=int, help="rounds (default 3; --quick 1); the median "
+                   "time is reported")
+    p.add_argument("--nice", type=int, default=10, help="niceness of the runs (0: none)")
+    p.add_argument("--idle-wait", type=float, default=0.0,
                    help="before each round, wait up to this many seconds for the machine "
                         "to be idle; 0: do not wait")
     p.add_argument("--csv", default=os.path.join(REPO, "benchmarks", "results",
@@ -392,45 +466,44 @@ def main(argv=None):
         return 0
 
     exe = find_executable(os.path.abspath(args.exe), args.wait)
-    if not os.path.isfile(args.prm):
-        sys.exit(f"scene file not found: {args.prm} (option --prm)")
-    sizes = args.cell_sizes or (QUICK_CELL_SIZES if args.quick else CELL_SIZES)
-    lines = ALL_LINES if args.lines.strip() == "all" else \
-        [l.strip() for l in args.lines.split(",") if l.strip()]
+    lines = [l.strip() for l in (args.lines or ",".join(
+        QUICK_LINES if args.quick else DEFAULT_LINES)).split(",") if l.strip()]
     for line in lines:
         try:
             parse_line(line)
         except (KeyError, ValueError):
-            sys.exit(f"bad line name '{line}' (shape-pic|flip-strain|proj-N, e.g. "
-                     "q1-pic-strain-2)")
+            sys.exit(f"bad line name '{line}' (shape-pic|flip|flipNN-strain|proj-N, e.g. "
+                     "gimp-pic-proj-4)")
     problems = [q.strip() for q in args.problems.split(",") if q.strip()]
+    for q in problems:
+        if q not in PROBLEMS:
+            sys.exit(f"unknown problem '{q}' (one of {', '.join(PROBLEMS)})")
+    sizes = QUICK_CELL_SIZES if args.quick else CELL_SIZES
     repeat = args.repeat or (1 if args.quick else 3)
-    cases = [(q, l, c) for q in problems for l in lines for c in sizes]
+    cases = [(q, l, c) for q in problems for l in lines for c in sizes[q] if c >= args.finest]
 
     t_start = time.perf_counter()
     exe_mtime = os.path.getmtime(exe)
-    print(f"SlideWave depth-averaged work-precision: {exe}, {args.prm}; {len(cases)} runs x "
-          f"{repeat} round(s); cell sizes {sizes} m, channel width {WIDTH_CELLS} cells, "
-          f"t = {END_TIME:g} s")
+    print(f"SlideWave depth-averaged work-precision: {exe}; {len(cases)} runs x {repeat} "
+          f"round(s), nice {args.nice}")
     results = {case: [] for case in cases}
     for round_ in range(repeat):
         if args.idle_wait > 0:
             load = wait_until_idle(args.idle_wait)
             print(f"round {round_ + 1}/{repeat}: background load {load:.2f} cores",
                   flush=True)
-        if round_ == 0:
-            print(HEADER)
-            print("-" * len(HEADER))
+        print(f"round {round_ + 1}/{repeat}")
+        print(HEADER)
+        print("-" * len(HEADER))
         for case in cases:
             q, l, c = case
             if results[case] and results[case][0]["status"] != "ok":
                 continue  # a failed run fails again
-            r = run_retrying(exe, args.prm, settings_for(q, l, c), q, args.wait)
+            r = retry_once(lambda: run_slidewave(exe, q, l, c, args.nice), exe, args.wait)
             results[case].append(r)
-            if round_ == 0:
-                row = {"problem": q, "line": l, "cell_size": c, "order": None}
-                row.update(r)
-                print(row_line(row), flush=True)
+            row = {"problem": q, "line": l, "cell_size": c, "order": None}
+            row.update(r)
+            print(row_line(row), flush=True)
 
     rows = []
     changed = []
@@ -440,8 +513,11 @@ def main(argv=None):
         runs = results[case]
         first = runs[0]
         row = {"problem": q, "line": l, "shape": shape, "flip_fraction": flip,
-               "depth_update": update, "particles_per_direction": ppd, "cell_size": c}
-        row.update({k: first[k] for k in ("status", "columns", "cells", "steps", "error")})
+               "depth_update": update, "particles_per_direction": ppd, "cell_size": c,
+               "advance_wall_s": None, "advance_min_s": None, "advance_max_s": None,
+               "total_wall_s": None, "background_load": None, "repeats": 0}
+        row.update({k: first[k] for k in ("status", "columns", "cells", "steps", "error",
+                                          "front", "front_exact", "front_error_percent")})
         ok = [r for r in runs if r["status"] == "ok"]
         if len(ok) != len(runs):
             row["status"] = next(r["status"] for r in runs if r["status"] != "ok")
@@ -466,14 +542,13 @@ def main(argv=None):
     failed = [r for r in rows if r["status"] != "ok"]
     print(f"{len(rows)} cases ({len(failed)} failed) in {time.perf_counter() - t_start:.0f} s. "
           "advance = median wall time of 'depth averaged: advance'; total = process; "
-          "order = against the next coarser C; bg = median cores busy with other work "
-          "during the run (0: an idle machine).")
+          "order = against the next coarser C; front% = front error in % of the distance "
+          "travelled; bg = median cores busy with other work during the run.")
     if os.path.getmtime(exe) != exe_mtime:
         print(f"WARNING: {exe} was rebuilt during the study; the runs may mix two builds.")
     if changed:
         print("WARNING: the error or the step count changed between repetitions for "
-              + ", ".join(f"{q}/{l}/{c:g}" for q, l, c in changed)
-              + " (was the executable rebuilt meanwhile?)")
+              + ", ".join(f"{q}/{l}/{c:g}" for q, l, c in changed))
     write_csv(args.csv, rows, CSV_COLUMNS)
     print(f"wrote {args.csv}")
     plot(rows, args.png)

@@ -68,8 +68,10 @@ namespace slidewave
                             "false",
                             Bool(),
                             "Write hazard maps at the end of the run into OUTPUT/maps: GeoTIFFs "
-                            "of one pixel per grid node (in the terrain raster's CRS when the "
-                            "terrain is a raster) of the peak flow thickness, peak flow "
+                            "of one pixel per node of the grid of 'Cell size' (in the terrain "
+                            "raster's CRS when the terrain is a raster; the thickness and "
+                            "velocity projected from the columns' own areas, doc/terrain.md) "
+                            "of the peak flow thickness, peak flow "
                             "velocity, peak dynamic pressure rho v^2, peak static pressure "
                             "rho g h, the time of arrival and the deposit thickness at the end; "
                             "the outlines of the affected and the deposit areas as GeoJSON; "
@@ -84,8 +86,9 @@ namespace slidewave
                             "5",
                             Integer(1),
                             "Steps between updates of the peaks and arrival times (and the "
-                            "last step). Each update costs about one step (a pass over the "
-                            "columns and an exchange): 1 for the sharpest maps.");
+                            "last step). Each update costs a fifth of a step or less (a pass "
+                            "over the columns, the covered pixels gathered on rank 0): 1 for "
+                            "the sharpest maps.");
         }
         prm.leave_subsection();
       }

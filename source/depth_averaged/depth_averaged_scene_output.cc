@@ -318,13 +318,16 @@ namespace slidewave
       const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       if (maps)
         {
-          maps->write(scene.output_directory + "/maps",
-                      *solver,
-                      solver->crs(),
-                      release_centre,
-                      scene.start_time);
+          const std::string summary = maps->write(scene.output_directory + "/maps",
+                                                  *solver,
+                                                  solver->crs(),
+                                                  release_centre,
+                                                  scene.start_time);
           if (is_writer && !scene.test_mode)
             std::printf("Hazard maps in %s/maps\n", scene.output_directory.c_str());
+          // The test mode echoes the summary (the maps' files are compared elsewhere).
+          if (is_writer && scene.test_mode)
+            std::printf("Hazard maps: %s\n", summary.c_str());
         }
       if (exact_solution == ExactSolution::still_state)
         {

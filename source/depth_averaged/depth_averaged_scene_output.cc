@@ -329,6 +329,15 @@ namespace slidewave
           if (is_writer && scene.test_mode)
             std::printf("Hazard maps: %s\n", summary.c_str());
         }
+      if (parameters.adaptivity.enabled && scene.test_mode)
+        {
+          // The grid that followed the flow: its cells now and how often it changed.
+          const auto cells = solver->triangulation().n_global_active_cells();
+          if (is_writer)
+            std::printf("Adaptive grid: %llu cells at the end, %u changes\n",
+                        static_cast<unsigned long long>(cells),
+                        grid->n_changes());
+        }
       if (exact_solution == ExactSolution::still_state)
         {
           const auto errors = still_state_errors();

@@ -183,6 +183,39 @@ namespace slidewave
 
 
 
+    void
+    HazardMaps::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.declare_entry("Enable",
+                        "false",
+                        Bool(),
+                        "Write hazard maps at the end of the run into OUTPUT/maps: GeoTIFFs "
+                        "of one pixel per node of the grid of 'Cell size' (in the terrain "
+                        "raster's CRS when the terrain is a raster; the thickness and "
+                        "velocity projected from the columns' own areas, doc/terrain.md) "
+                        "of the peak flow thickness, peak flow "
+                        "velocity, peak dynamic pressure rho v^2, peak static pressure "
+                        "rho g h, the time of arrival and the deposit thickness at the end; "
+                        "the outlines of the affected and the deposit areas as GeoJSON; "
+                        "summary.csv with their areas, the runout from the release's centre "
+                        "of mass, the elevation drop and the travel angle.");
+      prm.declare_entry("Thickness threshold",
+                        "0.05",
+                        Double(0.),
+                        "A node is reached (affected, part of the deposit) where the flow "
+                        "is thicker than this [m].");
+      prm.declare_entry("Interval",
+                        "5",
+                        Integer(1),
+                        "Steps between updates of the peaks and arrival times (and the "
+                        "last step). Each update costs a fifth of a step or less (a pass "
+                        "over the columns, the covered pixels gathered on rank 0): 1 for "
+                        "the sharpest maps.");
+    }
+
+
+
     const std::vector<std::string> &
     HazardMaps::names()
     {

@@ -2,6 +2,7 @@
 #define slidewave_depth_averaged_hazard_maps_h
 
 #include <cstdint>
+#include <deal.II/base/parameter_handler.h>
 #include <slidewave/depth_averaged/column_projection.h>
 #include <slidewave/depth_averaged/depth_averaged_solver.h>
 #include <slidewave/depth_averaged/tiled_raster.h>
@@ -31,6 +32,11 @@ namespace slidewave
     {
     public:
       HazardMaps(const DepthAveragedParameters &parameters, double threshold);
+
+      /** Declares the entries of the subsection "Hazard maps" (the handler inside it):
+       *  whether and how the maps are written at the end. */
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
 
       /** Updates the peaks and arrival times from the columns of @p solver at @p time
        *  (collective: the covered pixels' sums are gathered on rank 0). */

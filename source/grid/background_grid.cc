@@ -214,27 +214,39 @@ namespace slidewave
     std::vector<bool>
     BackgroundGrid::grow(std::vector<bool> near, const unsigned int layers) const
     {
+      // Layer by layer from the cells flagged last (the front): only their vertex
+      // neighbours can join the next layer, so the work is the flagged cells', not the
+      // grid's (a grid that follows a flow over a regional DEM is mostly coarse cells far
+      // from it).
+      std::vector<ActiveCellIterator> front, next;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned() && near[cell->active_cell_index()])
+          front.push_back(cell);
       for (unsigned int layer = 0; layer <= layers; ++layer)
         {
-          // Ghost cells learn their owners' flags.
+          // Ghost cells learn their owners' flags; those newly flagged join the front.
           dealii::GridTools::exchange_cell_data_to_ghosts<unsigned char, dealii::Triangulation<2>>(
             tria,
             [&](const ActiveCellIterator &cell) {
               return static_cast<unsigned char>(near[cell->active_cell_index()]);
             },
             [&](const ActiveCellIterator &cell, const unsigned char flag) {
+              if (flag != 0 && !near[cell->active_cell_index()])
+                front.push_back(cell);
               near[cell->active_cell_index()] = flag != 0;
             });
           if (layer == layers)
             break;
-          std::vector<bool> grown = near;
-          for (const auto &cell : tria.active_cell_iterators())
-            if (cell->is_locally_owned() && !near[cell->active_cell_index()])
-              for (const unsigned int v : cell->vertex_indices())
-                for (const auto &other : vertex_to_cells[cell->vertex_index(v)])
-                  if (!other->is_artificial() && near[other->active_cell_index()])
-                    grown[cell->active_cell_index()] = true;
-          near.swap(grown);
+          next.clear();
+          for (const auto &cell : front)
+            for (const unsigned int v : cell->vertex_indices())
+              for (const auto &other : vertex_to_cells[cell->vertex_index(v)])
+                if (other->is_locally_owned() && !near[other->active_cell_index()])
+                  {
+                    near[other->active_cell_index()] = true;
+                    next.push_back(other);
+                  }
+          front.swap(next);
         }
       return near;
     }

@@ -322,6 +322,9 @@ namespace slidewave
       declare_terrain_parameters(prm);
       declare_release_parameters(prm);
 
+      prm.enter_subsection("Adaptive grid");
+      grid::AdaptiveGridParameters::declare_parameters(prm);
+      prm.leave_subsection();
       prm.enter_subsection("Load balancing");
       grid::LoadBalancingParameters::declare_parameters(prm);
       prm.leave_subsection();
@@ -571,6 +574,24 @@ namespace slidewave
       parse_terrain_parameters(prm, path, *this);
       parse_release_parameters(prm, path, *this);
 
+      prm.enter_subsection("Adaptive grid");
+      adaptivity.parse_parameters(prm, path + "/Adaptive grid");
+      prm.leave_subsection();
+      if (adaptivity.enabled)
+        {
+          // The corners of 'Extent = terrain raster' are fitted to the coarsest cells later.
+          if (!grid_from_raster)
+            adaptivity.check_divides(lower_left, upper_right, cell_size, path + "/Adaptive grid");
+          // Between two adaptations a column travels at most 'Courant number' cells per
+          // step, and its shape functions reach one cell further: it must stay in fine cells.
+          const double reach = courant_number * adaptivity.interval + 1.;
+          if (fixed_time_step == 0. && !(adaptivity.buffer_cells > reach))
+            throw InputError(path + "/Adaptive grid/Buffer cells",
+                             std::to_string(adaptivity.buffer_cells),
+                             "more layers than the columns can travel between two adaptations "
+                             "plus their reach, 'Courant number' x 'Interval' + 1 = "
+                               + to_string(reach) + " (or a shorter 'Interval')");
+        }
       prm.enter_subsection("Load balancing");
       balancing.parse_parameters(prm);
       prm.leave_subsection();

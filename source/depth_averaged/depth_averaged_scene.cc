@@ -57,41 +57,6 @@ namespace slidewave
 
 
 
-      /** Subsection "Hazard maps": whether and how the maps are written at the end. */
-      void
-      declare_hazard_map_parameters(dealii::ParameterHandler &prm)
-      {
-        using namespace dealii::Patterns;
-        prm.enter_subsection("Hazard maps");
-        {
-          prm.declare_entry("Enable",
-                            "false",
-                            Bool(),
-                            "Write hazard maps at the end of the run into OUTPUT/maps: GeoTIFFs "
-                            "of one pixel per grid node (in the terrain raster's CRS when the "
-                            "terrain is a raster) of the peak flow thickness, peak flow "
-                            "velocity, peak dynamic pressure rho v^2, peak static pressure "
-                            "rho g h, the time of arrival and the deposit thickness at the end; "
-                            "the outlines of the affected and the deposit areas as GeoJSON; "
-                            "summary.csv with their areas, the runout from the release's centre "
-                            "of mass, the elevation drop and the travel angle.");
-          prm.declare_entry("Thickness threshold",
-                            "0.05",
-                            Double(0.),
-                            "A node is reached (affected, part of the deposit) where the flow "
-                            "is thicker than this [m].");
-          prm.declare_entry("Interval",
-                            "5",
-                            Integer(1),
-                            "Steps between updates of the peaks and arrival times (and the "
-                            "last step). Each update costs about one step (a pass over the "
-                            "columns and an exchange): 1 for the sharpest maps.");
-        }
-        prm.leave_subsection();
-      }
-
-
-
       /** Subsection "Verification": the exact solutions, the conservation and symmetry
        *  checks and their tolerances. */
       void
@@ -194,7 +159,9 @@ namespace slidewave
                         Bool(),
                         "Also write the grid (grid/*.pvtu, grid.pvd) with the nodal depth, "
                         "the flow surface h + Z, the terrain and the nodal velocity.");
-      declare_hazard_map_parameters(prm);
+      prm.enter_subsection("Hazard maps");
+      HazardMaps::declare_parameters(prm);
+      prm.leave_subsection();
       declare_verification_parameters(prm);
       prm.leave_subsection();
     }
@@ -230,9 +197,11 @@ namespace slidewave
             = std::make_shared<const terrain::RasterSource>(section + "/Terrain/Raster file",
                                                             parameters.elevation_raster,
                                                             parameters.raster_options);
-          const auto       footprint = parameters.terrain_raster->footprint();
+          const auto footprint = parameters.terrain_raster->footprint();
+          // With an adaptive grid, whole coarsest cells (their corners on multiples of
+          // them, so also of 'Cell size').
           grid::GridExtent extent;
-          extent.cell_size = parameters.cell_size;
+          extent.cell_size = parameters.cell_size * (1u << parameters.adaptivity.used_levels());
           extent.fit_inside(footprint.lower, footprint.upper, section + "/Grid", "terrain raster");
           parameters.lower_left  = extent.lower_left;
           parameters.upper_right = extent.upper_right;
@@ -316,18 +285,28 @@ namespace slidewave
     DepthAveragedScene::memory_estimate() const
     {
       core::MemoryEstimate estimate;
-      const auto          &p = parameters;
+      const auto          &p      = parameters;
+      const auto           points = particles::point_count_bound(
+        {p.release}, p.lower_left, p.upper_right, p.cell_size, p.particles_per_direction);
+      double cells = particles::grid_cell_count(p.lower_left, p.upper_right, p.cell_size);
+      if (p.adaptivity.enabled)
+        {
+          // The coarsest cells, and at the start the release's cells with the buffer around
+          // them, fine, and as many again in the rings of the levels between (an estimate
+          // of the start: the fine region follows the flow).
+          const double levels = std::pow(4., p.adaptivity.levels);
+          const double released
+            = static_cast<double>(points) / (p.particles_per_direction * p.particles_per_direction);
+          const double side = std::sqrt(released) + 2. * p.adaptivity.buffer_cells;
+          cells             = std::min(cells, cells / levels + 2. * side * side);
+        }
       estimate.add("grid cells",
-                   particles::grid_cell_count(p.lower_left, p.upper_right, p.cell_size),
+                   cells,
                    core::MemoryEstimate::bytes_per_depth_averaged_cell,
                    section + "/Grid/Cell size",
                    to_string(p.cell_size));
       estimate.add("material points",
-                   particles::point_count_bound({p.release},
-                                                p.lower_left,
-                                                p.upper_right,
-                                                p.cell_size,
-                                                p.particles_per_direction),
+                   points,
                    core::MemoryEstimate::bytes_per_point,
                    section + "/Release/Particles per direction",
                    std::to_string(p.particles_per_direction));
@@ -522,8 +501,11 @@ namespace slidewave
       std::ostringstream out;
       out.precision(12);
       out << "depth averaged; grid " << parameters.lower_left << " to " << parameters.upper_right
-          << ", cell size " << parameters.cell_size << "; terrain '" << parameters.elevation
-          << "' at " << parameters.terrain_spacing << " m";
+          << ", cell size " << parameters.cell_size;
+      // The coarse cells of an adaptive grid are those of its checkpoint.
+      if (parameters.adaptivity.enabled)
+        out << ", adaptive levels " << parameters.adaptivity.levels;
+      out << "; terrain '" << parameters.elevation << "' at " << parameters.terrain_spacing << " m";
       if (!parameters.elevation_table.empty())
         out << " (table " << parameters.elevation_table << ")";
       if (!parameters.elevation_raster.empty())

@@ -318,13 +318,25 @@ namespace slidewave
       const bool is_writer = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       if (maps)
         {
-          maps->write(scene.output_directory + "/maps",
-                      *solver,
-                      solver->crs(),
-                      release_centre,
-                      scene.start_time);
+          const std::string summary = maps->write(scene.output_directory + "/maps",
+                                                  *solver,
+                                                  solver->crs(),
+                                                  release_centre,
+                                                  scene.start_time);
           if (is_writer && !scene.test_mode)
             std::printf("Hazard maps in %s/maps\n", scene.output_directory.c_str());
+          // The test mode echoes the summary (the maps' files are compared elsewhere).
+          if (is_writer && scene.test_mode)
+            std::printf("Hazard maps: %s\n", summary.c_str());
+        }
+      if (parameters.adaptivity.enabled && scene.test_mode)
+        {
+          // The grid that followed the flow: its cells now and how often it changed.
+          const auto cells = solver->triangulation().n_global_active_cells();
+          if (is_writer)
+            std::printf("Adaptive grid: %llu cells at the end, %u changes\n",
+                        static_cast<unsigned long long>(cells),
+                        grid->n_changes());
         }
       if (exact_solution == ExactSolution::still_state)
         {

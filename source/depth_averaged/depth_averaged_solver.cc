@@ -133,6 +133,11 @@ namespace slidewave
     DepthAveragedSolver::make_grid(const DepthAveragedParameters &prm)
     {
       grid::GridChanges changes;
+      changes.adaptive_levels     = prm.adaptivity.used_levels();
+      changes.adaptivity_interval = prm.adaptivity.interval;
+      changes.buffer_cells        = prm.adaptivity.buffer_cells;
+      // A fast flow may cross the rings of several levels between two adaptations.
+      changes.refine_to_finest    = true;
       changes.imbalance_threshold = prm.balancing.imbalance_threshold;
       changes.balance_interval    = prm.balancing.interval;
       return std::make_unique<grid::BackgroundGrid>(prm.lower_left,

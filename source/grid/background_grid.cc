@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -179,7 +180,21 @@ namespace slidewave
     bool
     BackgroundGrid::adapt()
     {
-      const bool changes   = flag_for_adaptation(cells_to_keep_fine());
+      // deal.II refines a cell by one level per pass: material that moved into cells two
+      // levels coarser than 'Cell size' since the last adaptation (a fast flow crossing
+      // the rings of the levels between, issue 28) would stay on coarse cells. With
+      // refine_to_finest the passes repeat until every cell that must be fine is (at most
+      // 'Levels' passes); only the first coarsens.
+      bool               changes = false;
+      const unsigned int passes
+        = settings.refine_to_finest ? std::max(1u, settings.adaptive_levels) : 1;
+      for (unsigned int pass = 0; pass < passes; ++pass)
+        {
+          if (!flag_for_adaptation(cells_to_keep_fine(), /*coarsen=*/pass == 0))
+            break;
+          execute_coarsening_and_refinement(); // also repartitions by the cell weights
+          changes = true;
+        }
       const bool rebalance = !changes && settings.imbalance_threshold > 0.
                              && dealii::Utilities::MPI::n_mpi_processes(tria.get_communicator()) > 1
                              && load_imbalance() > settings.imbalance_threshold;
@@ -187,9 +202,7 @@ namespace slidewave
         return false;
       // What lives on the cells follows them through refinement, coarsening and
       // repartitioning.
-      if (changes)
-        execute_coarsening_and_refinement(); // also repartitions by the cell weights
-      else
+      if (rebalance)
         repartition();
       ++n_grid_changes;
       return true;
@@ -214,27 +227,65 @@ namespace slidewave
     std::vector<bool>
     BackgroundGrid::grow(std::vector<bool> near, const unsigned int layers) const
     {
+      // Layer by layer from the cells flagged last (the front): only their vertex
+      // neighbours can join the next layer, so the work is the flagged cells', not the
+      // grid's (a grid that follows a flow over a regional DEM is mostly coarse cells far
+      // from it).
+      std::vector<ActiveCellIterator> front, next;
+      std::vector<bool>               queued(near.size(), false);
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned() && near[cell->active_cell_index()])
+          front.push_back(cell);
       for (unsigned int layer = 0; layer <= layers; ++layer)
         {
-          // Ghost cells learn their owners' flags.
+          // Ghost cells learn their owners' flags; those newly flagged join the front.
           dealii::GridTools::exchange_cell_data_to_ghosts<unsigned char, dealii::Triangulation<2>>(
             tria,
             [&](const ActiveCellIterator &cell) {
               return static_cast<unsigned char>(near[cell->active_cell_index()]);
             },
             [&](const ActiveCellIterator &cell, const unsigned char flag) {
+              if (flag != 0 && !near[cell->active_cell_index()])
+                front.push_back(cell);
               near[cell->active_cell_index()] = flag != 0;
             });
           if (layer == layers)
             break;
-          std::vector<bool> grown = near;
-          for (const auto &cell : tria.active_cell_iterators())
-            if (cell->is_locally_owned() && !near[cell->active_cell_index()])
+          // A cell joins the layer if a cell flagged before is among the cells around one
+          // of its own vertices (deal.II's vertex map also lists a coarse cell at the
+          // hanging vertices on its edges: the relation is not symmetric, so the
+          // candidates found from the front are checked from their own vertices).
+          next.clear();
+          const auto consider = [&](const unsigned int vertex) {
+            for (const auto &other : vertex_to_cells[vertex])
+              if (other->is_locally_owned() && !near[other->active_cell_index()]
+                  && !queued[other->active_cell_index()])
+                {
+                  bool touches = false;
+                  for (const unsigned int w : other->vertex_indices())
+                    for (const auto &around : vertex_to_cells[other->vertex_index(w)])
+                      touches = touches
+                                || (!around->is_artificial() && near[around->active_cell_index()]);
+                  if (touches)
+                    {
+                      queued[other->active_cell_index()] = true;
+                      next.push_back(other);
+                    }
+                }
+          };
+          for (const auto &cell : front)
+            {
+              // Its vertices, and the hanging vertices in the middle of its edges (the
+              // finer cells there touch it only at those).
               for (const unsigned int v : cell->vertex_indices())
-                for (const auto &other : vertex_to_cells[cell->vertex_index(v)])
-                  if (!other->is_artificial() && near[other->active_cell_index()])
-                    grown[cell->active_cell_index()] = true;
-          near.swap(grown);
+                consider(cell->vertex_index(v));
+              for (const unsigned int f : cell->face_indices())
+                if (cell->face(f)->has_children())
+                  consider(cell->face(f)->child(0)->vertex_index(1));
+            }
+          for (const auto &cell : next)
+            near[cell->active_cell_index()] = true;
+          front.swap(next);
         }
       return near;
     }
@@ -242,7 +293,7 @@ namespace slidewave
 
 
     bool
-    BackgroundGrid::flag_for_adaptation(const std::vector<bool> &keep_fine)
+    BackgroundGrid::flag_for_adaptation(const std::vector<bool> &keep_fine, const bool coarsen)
     {
       bool changes = false;
       for (const auto &cell : tria.active_cell_iterators())
@@ -255,7 +306,7 @@ namespace slidewave
                 cell->set_refine_flag();
                 changes = true;
               }
-            else if (!fine && level > n_base_refinements)
+            else if (coarsen && !fine && level > n_base_refinements)
               {
                 cell->set_coarsen_flag();
                 changes = true;

@@ -82,6 +82,14 @@ namespace slidewave
     {
       // Cells holding material: from the regions (at set-up: any point of the finest
       // lattice of points in the cell lies in a region) or from the points.
+      std::vector<std::pair<dealii::Point<2>, dealii::Point<2>>> boxes;
+      bool                                                       all_boxed = true;
+      if (expected_regions != nullptr)
+        for (const auto &region : *expected_regions)
+          if (region.polygon.empty())
+            all_boxed = false;
+          else
+            boxes.push_back(region.bounding_box());
       for (const auto &cell : grid.triangulation().active_cell_iterators())
         {
           if (!cell->is_locally_owned())
@@ -91,7 +99,17 @@ namespace slidewave
             {
               const dealii::Point<2> origin = cell->vertex(0);
               const double           h      = cell->vertex(1)[0] - origin[0];
-              const unsigned int     m      = expected_per_direction
+              // A cell away from every region's bounding box holds none of its points (the
+              // lattice test below costs (per_direction x 2^levels)^2 point-in-polygon
+              // tests per coarse cell: most of the set-up on a regional DEM).
+              const bool near_a_region
+                = !all_boxed || std::any_of(boxes.begin(), boxes.end(), [&](const auto &box) {
+                    return origin[0] <= box.second[0] && origin[0] + h >= box.first[0]
+                           && origin[1] <= box.second[1] && origin[1] + h >= box.first[1];
+                  });
+              if (!near_a_region)
+                continue;
+              const unsigned int m = expected_per_direction
                                      * static_cast<unsigned int>(std::round(h / grid.cell_size()));
               for (unsigned int j = 0; j < m && !has_material; ++j)
                 for (unsigned int i = 0; i < m && !has_material; ++i)

@@ -6,6 +6,7 @@
 #include <deal.II/base/point.h>
 #include <memory>
 #include <slidewave/core/parsed_expression.h>
+#include <slidewave/grid/adaptive_grid_parameters.h>
 #include <slidewave/grid/grid_boundary.h>
 #include <slidewave/grid/load_balancing_parameters.h>
 #include <slidewave/grid/shape_functions.h>
@@ -65,6 +66,8 @@ namespace slidewave
       /** 'Extent = terrain raster': the corners are not given but fitted inside the terrain
        *  raster's footprint (by the scene, once the raster's path is resolved). */
       bool grid_from_raster = false;
+      /** Subsection "Adaptive grid": a grid that follows the flow (issue 28). */
+      grid::AdaptiveGridParameters adaptivity;
       /** Left, right, bottom, top (ids 0-3): roller = 'wall', free = 'open'. */
       std::array<grid::GridBoundary, 4> sides{{grid::GridBoundary::roller,
                                                grid::GridBoundary::roller,

@@ -50,7 +50,7 @@ namespace slidewave
       /** The flow of @p parameters on the scene's @p grid (attaches to it). */
       DepthAveragedSolver(const DepthAveragedParameters &parameters, grid::BackgroundGrid &grid);
 
-      /** The grid of the flow's parameters ('Grid', 'Load balancing'; no adaptivity). */
+      /** The grid of the flow's parameters ('Grid', 'Adaptive grid', 'Load balancing'). */
       static std::unique_ptr<grid::BackgroundGrid>
       make_grid(const DepthAveragedParameters &parameters);
 

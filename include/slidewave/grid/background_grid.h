@@ -32,6 +32,11 @@ namespace slidewave
       double imbalance_threshold = 1.1;
       /** Steps between two checks of the balance (and a full sort of the points). */
       unsigned int balance_interval = 50;
+      /** Each adaptation refines in as many passes as it takes for every cell the
+       *  followers need fine to reach 'Cell size' (deal.II refines one level per pass);
+       *  false: one pass (the soil's and the fluid's grids, which re-evaluate between
+       *  adaptations). */
+      bool refine_to_finest = false;
     };
 
 
@@ -106,8 +111,9 @@ namespace slidewave
       bool
       change_if_due(unsigned int step);
 
-      /** Refines where the followers need it, coarsens elsewhere, repartitions if
-       *  unbalanced; returns whether the cells changed (collective). */
+      /** Refines where the followers need it (with refine_to_finest in as many passes as
+       *  it takes for every such cell to reach 'Cell size'), coarsens elsewhere,
+       *  repartitions if unbalanced; returns whether the cells changed (collective). */
       bool
       adapt();
 
@@ -152,12 +158,12 @@ namespace slidewave
       grow(std::vector<bool> near, unsigned int layers) const;
 
       /**
-       * Flags the owned cells for refinement where @p keep_fine (up to 'Cell size') and
-       * for coarsening elsewhere (down to the base grid); returns whether any rank flagged
-       * a cell (collective).
+       * Flags the owned cells for refinement where @p keep_fine (up to 'Cell size') and,
+       * with @p coarsen, for coarsening elsewhere (down to the base grid); returns whether
+       * any rank flagged a cell (collective).
        */
       bool
-      flag_for_adaptation(const std::vector<bool> &keep_fine);
+      flag_for_adaptation(const std::vector<bool> &keep_fine, bool coarsen = true);
 
       /** Refines and coarsens the flagged cells (and repartitions by the cell weights),
        *  with the followers. */

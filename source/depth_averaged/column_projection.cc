@@ -1,0 +1,196 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <slidewave/depth_averaged/column_projection.h>
+#include <slidewave/depth_averaged/depth_averaged_model.h>
+
+namespace slidewave
+{
+  namespace depth_averaged
+  {
+    namespace
+    {
+      /** Values per pixel: volume, mass, momentum x, momentum y. */
+      constexpr unsigned int n_sums = 4;
+    } // namespace
+
+
+
+    ColumnProjection::ColumnProjection(const dealii::Point<2> &lower_left,
+                                       const double            cell_size,
+                                       const unsigned int      nx,
+                                       const unsigned int      ny)
+      : corner(lower_left)
+      , c(cell_size)
+      , nx(nx)
+      , ny(ny)
+      , sums(nx + 1, ny + 1, std::vector<double>(n_sums, 0.))
+    {
+    }
+
+
+
+    void
+    ColumnProjection::add(const std::uint64_t index, const double *values)
+    {
+      double *s = sums.at(index % (nx + 1), index / (nx + 1));
+      // A column's mass is positive: a pixel with none has not been touched yet.
+      if (s[1] == 0.)
+        touched.push_back(index);
+      for (unsigned int v = 0; v < n_sums; ++v)
+        s[v] += values[v];
+    }
+
+
+
+    void
+    ColumnProjection::add_column(const dealii::Point<2> &x,
+                                 const double            V,
+                                 const double            m,
+                                 const double            vx,
+                                 const double            vy,
+                                 const double            bx,
+                                 const double            by)
+    {
+      // The rectangle, clipped to the domain [x0, x0 + nx c] x [y0, y0 + ny c].
+      const double left   = std::max(x[0] - bx, corner[0]);
+      const double right  = std::min(x[0] + bx, corner[0] + nx * c);
+      const double bottom = std::max(x[1] - by, corner[1]);
+      const double top    = std::min(x[1] + by, corner[1] + ny * c);
+      if (!(right > left) || !(top > bottom))
+        return;
+      const double inverse_area = 1. / ((right - left) * (top - bottom));
+      // The integral over [a, b] of the hat function of the node at @p node (1 there, 0 a
+      // cell away): c (G(s_b) - G(s_a)) with G the hat's antiderivative in cell units.
+      const auto weight = [this](const double a, const double b, const double node) {
+        const auto G = [](double s) {
+          s = std::clamp(s, -1., 1.);
+          return s <= 0. ? 0.5 * (s + 1.) * (s + 1.) : 1. - 0.5 * (1. - s) * (1. - s);
+        };
+        return c * (G((b - node) / c) - G((a - node) / c));
+      };
+      // The nodes whose hats reach the rectangle.
+      const double reach = c;
+      const auto   first = [this](const double a, const double origin, const unsigned int n) {
+        return static_cast<unsigned int>(
+          std::clamp<long>(std::lround(std::ceil((a - origin) / c - 1e-12)), 0, n));
+      };
+      const auto last = [this](const double a, const double origin, const unsigned int n) {
+        return static_cast<unsigned int>(
+          std::clamp<long>(std::lround(std::floor((a - origin) / c + 1e-12)), 0, n));
+      };
+      const unsigned int i0 = first(left - reach, corner[0], nx),
+                         i1 = last(right + reach, corner[0], nx);
+      const unsigned int j0 = first(bottom - reach, corner[1], ny),
+                         j1 = last(top + reach, corner[1], ny);
+      for (unsigned int j = j0; j <= j1; ++j)
+        {
+          const double height = weight(bottom, top, corner[1] + j * c);
+          if (!(height > 0.))
+            continue;
+          for (unsigned int i = i0; i <= i1; ++i)
+            {
+              const double width = weight(left, right, corner[0] + i * c);
+              if (!(width > 0.))
+                continue;
+              const double w         = width * height * inverse_area;
+              const double values[4] = {w * V, w * m, w * m * vx, w * m * vy};
+              add(static_cast<std::uint64_t>(j) * (nx + 1) + i, values);
+            }
+        }
+    }
+
+
+
+    void
+    ColumnProjection::gather_on_rank_zero()
+    {
+      const MPI_Comm     comm    = MPI_COMM_WORLD;
+      const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+      if (n_ranks == 1)
+        return;
+      const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+      // Each touched pixel as its index (a double holds integers up to 2^53 exactly) and
+      // its four sums.
+      std::vector<double> mine;
+      if (rank != 0)
+        {
+          mine.reserve(touched.size() * (n_sums + 1));
+          for (const std::uint64_t k : touched)
+            {
+              const double *s = sums.find(k % (nx + 1), k / (nx + 1));
+              mine.push_back(static_cast<double>(k));
+              mine.insert(mine.end(), s, s + n_sums);
+            }
+        }
+      const int        count = mine.size();
+      std::vector<int> counts(n_ranks), offsets(n_ranks + 1, 0);
+      MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        offsets[r + 1] = offsets[r] + counts[r];
+      std::vector<double> all(rank == 0 ? offsets[n_ranks] : 0);
+      MPI_Gatherv(mine.data(),
+                  count,
+                  MPI_DOUBLE,
+                  all.data(),
+                  counts.data(),
+                  offsets.data(),
+                  MPI_DOUBLE,
+                  0,
+                  comm);
+      if (rank != 0)
+        {
+          // This rank's sums went to rank 0: cleared for the next projection.
+          for (const std::uint64_t k : touched)
+            std::fill_n(sums.at(k % (nx + 1), k / (nx + 1)), n_sums, 0.);
+          touched.clear();
+          return;
+        }
+      for (std::size_t e = 0; e < all.size(); e += n_sums + 1)
+        add(static_cast<std::uint64_t>(all[e]), all.data() + e + 1);
+    }
+
+
+
+    const std::vector<ColumnProjection::Pixel> &
+    ColumnProjection::project(const particles::PointCloud &cloud)
+    {
+      pixels.clear();
+      for (const auto &particle : cloud.particles())
+        {
+          const auto   p = particle.get_properties();
+          const double h = p[property::depth];
+          if (!(h > 0.))
+            continue;
+          // The column's area A_p = V_p / h_p, in the proportions of its GIMP domain
+          // (lx, ly): half-sides s lx, s ly with 4 s^2 lx ly = A_p; at most 2 c each, so
+          // that a column spread thin stays a few pixels wide.
+          const double V  = p[property::volume];
+          const double lx = p[property::domain_half_x], ly = p[property::domain_half_y];
+          const double s = std::sqrt(V / h / (4. * lx * ly));
+          add_column(particle.get_location(),
+                     V,
+                     p[property::mass],
+                     p[property::velocity_x],
+                     p[property::velocity_y],
+                     std::min(s * lx, 2. * c),
+                     std::min(s * ly, 2. * c));
+        }
+      gather_on_rank_zero();
+      // Rank 0 (or the only rank): thickness and velocity of every touched pixel, its
+      // sums cleared for the next projection.
+      pixels.reserve(touched.size());
+      for (const std::uint64_t k : touched)
+        {
+          const unsigned int i = k % (nx + 1), j = k / (nx + 1);
+          double            *s = sums.at(i, j);
+          const double       area
+            = c * c * (i == 0 || i == nx ? 0.5 : 1.) * (j == 0 || j == ny ? 0.5 : 1.);
+          pixels.push_back({k, s[0] / area, s[2] / s[1], s[3] / s[1]});
+          std::fill_n(s, n_sums, 0.);
+        }
+      touched.clear();
+      return pixels;
+    }
+  } // namespace depth_averaged
+} // namespace slidewave

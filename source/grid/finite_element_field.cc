@@ -7,6 +7,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
+#include <functional>
 #include <slidewave/grid/finite_element_field.h>
 #include <slidewave/grid/tree_order.h>
 #include <slidewave/linear_algebra/cell_evaluation.h>
@@ -123,17 +124,14 @@ namespace slidewave
 
 
     void
-    FiniteElementField::copy_to_grid_nodes(
-      dealii::LinearAlgebra::distributed::Vector<double> &nodal) const
+    FiniteElementField::for_each_owned_cell_with_grid_dofs(
+      const std::function<void(const std::vector<dealii::types::global_dof_index> &,
+                               const std::vector<dealii::types::global_dof_index> &)> &f) const
     {
-      Assert(fe->n_components() == 1 && fe->degree == 1,
-             dealii::ExcMessage("copy_to_grid_nodes() takes a scalar Q1 field"));
       const dealii::DoFHandler<2>                 &grid_dofs = grid.dof_handler();
       std::vector<dealii::types::global_dof_index> field_indices(fe->n_dofs_per_cell());
       std::vector<dealii::types::global_dof_index> grid_indices(
         grid_dofs.get_fe().n_dofs_per_cell());
-      AssertDimension(field_indices.size(), grid_indices.size());
-      nodal.zero_out_ghost_values();
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -143,10 +141,24 @@ namespace slidewave
                                                                         cell->index(),
                                                                         &grid_dofs);
             grid_cell->get_dof_indices(grid_indices);
-            for (unsigned int k = 0; k < grid_indices.size(); ++k)
-              if (nodal.in_local_range(grid_indices[k]))
-                nodal(grid_indices[k]) = ghosted_values[0][field_indices[k]];
+            f(field_indices, grid_indices);
           }
+    }
+
+
+
+    void
+    FiniteElementField::copy_to_grid_nodes(
+      dealii::LinearAlgebra::distributed::Vector<double> &nodal) const
+    {
+      Assert(fe->n_components() == 1 && fe->degree == 1,
+             dealii::ExcMessage("copy_to_grid_nodes() takes a scalar Q1 field"));
+      nodal.zero_out_ghost_values();
+      for_each_owned_cell_with_grid_dofs([&](const auto &field_indices, const auto &grid_indices) {
+        for (unsigned int k = 0; k < grid_indices.size(); ++k)
+          if (nodal.in_local_range(grid_indices[k]))
+            nodal(grid_indices[k]) = ghosted_values[0][field_indices[k]];
+      });
       nodal.update_ghost_values();
     }
 
@@ -159,28 +171,16 @@ namespace slidewave
       Assert(fe->degree == 1 && nodal.size() == fe->n_components(),
              dealii::ExcMessage("copy_from_grid_nodes() takes a Q1 field and a vector per "
                                 "component"));
-      const dealii::DoFHandler<2>                 &grid_dofs = grid.dof_handler();
-      std::vector<dealii::types::global_dof_index> field_indices(fe->n_dofs_per_cell());
-      std::vector<dealii::types::global_dof_index> grid_indices(
-        grid_dofs.get_fe().n_dofs_per_cell());
       VectorType &owned = owned_values[0];
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(field_indices);
-            const dealii::DoFHandler<2>::active_cell_iterator grid_cell(&grid.triangulation(),
-                                                                        cell->level(),
-                                                                        cell->index(),
-                                                                        &grid_dofs);
-            grid_cell->get_dof_indices(grid_indices);
-            for (unsigned int k = 0; k < field_indices.size(); ++k)
-              if (owned_dofs.is_element(field_indices[k]))
-                {
-                  // The k-th shape function of the field sits at vertex v, component c.
-                  const auto [c, v]       = fe->system_to_component_index(k);
-                  owned[field_indices[k]] = (*nodal[c])(grid_indices[v]);
-                }
-          }
+      for_each_owned_cell_with_grid_dofs([&](const auto &field_indices, const auto &grid_indices) {
+        for (unsigned int k = 0; k < field_indices.size(); ++k)
+          if (owned_dofs.is_element(field_indices[k]))
+            {
+              // The k-th shape function of the field sits at vertex v, component c.
+              const auto [c, v]       = fe->system_to_component_index(k);
+              owned[field_indices[k]] = (*nodal[c])(grid_indices[v]);
+            }
+      });
       owned.compress(dealii::VectorOperation::insert);
       values_changed(0);
     }

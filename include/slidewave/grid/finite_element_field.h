@@ -227,6 +227,13 @@ namespace slidewave
       void
       setup_dofs();
 
+      /** Calls @p f with the field's and the grid's (scalar Q1) dof indices of every
+       *  owned cell, in the order of the cells' vertices for Q1. */
+      void
+      for_each_owned_cell_with_grid_dofs(
+        const std::function<void(const std::vector<dealii::types::global_dof_index> &,
+                                 const std::vector<dealii::types::global_dof_index> &)> &f) const;
+
       /** The states' vectors as deal.II's transfer takes them. */
       std::vector<const VectorType *>
       ghosted_pointers() const;

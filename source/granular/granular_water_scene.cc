@@ -1,12 +1,7 @@
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_values.h>
-#include <fstream>
 #include <limits>
-#include <map>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/run_bounds.h>
 #include <slidewave/core/run_control.h>

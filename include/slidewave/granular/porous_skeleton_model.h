@@ -127,13 +127,6 @@ namespace slidewave
         return parameters.forchheimer ? law.drag_coefficient(n, k, speed) : n * n * viscosity / k;
       }
 
-      /** The grains' density rho^s [kg/m^3]. */
-      double
-      grains_density() const
-      {
-        return grain_density;
-      }
-
       /**
        * The smallest rho^s (1 - n) n^2 / C = rho^s (1 - n) k / mu^w of the points
        * (collective). The pore pressure of the new step answers the skeleton's velocity of

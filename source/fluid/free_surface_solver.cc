@@ -180,7 +180,7 @@ namespace slidewave
 
 
     void
-    FreeSurfaceSolver::enable_moving_solid()
+    FreeSurfaceSolver::enable_moving_solid(const double grain_density)
     {
       fluid_fraction       = std::make_unique<grid::FiniteElementField>(grid);
       inverse_permeability = std::make_unique<grid::FiniteElementField>(grid);
@@ -192,6 +192,7 @@ namespace slidewave
       medium.fluid_fraction       = fluid_fraction.get();
       medium.inverse_permeability = inverse_permeability.get();
       medium.solid_velocity       = solid_velocity.get();
+      medium.grain_density        = grain_density;
       flow_system.set_porous_medium(medium);
     }
 

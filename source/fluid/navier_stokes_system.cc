@@ -165,58 +165,12 @@ namespace slidewave
       dealii::Vector<double>                       local_rhs(n_dofs);
       std::vector<dealii::types::global_dof_index> indices(n_dofs);
 
-      // The porous solid's fields at the quadrature points (only when there is one).
-      struct
-      {
-        std::vector<double>               n, inverse_permeability, div_v_s;
-        std::vector<dealii::Tensor<1, 2>> grad_n, v_s;
-      } porous_values;
-      std::unique_ptr<dealii::FEValues<2>> fv_scalar, fv_solid;
+      // The porous solid's coefficients at the quadrature points (only when there is one).
+      std::unique_ptr<PorousMediumValues> porous_values;
       if (porous.active())
-        {
-          porous_values.n.assign(n_q, 1.);
-          porous_values.inverse_permeability.assign(n_q, 0.);
-          porous_values.div_v_s.assign(n_q, 0.);
-          porous_values.grad_n.assign(n_q, dealii::Tensor<1, 2>());
-          porous_values.v_s.assign(n_q, dealii::Tensor<1, 2>());
-          fv_scalar = std::make_unique<dealii::FEValues<2>>(
-            phase.finite_element(), quadrature, dealii::update_values | dealii::update_gradients);
-          if (porous.solid_velocity != nullptr)
-            fv_solid
-              = std::make_unique<dealii::FEValues<2>>(porous.solid_velocity->finite_element(),
-                                                      quadrature,
-                                                      dealii::update_values
-                                                        | dealii::update_gradients);
-        }
-      const auto evaluate_porous = [&](const auto &cell) {
-        const auto on = [&](const grid::FiniteElementField &field) {
-          return dealii::DoFHandler<2>::active_cell_iterator(&grid.triangulation(),
-                                                             cell->level(),
-                                                             cell->index(),
-                                                             &field.dof_handler());
-        };
-        if (porous.fluid_fraction != nullptr)
-          {
-            fv_scalar->reinit(on(*porous.fluid_fraction));
-            fv_scalar->get_function_values(porous.fluid_fraction->values(0), porous_values.n);
-            fv_scalar->get_function_gradients(porous.fluid_fraction->values(0),
-                                              porous_values.grad_n);
-          }
-        if (porous.inverse_permeability != nullptr)
-          {
-            fv_scalar->reinit(on(*porous.inverse_permeability));
-            fv_scalar->get_function_values(porous.inverse_permeability->values(0),
-                                           porous_values.inverse_permeability);
-          }
-        if (porous.solid_velocity != nullptr)
-          {
-            fv_solid->reinit(on(*porous.solid_velocity));
-            (*fv_solid)[velocity].get_function_values(porous.solid_velocity->values(0),
-                                                      porous_values.v_s);
-            (*fv_solid)[velocity].get_function_divergences(porous.solid_velocity->values(0),
-                                                           porous_values.div_v_s);
-          }
-      };
+        porous_values
+          = std::make_unique<PorousMediumValues>(grid, porous, quadrature, face_quadrature);
+      std::vector<double> mu_q(n_q);
 
       // Where each cell's values and entries sit (after grid changes, once).
       if (scatter.empty())
@@ -253,8 +207,11 @@ namespace slidewave
         linear_algebra::evaluate_scalar(fv_phase, phase_dofs_old, &phi_old);
         // The length of the stabilization parameters: the nodes' spacing.
         const double h = cell->extent_in_direction(0) / degree;
+        for (unsigned int q = 0; q < n_q; ++q)
+          mu_q[q] = fluid.viscosity(theta * phi_new[q] + (1. - theta) * phi_old[q]);
         if (porous.active())
-          evaluate_porous(cell);
+          porous_values->reinit(cell, dt, mu_q);
+        static const PorousCoefficients open_water;
 
         local_matrix = 0.;
         local_rhs    = 0.;
@@ -263,19 +220,26 @@ namespace slidewave
             const double phi = theta * phi_new[q] + (1. - theta) * phi_old[q];
             const double rho = fluid.density(phi), mu = fluid.viscosity(phi);
             const double nu = mu / rho;
-            // The porous solid: fluid fraction n, its gradient, the Darcy drag C and the
-            // solid's velocity (1, 0, 0, 0 in open water: every term below is then the
-            // open water's, bit for bit).
-            const double               n = porous.active() ? porous_values.n[q] : 1.;
-            const dealii::Tensor<1, 2> grad_n
-              = porous.active() ? porous_values.grad_n[q] : dealii::Tensor<1, 2>();
-            const double drag
-              = porous.active() ? n * n * mu * porous_values.inverse_permeability[q] : 0.;
-            const dealii::Tensor<1, 2> v_s
-              = porous.active() ? porous_values.v_s[q] : dealii::Tensor<1, 2>();
-            const double               div_v_s = porous.active() ? porous_values.div_v_s[q] : 0.;
-            const dealii::Tensor<1, 2> u_bar   = u_n[q] + w * (u_n[q] - u_old[q]);
-            const double               speed   = u_bar.norm();
+            // The porous solid: fluid fraction n, its gradient, the drag C, the solid's
+            // velocity and the shares of its momentum eliminated (PorousMedium; n = 1 and
+            // zeros in open water: every term below is then the open water's, bit for bit).
+            const PorousCoefficients   &medium = porous.active() ? (*porous_values)[q] : open_water;
+            const double                n      = medium.n;
+            const dealii::Tensor<1, 2> &grad_n = medium.grad_n;
+            const double                drag   = medium.drag;
+            const dealii::Tensor<1, 2> &v_s    = medium.v_s;
+            // The water's pressure gradient and the solid's share it carries, over n (the
+            // momentum residual's factor of grad p).
+            const double pressure_factor = 1. + medium.pressure_share / n;
+            // grad p^n: the skeleton's predicted velocity holds the old pressure's force,
+            // so its eliminated share acts with the increment p - p^n (PorousMedium).
+            dealii::Tensor<1, 2> grad_p_n;
+            if (medium.pressure_share != 0. || medium.pressure_diffusion != 0.)
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                if (component[i] == 2)
+                  grad_p_n += dofs_n[i] * fv.shape_grad(i, q);
+            const dealii::Tensor<1, 2> u_bar = u_n[q] + w * (u_n[q] - u_old[q]);
+            const double               speed = u_bar.norm();
             // Tezduyar's parameters (paper 002, Eqs. 28-29): tau_m from the time step,
             // the advection and the viscosity; tau_cont from the element Reynolds
             // number.
@@ -303,11 +267,9 @@ namespace slidewave
             const dealii::Tensor<1, 2> advect_n = grad_u_n[q] * u_bar;
             const dealii::Tensor<2, 2> sym_grad_n
               = 0.5 * (grad_u_n[q] + dealii::transpose(grad_u_n[q]));
-            const dealii::Tensor<1, 2> explicit_residual = rho * u_n[q] / dt
-                                                           - (1. - theta) * rho * advect_n
-                                                           + rho * fluid.gravity + (drag / n) * v_s;
-            // The solid's share of the continuity, div((1 - n) v_s), known.
-            const double solid_divergence = (1. - n) * div_v_s - v_s * grad_n;
+            const dealii::Tensor<1, 2> explicit_residual
+              = rho * u_n[q] / dt - (1. - theta) * rho * advect_n + rho * fluid.gravity
+                + (drag / n) * v_s + (medium.pressure_share / n) * grad_p_n;
             // The implicit momentum residual of a velocity shape function (along its
             // component): (rho / dt + drag / n) N_j + theta rho u_bar . G_j.
             const double mass = rho / dt + drag / n;
@@ -340,8 +302,10 @@ namespace slidewave
                                      + supg * residual;
                               }
                           }
-                        else // pressure: - (n div w + w . grad n) p and SUPG of grad p
-                          m = -(n * Gi[a] + Ni * grad_n[a]) * Nj + supg * Gj[a];
+                        else // pressure: - (n div w + w . grad n) p, the solid's share
+                             // s (1 - n) w . grad p and SUPG of grad p
+                          m = -(n * Gi[a] + Ni * grad_n[a]) * Nj
+                              + medium.pressure_share * Ni * Gj[a] + supg * pressure_factor * Gj[a];
                         local_matrix(i, j) += m * JxW;
                       }
                     local_rhs(i) += (n * Ni * explicit_residual[a]
@@ -357,20 +321,31 @@ namespace slidewave
                         const unsigned int          b  = component[j];
                         const double                Nj = value[j];
                         const dealii::Tensor<1, 2> &Gj = gradient[j];
-                        // continuity q (n div u + u . grad n) and PSPG
+                        // continuity q (n div u + u . grad n) - s (1 - n) grad q . u,
+                        // the Darcy flow's (1 - n)^2 Delta grad q . grad p, and PSPG
                         const double m
-                          = b < 2 ? Ni * (n * Gj[b] + Nj * grad_n[b])
-                                      + pspg * Gi[b] * (mass * Nj + theta * rho * advect[j]) :
-                                    pspg * (Gi * Gj);
+                          = b < 2 ?
+                              Ni * (n * Gj[b] + Nj * grad_n[b]) - medium.pressure_share * Gi[b] * Nj
+                                + pspg * Gi[b] * (mass * Nj + theta * rho * advect[j]) :
+                              (pspg * pressure_factor + medium.pressure_diffusion) * (Gi * Gj);
                         local_matrix(i, j) += m * JxW;
                       }
                     local_rhs(i)
-                      += (-Ni * solid_divergence + pspg * (Gi * explicit_residual)) * JxW;
+                      += (-Ni * medium.solid_divergence
+                          + Gi * (medium.solid_flux + medium.pressure_diffusion * grad_p_n)
+                          + pspg * (Gi * explicit_residual))
+                         * JxW;
                   }
               }
           }
-        add_open_boundary_terms(
-          cell, phase_cell, fv_face, fv_face_phase, w, local_matrix, local_rhs);
+        add_open_boundary_terms(cell,
+                                phase_cell,
+                                fv_face,
+                                fv_face_phase,
+                                lengths,
+                                porous_values.get(),
+                                local_matrix,
+                                local_rhs);
         cell->get_dof_indices(indices);
         scatter.add(cell_number, local_matrix, local_rhs, indices, flow_constraints, matrix, rhs);
         ++cell_number;
@@ -387,7 +362,8 @@ namespace slidewave
                                                 const PhaseCell            &phase_cell,
                                                 dealii::FEFaceValues<2>    &fv_face,
                                                 dealii::FEFaceValues<2>    &fv_face_phase,
-                                                const double                w,
+                                                const StepLengths          &lengths,
+                                                PorousMediumValues         *porous_values,
                                                 dealii::FullMatrix<double> &local_matrix,
                                                 dealii::Vector<double>     &local_rhs) const
     {
@@ -399,9 +375,16 @@ namespace slidewave
       // comes back in (u_bar . n < 0), the backflow term beta rho |u_bar . n| w . u
       // (implicit) takes out the kinetic energy that the inflow would otherwise bring
       // in unbounded (Esmaily Moghadam et al. 2011).
+      //
+      // Where a skeleton whose momentum the flow eliminates reaches an open side, the
+      // continuity's weak divergence of the solid's correction flux has its flux through
+      // the side, s (1 - n)(u - v*) - (1 - n)^2 Delta grad p (PorousMedium): the water
+      // drained through the side relative to the grains.
       const dealii::FEValuesExtractors::Vector velocity(0);
+      const dealii::FEValuesExtractors::Scalar pressure(2);
       const double                             theta = parameters.theta;
       const double                             beta  = parameters.boundaries.backflow;
+      const double                             w     = extrapolation_weight(lengths, theta);
       for (const unsigned int f : cell->face_indices())
         {
           if (!cell->at_boundary(f)
@@ -438,6 +421,16 @@ namespace slidewave
                          * JxW;
                   local_rhs(i) += (1. - theta) * mu * test * old_traction * JxW;
                 }
+            }
+          if (porous_values != nullptr && porous.grain_density > 0.)
+            {
+              std::vector<double> mu(n_q);
+              for (unsigned int q = 0; q < n_q; ++q)
+                mu[q] = parameters.fluid.viscosity(phi[q]);
+              porous_values->reinit_face(cell, f, lengths.dt, mu);
+              std::vector<dealii::Tensor<1, 2>> grad_p_n(n_q);
+              fv_face[pressure].get_function_gradients(flow.values(0), grad_p_n);
+              porous_values->add_open_side_flux(fv_face, grad_p_n, local_matrix, local_rhs);
             }
         }
     }
@@ -508,7 +501,23 @@ namespace slidewave
         dealii::SolverControl control(parameters.max_iterations, std::max(target, 1e-300));
         dealii::TrilinosWrappers::SolverGMRES gmres(
           control, dealii::TrilinosWrappers::SolverGMRES::AdditionalData(false, 50));
-        gmres.solve(matrix, solution, rhs, *preconditioner);
+        try
+          {
+            gmres.solve(matrix, solution, rhs, *preconditioner);
+          }
+        catch (const dealii::ExceptionBase &)
+          {
+            // AztecOO stops with 'loss of precision' when its recursive residual met the
+            // target and the true one cannot (a target at round-off, such as a tolerance
+            // of 1e-12): the iterate is then as accurate as the arithmetic allows. It is
+            // kept when its true residual is within 1e-8 of the right-hand side; anything
+            // else (a breakdown, non-finite entries) fails below.
+            VectorType   residual(rhs);
+            const double true_residual = matrix.residual(residual, solution, rhs);
+            if (!(true_residual <= 1e-8 * rhs.l2_norm()))
+              throw;
+            return SolveReport{control.last_step(), true_residual};
+          }
         return SolveReport{control.last_step(), control.last_value()};
       };
       SolveReport report;

@@ -40,6 +40,22 @@ namespace slidewave
                         "coefficients), each point's relative speed that of the last step at "
                         "its nodes. 'Darcy': C = n^2 mu / k, linear in the relative velocity "
                         "(the limit of slow seepage, Re_p << 10).");
+      prm.declare_entry("Drag coupling",
+                        "semi-implicit",
+                        Selection("semi-implicit|explicit"),
+                        "How the water's pressure and drag of the new step act on the "
+                        "skeleton. 'semi-implicit': the skeleton's nodal velocity of the new "
+                        "step, with the drag and the pressure gradient implicit, is "
+                        "eliminated from the water's equations (the drag against the "
+                        "skeleton's predicted velocity, the Darcy flow through the grains as "
+                        "a pressure diffusion), then the skeleton takes the same implicit "
+                        "step at its nodes: stable at any ratio of the step to "
+                        "rho^s (1 - n) k / mu, so low permeabilities and fine grains do not "
+                        "limit the step (doc/granular-water.md). 'explicit': the water sees "
+                        "the skeleton's velocity of the old step and the skeleton the "
+                        "water's force of the new one (paper 002, §3.5); stable only for "
+                        "steps below about rho^s (1 - n) k / mu, which then limits the "
+                        "step.");
       prm.declare_entry("Top load",
                         "0",
                         Double(0.),
@@ -106,6 +122,7 @@ namespace slidewave
       top_load         = prm.get_double("Top load");
       forchheimer      = prm.get("Drag law") == "Forchheimer";
       sub_cycling      = prm.get_bool("Sub-cycling");
+      implicit_drag    = prm.get("Drag coupling") == "semi-implicit";
       for (const auto &[name, value] :
            {std::pair<std::string, double>{"Grain density", grain_density},
             {"Permeability", permeability},

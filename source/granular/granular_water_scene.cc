@@ -180,7 +180,8 @@ namespace slidewave
     {
       grid         = fluid::FreeSurfaceSolver::make_grid(fluid_parameters);
       fluid_solver = std::make_unique<fluid::FreeSurfaceSolver>(fluid_parameters, *grid);
-      fluid_solver->enable_moving_solid();
+      // Semi-implicit drag: the water eliminates the skeleton's momentum (PorousMedium).
+      fluid_solver->enable_moving_solid(parameters.implicit_drag ? parameters.grain_density : 0.);
       model = std::make_unique<PorousSkeletonModel>(soil_parameters,
                                                     parameters,
                                                     fluid_parameters.fluid.water_density,
@@ -254,18 +255,19 @@ namespace slidewave
     GranularWaterScene::check_set_up() const
     {
       // (With sub-cycling the skeleton's sub-steps keep within its P-wave limit.)
-      const double limit
-        = soil::max_time_step_multiplier
-          * (parameters.sub_cycling ? model->coupling_time_scale(engine->point_cloud()) :
-                                      stability_limit());
+      const double limit = soil::max_time_step_multiplier
+                           * (parameters.sub_cycling ? coupling_limit() : stability_limit());
       if (soil_parameters.fixed_time_step > limit)
         throw InputError(soil_section + "/Fixed time step",
                          to_string(soil_parameters.fixed_time_step),
                          "a time step at most the stability limit of this scene, "
-                         "min(h / max(c_p + |v_p|), rho^s (1 - n) k / mu) / sqrt(2) = "
-                           + to_string(limit)
-                           + " s (the skeleton's Courant limit and the explicit coupling's, "
-                             "doc/granular-water.md)");
+                           + std::string(parameters.implicit_drag ?
+                                           "h / max(c_p + |v_p|) / sqrt(2) = " :
+                                           "min(h / max(c_p + |v_p|), rho^s (1 - n) k / mu) / "
+                                           "sqrt(2) = ")
+                           + to_string(limit) + " s (the skeleton's Courant limit"
+                           + (parameters.implicit_drag ? "" : " and the explicit coupling's")
+                           + ", doc/granular-water.md)");
       core::check_step_count(scene,
                              step_limit(),
                              fluid_section + "/Time stepping/Maximum time step",
@@ -307,11 +309,20 @@ namespace slidewave
 
 
     double
+    GranularWaterScene::coupling_limit() const
+    {
+      // The explicit coupling's time scale rho^s (1 - n) k / mu (measured: the Terzaghi
+      // column blows up at 0.9 of it, doc/granular-water.md); none when semi-implicit.
+      return parameters.implicit_drag ? std::numeric_limits<double>::infinity() :
+                                        model->coupling_time_scale(engine->point_cloud());
+    }
+
+
+
+    double
     GranularWaterScene::stability_limit() const
     {
-      // The skeleton's limit and the explicit coupling's time scale rho^s (1 - n) k / mu
-      // (measured: the Terzaghi column blows up at 0.9 of it, doc/granular-water.md).
-      return std::min(skeleton_limit(), model->coupling_time_scale(engine->point_cloud()));
+      return std::min(skeleton_limit(), coupling_limit());
     }
 
 
@@ -322,9 +333,7 @@ namespace slidewave
       if (soil_parameters.fixed_time_step > 0.)
         return soil_parameters.fixed_time_step;
       // With sub-cycling the water's step need not wait for the skeleton's P-wave.
-      const double limit = parameters.sub_cycling ?
-                             model->coupling_time_scale(engine->point_cloud()) :
-                             stability_limit();
+      const double limit = parameters.sub_cycling ? coupling_limit() : stability_limit();
       return std::min(fluid_solver->stable_time_step(),
                       soil_parameters.time_step_multiplier * limit);
     }
@@ -358,7 +367,9 @@ namespace slidewave
             exchange->to_fluid(nodes,
                                engine->velocity_constraints(),
                                model->empty_node_mass(),
-                               fields);
+                               fields,
+                               parameters.implicit_drag && k == 0 ? info.dt : 0.,
+                               &fluid_solver->flow_field());
           }
           if (k == 0)
             {
@@ -368,13 +379,24 @@ namespace slidewave
           {
             dealii::TimerOutput::Scope scope(*timer, "granular: exchange");
             if (water_force[0].get_partitioner() != nodes.nodal_mass.get_partitioner())
-              for (auto &f : water_force)
-                f.reinit(nodes.nodal_mass);
+              for (auto *f : {&water_force[0], &water_force[1], &water_drag})
+                f->reinit(nodes.nodal_mass);
             exchange->to_skeleton(fluid_solver->flow_field(),
                                   fluid_solver->phase_field(),
                                   fields,
-                                  water_force);
+                                  water_force,
+                                  parameters.implicit_drag ? &water_drag : nullptr);
             engine->add_nodal_forces(water_force);
+            if (parameters.implicit_drag)
+              {
+                // The owned nodes of this step's points (the others stay as the scatter
+                // leaves them).
+                auto              &field   = engine->model_field(PorousSkeletonModel::water_drag);
+                const unsigned int n_owned = nodes.nodal_mass.locally_owned_size();
+                for (const unsigned int i : nodes.active())
+                  if (i < n_owned)
+                    field.local_element(i) = water_drag.local_element(i);
+              }
             if (parameters.forchheimer)
               exchange->relative_speed(fluid_solver->flow_field(),
                                        fields,

@@ -41,11 +41,19 @@ namespace slidewave
     SkeletonFluidExchange::to_fluid(const grid::NodalWorkspace      &nodes,
                                     const grid::VelocityConstraints &constraints,
                                     const double                     empty_mass,
-                                    const SkeletonFields            &fields) const
+                                    const SkeletonFields            &fields,
+                                    const double                     predictor_step,
+                                    const grid::FiniteElementField  *flow)
     {
       using Vector = grid::NodalWorkspace::Vector;
-      Vector fraction(nodes.nodal_mass), inverse_permeability(nodes.nodal_mass),
-        vx(nodes.nodal_mass), vy(nodes.nodal_mass);
+      if (fraction.get_partitioner() != nodes.nodal_mass.get_partitioner())
+        for (Vector *v : {&fraction,
+                          &inverse_permeability,
+                          &vx,
+                          &vy,
+                          &old_pressure_force[0],
+                          &old_pressure_force[1]})
+          v->reinit(nodes.nodal_mass);
       const unsigned int n_owned = nodes.nodal_mass.locally_owned_size();
       const double       mu      = parameters.fluid.water_viscosity;
       const Vector      &solid   = nodes.fields[0];
@@ -58,17 +66,83 @@ namespace slidewave
           fraction.local_element(i) = n;
           inverse_permeability.local_element(i)
             = drag.local_element(i) * inverse_area / (n * n * mu);
-          const double m      = nodes.nodal_mass.local_element(i);
-          vx.local_element(i) = m > empty_mass ? nodes.momentum[0].local_element(i) / m : 0.;
-          vy.local_element(i) = m > empty_mass ? nodes.momentum[1].local_element(i) / m : 0.;
         }
-      // The skeleton's sides and walls hold its velocity: the water sees it held too.
-      constraints.apply(vx, vy);
-      for (Vector *v : {&fraction, &inverse_permeability, &vx, &vy})
+      for (Vector *v : {&fraction, &inverse_permeability})
         v->update_ghost_values();
       fields.fluid_fraction->copy_from_grid_nodes({&fraction});
       fields.inverse_permeability->copy_from_grid_nodes({&inverse_permeability});
+
+      // The semi-implicit coupling's predictor holds the old pressure's force on the
+      // grains, -(1 - n) grad p^n with this step's fluid fraction (fluid::PorousMedium).
+      const bool with_pressure = flow != nullptr && predictor_step > 0.;
+      if (with_pressure)
+        pressure_force(*flow, fields, old_pressure_force);
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          // v^n, or v* = v^n + dt (f + f_p) / m (semi-implicit).
+          const double m = nodes.nodal_mass.local_element(i);
+          if (m > empty_mass)
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                double f = nodes.force[d].local_element(i);
+                if (with_pressure)
+                  f += old_pressure_force[d].local_element(i);
+                (d == 0 ? vx : vy).local_element(i)
+                  = (nodes.momentum[d].local_element(i) + predictor_step * f) / m;
+              }
+          else
+            vx.local_element(i) = vy.local_element(i) = 0.;
+        }
+      // The skeleton's sides and walls hold its velocity: the water sees it held too.
+      constraints.apply(vx, vy);
+      for (Vector *v : {&vx, &vy})
+        v->update_ghost_values();
       fields.solid_velocity->copy_from_grid_nodes({&vx, &vy});
+    }
+
+
+
+    void
+    SkeletonFluidExchange::pressure_force(const grid::FiniteElementField              &flow,
+                                          const SkeletonFields                        &fields,
+                                          std::array<grid::NodalWorkspace::Vector, 2> &force) const
+    {
+      const dealii::QGauss<2>                  quadrature(flow.finite_element().degree + 1);
+      const unsigned int                       n_q = quadrature.size();
+      const dealii::FEValuesExtractors::Scalar pressure(2);
+      dealii::FEValues<2> fv_flow(flow.finite_element(), quadrature, dealii::update_gradients);
+      dealii::FEValues<2> fv_scalar(fields.fluid_fraction->finite_element(),
+                                    quadrature,
+                                    dealii::update_values);
+      dealii::FEValues<2> fv_grid(grid.dof_handler().get_fe(),
+                                  quadrature,
+                                  dealii::update_values | dealii::update_JxW_values);
+      std::vector<dealii::Tensor<1, 2>>            grad_p(n_q);
+      std::vector<double>                          n(n_q);
+      std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
+      for (unsigned int d = 0; d < 2; ++d)
+        force[d] = 0.;
+      for (const auto &cell : grid.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fv_scalar.reinit(on(cell, *fields.fluid_fraction));
+            fv_scalar.get_function_values(fields.fluid_fraction->values(0), n);
+            if (*std::min_element(n.begin(), n.end()) >= 1.)
+              continue; // no grains in the cell
+            fv_flow.reinit(on(cell, flow));
+            fv_flow[pressure].get_function_gradients(flow.values(0), grad_p);
+            fv_grid.reinit(cell);
+            cell->get_dof_indices(indices);
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const dealii::Tensor<1, 2> traction = -(1. - n[q]) * grad_p[q] * fv_grid.JxW(q);
+                for (unsigned int i = 0; i < indices.size(); ++i)
+                  for (unsigned int d = 0; d < 2; ++d)
+                    force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
+              }
+          }
+      for (unsigned int d = 0; d < 2; ++d)
+        force[d].compress(dealii::VectorOperation::add);
     }
 
 
@@ -77,7 +151,8 @@ namespace slidewave
     SkeletonFluidExchange::to_skeleton(const grid::FiniteElementField              &flow,
                                        const grid::FiniteElementField              &phase,
                                        const SkeletonFields                        &fields,
-                                       std::array<grid::NodalWorkspace::Vector, 2> &force) const
+                                       std::array<grid::NodalWorkspace::Vector, 2> &force,
+                                       grid::NodalWorkspace::Vector *water_drag) const
     {
       // The same quadrature as the water's assembly (Q1: 2 x 2 Gauss points).
       const dealii::QGauss<2>                  quadrature(flow.finite_element().degree + 1);
@@ -99,7 +174,12 @@ namespace slidewave
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
       for (unsigned int d = 0; d < 2; ++d)
         force[d] = 0.;
-      const auto &fluid = parameters.fluid;
+      if (water_drag != nullptr)
+        *water_drag = 0.;
+      // Semi-implicit: the drag on the grains' side is - C v_s of the new step, which the
+      // nodes take implicitly with W_I (PorousSkeletonModel::update_nodal_velocity).
+      const double explicit_drag = water_drag != nullptr ? 0. : 1.;
+      const auto  &fluid         = parameters.fluid;
       for (const auto &cell : grid.dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
           {
@@ -122,14 +202,20 @@ namespace slidewave
               {
                 const double C = n[q] * n[q] * fluid.viscosity(phi[q]) * inverse_permeability[q];
                 const dealii::Tensor<1, 2> traction
-                  = (-(1. - n[q]) * grad_p[q] + C * (u[q] - v_s[q])) * fv_grid.JxW(q);
+                  = (-(1. - n[q]) * grad_p[q] + C * (u[q] - explicit_drag * v_s[q]))
+                    * fv_grid.JxW(q);
                 for (unsigned int i = 0; i < indices.size(); ++i)
                   for (unsigned int d = 0; d < 2; ++d)
                     force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
+                if (water_drag != nullptr)
+                  for (unsigned int i = 0; i < indices.size(); ++i)
+                    (*water_drag)(indices[i]) += C * fv_grid.JxW(q) * fv_grid.shape_value(i, q);
               }
           }
       for (unsigned int d = 0; d < 2; ++d)
         force[d].compress(dealii::VectorOperation::add);
+      if (water_drag != nullptr)
+        water_drag->compress(dealii::VectorOperation::add);
     }
 
 

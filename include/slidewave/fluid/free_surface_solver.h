@@ -53,10 +53,12 @@ namespace slidewave
        * fraction, inverse permeability and solid velocity (Q1 fields that follow the
        * grid), switches the porous terms on, and leaves the grid's changes to that
        * physics (advance() then changes nothing). Call before setup() or load(), instead
-       * of a fixed porous structure.
+       * of a fixed porous structure. @p grain_density > 0: the solid's velocity field is
+       * its predicted velocity v* and the flow eliminates its momentum (PorousMedium,
+       * the semi-implicit drag); 0: the solid's velocity is given (explicit drag).
        */
       void
-      enable_moving_solid();
+      enable_moving_solid(double grain_density = 0.);
 
       /** The moving solid's fields (enable_moving_solid()), for the physics that sets
        *  them; call values_changed() after writing. */

@@ -12,6 +12,7 @@
 #include <deal.II/lac/vector.h>
 #include <memory>
 #include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/fluid/porous_medium.h>
 #include <slidewave/grid/finite_element_field.h>
 #include <slidewave/grid/grid_follower.h>
 #include <slidewave/linear_algebra/cell_gather.h>
@@ -40,35 +41,6 @@ namespace slidewave
     {
       return lengths.dt_old > 0. ? theta * lengths.dt / lengths.dt_old : 0.;
     }
-
-    /**
-     * A porous solid in the flow: what the granular skeleton of issue 27 (or a fixed porous
-     * structure) gives the fluid. Every field is optional (nullptr: none, and nothing of it
-     * is evaluated): the fluid fraction n (1 where there is no solid: the effective
-     * 1 - theta (1 - n_s) of paper 002 with the solid volume fraction theta), the inverse
-     * permeability 1/kappa [1/m^2] (0: no drag) and the solid's velocity v_s (Q1^2, zero
-     * when absent). With them the momentum and continuity equations read
-     *
-     *   n rho (du/dt + u_bar . grad u) = -n grad p + div(2 mu n eps(u)) + n rho g
-     *                                    - C (u - v_s),    C = n^2 mu / kappa,
-     *   div(n u) + div((1 - n) v_s) = 0,
-     *
-     * the Darcy drag C of a saturated porous medium (paper 002, Eq. 3 without its
-     * Forchheimer part); with n = 1 and no drag, the equations of the open water.
-     */
-    struct PorousMedium
-    {
-      const grid::FiniteElementField *fluid_fraction       = nullptr;
-      const grid::FiniteElementField *inverse_permeability = nullptr;
-      const grid::FiniteElementField *solid_velocity       = nullptr;
-
-      bool
-      active() const
-      {
-        return fluid_fraction != nullptr || inverse_permeability != nullptr
-               || solid_velocity != nullptr;
-      }
-    };
 
     /** What a linear solve did, and the wall time of its parts [s]. */
     struct SolveReport
@@ -166,14 +138,17 @@ namespace slidewave
       setup_system();
 
       /** The open sides' share of a cell's matrix and right-hand side: the viscous
-       *  traction's transposed part, so that (mu grad u - p I) n = 0 there. */
+       *  traction's transposed part, so that (mu grad u - p I) n = 0 there, the backflow
+       *  term, and the flux of the drained water relative to a skeleton whose momentum
+       *  is eliminated (@p porous_values, null without a porous medium). */
       template <class FlowCell, class PhaseCell>
       void
       add_open_boundary_terms(const FlowCell             &cell,
                               const PhaseCell            &phase_cell,
                               dealii::FEFaceValues<2>    &fv_face,
                               dealii::FEFaceValues<2>    &fv_face_phase,
-                              double                      w,
+                              const StepLengths          &lengths,
+                              PorousMediumValues         *porous_values,
                               dealii::FullMatrix<double> &local_matrix,
                               dealii::Vector<double>     &local_rhs) const;
 

@@ -49,6 +49,10 @@ namespace slidewave
       double d50 = 1e-3;
       /** The drag's Forchheimer term (Eq. 3) on top of Darcy's. */
       bool forchheimer = true;
+      /** The skeleton's drag and pressure of the new step implicit at its nodes, its
+       *  momentum eliminated from the water's equations (fluid::PorousMedium); false:
+       *  explicit (the water sees the skeleton's old velocity). */
+      bool implicit_drag = true;
       /** A pressure [Pa] on the top row of points (Terzaghi's load; 0: none). */
       double top_load = 0.;
       /** Several skeleton steps inside one water step (the water's step limited by its

@@ -119,7 +119,12 @@ namespace slidewave
       double
       skeleton_limit() const;
 
-      /** min(skeleton_limit(), the coupling's time scale) (collective). */
+      /** The explicit coupling's time scale rho^s (1 - n) k / mu, infinite with the
+       *  semi-implicit coupling (collective). */
+      double
+      coupling_limit() const;
+
+      /** min(skeleton_limit(), coupling_limit()) (collective). */
       double
       stability_limit() const;
 
@@ -140,11 +145,13 @@ namespace slidewave
       std::unique_ptr<SkeletonFluidExchange>    exchange;
       /** The water's force on the grains at the nodes (reused every step). */
       std::array<grid::NodalWorkspace::Vector, 2> water_force;
-      io::ParticleOutput                          particle_output;
-      fluid::FreeSurfaceOutput                    fluid_output;
-      dealii::TimerOutput                        *timer = nullptr;
-      fluid::FluidStepReport                      last_report;
-      unsigned int                                check_interval = 10;
+      /** The water's nodal drag W_I of the semi-implicit coupling. */
+      grid::NodalWorkspace::Vector water_drag;
+      io::ParticleOutput           particle_output;
+      fluid::FreeSurfaceOutput     fluid_output;
+      dealii::TimerOutput         *timer = nullptr;
+      fluid::FluidStepReport       last_report;
+      unsigned int                 check_interval = 10;
       /** The skeleton's sub-steps in the last step. */
       unsigned int         n_substeps = 1;
       GranularVerification verification;

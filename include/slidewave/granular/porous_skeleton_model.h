@@ -26,29 +26,53 @@ namespace slidewave
      *   field 1, the drag          D_I = sum_p N_I(x_p) V_p C_p       [kg/s per m],
      * from which SkeletonFluidExchange makes the fluid's fields: the fluid fraction
      * n_I = 1 - S_I / A_I (A_I the node's lumped area) and the drag C_I = D_I / A_I.
-     * With the Forchheimer drag (Eq. 3), a third field that the points do not sum but
-     * read: the relative speed |u - v_s| of the water's last step at the nodes, which the
-     * exchange writes and each point gathers into its property 'relative_speed' for the
-     * next step's C_p.
+     * With the semi-implicit drag coupling, a third field that the points do not sum: the
+     * water's drag at the nodes, W_I = integral of N_I C (the same C and quadrature as the
+     * water's), which the exchange writes before the grid update, where each node's
+     * velocity takes the drag of the new step implicitly, v_I = v_I^trial m_I / (m_I + dt
+     * W_I) (update_nodal_velocity; the water's force then holds -(1 - n) grad p + C u, not
+     * the - C v_s). With the Forchheimer drag (Eq. 3), a fourth field the points read: the
+     * relative speed |u - v_s| of the water's last step at the nodes, which the exchange
+     * writes and each point gathers into its property 'relative_speed' for the next
+     * step's C_p.
      */
     class PorousSkeletonModel : public soil::SoilModel
     {
     public:
-      static constexpr unsigned int n_nodal_fields = 3;
+      static constexpr unsigned int n_nodal_fields = 4;
       static constexpr unsigned int solid_volume   = 0;
       static constexpr unsigned int drag           = 1;
-      static constexpr unsigned int relative_speed = 2;
+      static constexpr unsigned int water_drag     = 2;
+      static constexpr unsigned int relative_speed = 3;
 
       PorousSkeletonModel(const soil::MaterialPointParameters &soil_parameters,
                           const GranularWaterParameters       &parameters,
                           double                               fluid_density,
                           double                               fluid_viscosity);
 
-      /** The relative speed only with the Forchheimer drag. */
+      /** The water's drag only with the semi-implicit coupling, the relative speed only
+       *  with the Forchheimer drag. */
       unsigned int
       n_used_nodal_fields() const
       {
-        return parameters.forchheimer ? 3 : 2;
+        return parameters.forchheimer ? 4 : parameters.implicit_drag ? 3 : 2;
+      }
+
+      /** The water's drag of the new step, implicit at node @p i of mass @p m (the
+       *  semi-implicit coupling): scales the velocity, so a held component stays zero. */
+      void
+      update_nodal_velocity(const grid::NodalWorkspace &nodes,
+                            const unsigned int          i,
+                            const double                m,
+                            const double                dt,
+                            double                     &vx,
+                            double                     &vy) const
+      {
+        if (!parameters.implicit_drag)
+          return;
+        const double scale = m / (m + dt * nodes.fields[water_drag].local_element(i));
+        vx *= scale;
+        vy *= scale;
       }
 
       /** The soil's properties, and 'relative_speed' with the Forchheimer drag. */

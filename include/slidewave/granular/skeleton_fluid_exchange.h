@@ -38,8 +38,14 @@ namespace slidewave
      *   with the water's new pressure and velocity and the same fields and quadrature as
      *   the water's own -n grad p and -C (u - v_s) (NavierStokesSystem), so that the two
      *   phases exchange equal and opposite drag and their pressure forces add up to the
-     *   mixture's -grad p. The drag is explicit in the solid's velocity (stable for steps
-     *   below 2 rho^s (1 - n) / C).
+     *   mixture's -grad p. Explicit coupling: the drag is explicit in the solid's velocity
+     *   (stable for steps below 2 rho^s (1 - n) / C, and the pore pressure's volumetric
+     *   damping below about rho^s (1 - n) k / mu). Semi-implicit coupling (the default):
+     *   the water gets the skeleton's predicted velocity v* = v^n + dt f / m and
+     *   eliminates the skeleton's momentum (fluid::PorousMedium); the skeleton gets
+     *   f_I = integral of ( -(1 - n) grad p + C u ) N_I and the nodal drag
+     *   W_I = integral of C N_I, which its nodes take implicitly, so that the drag it feels
+     *   is C (u - v) with its own velocity of the new step.
      */
     class SkeletonFluidExchange
     {
@@ -48,21 +54,29 @@ namespace slidewave
                             const fluid::FreeSurfaceParameters &fluid_parameters);
 
       /** The water's fields from the skeleton's nodal sums of this step (after the
-       *  engine's begin_step(); collective). @p empty_mass: nodes with less are empty. */
+       *  engine's begin_step(); collective). @p empty_mass: nodes with less are empty.
+       *  @p predictor_step > 0 (semi-implicit): the solid velocity is v^n + dt (f + f_p)
+       *  / m with this dt, f_p the force of the pressure of @p flow's state 0 on the
+       *  grains (pressure_force()); 0: v^n. */
       void
       to_fluid(const grid::NodalWorkspace      &nodes,
                const grid::VelocityConstraints &constraints,
                double                           empty_mass,
-               const SkeletonFields            &fields) const;
+               const SkeletonFields            &fields,
+               double                           predictor_step = 0.,
+               const grid::FiniteElementField  *flow           = nullptr);
 
       /** The water's force on the skeleton at the nodes, from the water's state 0 (its
        *  new velocity and pressure) and @p phase (state 0), into @p force, vectors of the
-       *  nodal workspace's layout (owned totals; collective). */
+       *  nodal workspace's layout (owned totals; collective). With @p water_drag (same
+       *  layout), the semi-implicit coupling: the force without - C v_s, and W_I into
+       *  @p water_drag. */
       void
       to_skeleton(const grid::FiniteElementField              &flow,
                   const grid::FiniteElementField              &phase,
                   const SkeletonFields                        &fields,
-                  std::array<grid::NodalWorkspace::Vector, 2> &force) const;
+                  std::array<grid::NodalWorkspace::Vector, 2> &force,
+                  grid::NodalWorkspace::Vector                *water_drag = nullptr) const;
 
       /** The relative speed |u - v_s| of the water's state 0 and the skeleton's velocity
        *  field at the owned nodes of this step's points, into @p speed (the skeleton's
@@ -75,8 +89,18 @@ namespace slidewave
                      grid::NodalWorkspace::Vector   &speed) const;
 
     private:
+      /** -integral of (1 - n) grad p N_I with the pressure of @p flow's state 0 and the
+       *  fluid fraction of @p fields, into @p force (owned totals; collective). */
+      void
+      pressure_force(const grid::FiniteElementField              &flow,
+                     const SkeletonFields                        &fields,
+                     std::array<grid::NodalWorkspace::Vector, 2> &force) const;
+
       const grid::BackgroundGrid         &grid;
       const fluid::FreeSurfaceParameters &parameters;
+      /** The nodal workspace's vectors of to_fluid() (kept between steps). */
+      grid::NodalWorkspace::Vector                fraction, inverse_permeability, vx, vy;
+      std::array<grid::NodalWorkspace::Vector, 2> old_pressure_force;
     };
   } // namespace granular
 } // namespace slidewave

@@ -1,0 +1,149 @@
+#include <deal.II/fe/fe_values_extractors.h>
+#include <slidewave/fluid/porous_medium.h>
+
+namespace slidewave
+{
+  namespace fluid
+  {
+    PorousMediumValues::PorousMediumValues(const grid::BackgroundGrid  &grid,
+                                           const PorousMedium          &medium,
+                                           const dealii::Quadrature<2> &quadrature,
+                                           const dealii::Quadrature<1> &face_quadrature)
+      : grid(grid)
+      , medium(medium)
+      , coefficients(quadrature.size())
+      , face_coefficients(face_quadrature.size())
+    {
+      const grid::FiniteElementField *scalar
+        = medium.fluid_fraction != nullptr ? medium.fluid_fraction : medium.inverse_permeability;
+      const auto flags = dealii::update_values | dealii::update_gradients;
+      if (scalar != nullptr)
+        {
+          fv_scalar
+            = std::make_unique<dealii::FEValues<2>>(scalar->finite_element(), quadrature, flags);
+          ff_scalar = std::make_unique<dealii::FEFaceValues<2>>(scalar->finite_element(),
+                                                                face_quadrature,
+                                                                flags);
+        }
+      if (medium.solid_velocity != nullptr)
+        {
+          fv_solid = std::make_unique<dealii::FEValues<2>>(medium.solid_velocity->finite_element(),
+                                                           quadrature,
+                                                           flags);
+          ff_solid
+            = std::make_unique<dealii::FEFaceValues<2>>(medium.solid_velocity->finite_element(),
+                                                        face_quadrature,
+                                                        flags);
+        }
+    }
+
+
+
+    void
+    PorousMediumValues::evaluate(const int                  level,
+                                 const int                  index,
+                                 const int                  face,
+                                 const double               dt,
+                                 const std::vector<double> &mu)
+    {
+      auto              &result = face < 0 ? coefficients : face_coefficients;
+      const unsigned int n_q    = result.size();
+      n.assign(n_q, 1.);
+      inverse_permeability.assign(n_q, 0.);
+      div_v_s.assign(n_q, 0.);
+      grad_n.assign(n_q, dealii::Tensor<1, 2>());
+      v_s.assign(n_q, dealii::Tensor<1, 2>());
+      // The cell's (or face's) values of a field.
+      const auto values_on = [&](const grid::FiniteElementField &field,
+                                 const bool vector) -> dealii::FEValuesBase<2> & {
+        const dealii::DoFHandler<2>::active_cell_iterator cell(&grid.triangulation(),
+                                                               level,
+                                                               index,
+                                                               &field.dof_handler());
+        if (face < 0)
+          {
+            auto &fv = vector ? *fv_solid : *fv_scalar;
+            fv.reinit(cell);
+            return fv;
+          }
+        auto &ff = vector ? *ff_solid : *ff_scalar;
+        ff.reinit(cell, static_cast<unsigned int>(face));
+        return ff;
+      };
+      const dealii::FEValuesExtractors::Vector velocity(0);
+      if (medium.fluid_fraction != nullptr)
+        {
+          auto &fv = values_on(*medium.fluid_fraction, false);
+          fv.get_function_values(medium.fluid_fraction->values(0), n);
+          fv.get_function_gradients(medium.fluid_fraction->values(0), grad_n);
+        }
+      if (medium.inverse_permeability != nullptr)
+        values_on(*medium.inverse_permeability, false)
+          .get_function_values(medium.inverse_permeability->values(0), inverse_permeability);
+      if (medium.solid_velocity != nullptr)
+        {
+          auto &fv = values_on(*medium.solid_velocity, true);
+          fv[velocity].get_function_values(medium.solid_velocity->values(0), v_s);
+          fv[velocity].get_function_divergences(medium.solid_velocity->values(0), div_v_s);
+        }
+      const double rho_s = medium.grain_density;
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          PorousCoefficients &c = result[q];
+          c.n                   = n[q];
+          c.grad_n              = grad_n[q];
+          c.v_s                 = v_s[q];
+          const double C        = n[q] * n[q] * mu[q] * inverse_permeability[q];
+          const double solid    = 1. - n[q];
+          c.solid_divergence    = solid * div_v_s[q] - v_s[q] * grad_n[q];
+          c.drag                = C;
+          if (rho_s > 0.)
+            {
+              // The skeleton's momentum eliminated (PorousMedium): no grains (solid = 0)
+              // leaves the open water's equations.
+              const double denominator = rho_s * solid + dt * C;
+              const double Delta       = denominator > 0. ? dt / denominator : 0.;
+              const double s           = C * Delta;
+              c.drag                   = C * (1. - s);
+              c.solid_flux             = -s * solid * v_s[q];
+              c.pressure_share         = s * solid;
+              c.pressure_diffusion     = solid * solid * Delta;
+            }
+        }
+    }
+
+
+
+    void
+    PorousMediumValues::add_open_side_flux(const dealii::FEFaceValues<2>           &fv_face,
+                                           const std::vector<dealii::Tensor<1, 2>> &grad_p_n,
+                                           dealii::FullMatrix<double>              &local_matrix,
+                                           dealii::Vector<double>                  &local_rhs) const
+    {
+      const dealii::FEValuesExtractors::Vector velocity(0);
+      const dealii::FEValuesExtractors::Scalar pressure(2);
+      for (unsigned int q = 0; q < face_coefficients.size(); ++q)
+        {
+          const PorousCoefficients &c = face_coefficients[q];
+          if (c.pressure_share == 0. && c.pressure_diffusion == 0.)
+            continue;
+          const dealii::Tensor<1, 2> &normal = fv_face.normal_vector(q);
+          const double                JxW    = fv_face.JxW(q);
+          for (unsigned int i = 0; i < local_rhs.size(); ++i)
+            {
+              const double test = fv_face[pressure].value(i, q);
+              if (test == 0.)
+                continue;
+              for (unsigned int j = 0; j < local_rhs.size(); ++j)
+                local_matrix(i, j)
+                  += test
+                     * (c.pressure_share * (fv_face[velocity].value(j, q) * normal)
+                        - c.pressure_diffusion * (fv_face[pressure].gradient(j, q) * normal))
+                     * JxW;
+              local_rhs(i)
+                -= test * ((c.solid_flux + c.pressure_diffusion * grad_p_n[q]) * normal) * JxW;
+            }
+        }
+    }
+  } // namespace fluid
+} // namespace slidewave

@@ -72,6 +72,53 @@ namespace slidewave
         std::unique_ptr<ParsedExpression> surface;
         std::vector<WaterBox>             boxes;
       };
+
+      /**
+       * The flow's initial velocity (expressions of x and y) and, when @p hydrostatic, the
+       * pressure of the initial fluids at rest: p(x, y) = |g_y| times the integral of
+       * rho(phi_0(x, s)) ds from y to the top of the grid (midpoint rule on steps of an
+       * eighth of the interface thickness at most); 0 otherwise.
+       */
+      class InitialFlow : public dealii::Function<2>
+      {
+      public:
+        InitialFlow(const FreeSurfaceParameters &parameters, const bool hydrostatic)
+          : dealii::Function<2>(3)
+          , parameters(parameters)
+          , phase(parameters)
+          , hydrostatic(hydrostatic)
+        {
+          velocity.initialize("x,y", parameters.initial_velocity, {});
+        }
+
+        double
+        value(const dealii::Point<2> &p, const unsigned int component) const override
+        {
+          if (component < 2)
+            return velocity.value(p, component);
+          if (!hydrostatic)
+            return 0.;
+          const double top    = parameters.upper_right[1];
+          const double length = top - p[1];
+          if (length <= 0.)
+            return 0.;
+          const double step
+            = std::min(parameters.cell_size / 8., parameters.interface_thickness() / 8.);
+          const unsigned int n   = static_cast<unsigned int>(std::ceil(length / step));
+          const double       ds  = length / n;
+          double             sum = 0.;
+          for (unsigned int i = 0; i < n; ++i)
+            sum += parameters.fluid.density(
+              phase.value(dealii::Point<2>(p[0], p[1] + (i + 0.5) * ds)));
+          return std::abs(parameters.fluid.gravity[1]) * sum * ds;
+        }
+
+      private:
+        const FreeSurfaceParameters &parameters;
+        const InitialPhase           phase;
+        const bool                   hydrostatic;
+        dealii::FunctionParser<2>    velocity{2};
+      };
     } // namespace
 
 
@@ -167,14 +214,22 @@ namespace slidewave
                              "porosity in (0, 1] and permeability > 0 everywhere in the grid");
         }
       // The velocity at the start (zero unless 'Initial water/Velocity' says otherwise),
-      // the pressure 0: both states, so that the first extrapolation is the initial field.
-      dealii::FunctionParser<2> velocity(3);
-      velocity.initialize("x,y", parameters.initial_velocity + "; 0", {});
+      // the pressure 0 or hydrostatic: both states, so that the first extrapolation is the
+      // initial field.
+      const InitialFlow velocity(parameters, hydrostatic_start);
       for (unsigned int s = 0; s < flow.n_states(); ++s)
         {
           flow.interpolate(velocity, s);
           flow_system.impose_boundary_values(s, time);
         }
+    }
+
+
+
+    double
+    FreeSurfaceSolver::initial_density(const dealii::Point<2> &point) const
+    {
+      return parameters.fluid.density(InitialPhase(parameters).value(point));
     }
 
 

@@ -74,6 +74,15 @@ namespace slidewave
                          "the same as '" + fluid_section
                            + "/Grid/Cell size' = " + to_string(fluid_parameters.cell_size)
                            + " (the skeleton and the water share one grid)");
+      const dealii::Tensor<1, 2> &g = fluid_parameters.fluid.gravity;
+      for (unsigned int d = 0; d < 2; ++d)
+        if (!same(soil_parameters.gravity[d], g[d], std::max(g.norm(), 1.)))
+          throw InputError(soil_section + "/Gravity",
+                           to_string(soil_parameters.gravity[0]) + ", "
+                             + to_string(soil_parameters.gravity[1]),
+                           "the same as '" + fluid_section + "/Fluids/Gravity' = " + to_string(g[0])
+                             + ", " + to_string(g[1])
+                             + " (one gravity acts on the grains and the water)");
       if (fluid_parameters.element_degree != 1)
         throw InputError(fluid_section + "/Finite elements/Degree",
                          std::to_string(fluid_parameters.element_degree),
@@ -90,14 +99,11 @@ namespace slidewave
                          fluid_parameters.porosity,
                          "empty with Physics = granular water (the skeleton is the porous "
                          "solid)");
-      if (soil_parameters.initial_stress == soil::InitialStress::geostatic
-          || soil_parameters.initial_stress == soil::InitialStress::gravity_loading)
+      if (soil_parameters.initial_stress == soil::InitialStress::gravity_loading)
         throw InputError(soil_section + "/Initial stress/Type",
-                         soil_parameters.initial_stress == soil::InitialStress::geostatic ?
-                           "geostatic" :
-                           "gravity loading",
-                         "none or uniform with Physics = granular water (the buoyant "
-                         "geostatic state is not yet built)");
+                         "gravity loading",
+                         "none, geostatic (the buoyant effective stress where the grains "
+                         "are in water) or uniform with Physics = granular water");
       if (soil_parameters.prescribed_velocity)
         throw InputError(soil_section + "/Prescribed velocity",
                          "(set)",
@@ -218,9 +224,16 @@ namespace slidewave
                               model->fill_new_point(properties, position, region_index, hx, hy);
                               return true;
                             });
+      // The water at rest on its hydrostatic pressure, the grains on their effective
+      // weight: a saturated layer in equilibrium from the start.
+      fluid_solver->start_hydrostatic();
       fluid_solver->initialize(start_time);
       if (soil_parameters.initial_stress == soil::InitialStress::uniform)
         model->set_uniform_stress(engine->point_cloud());
+      else if (soil_parameters.initial_stress == soil::InitialStress::geostatic)
+        model->set_geostatic_stress(engine->point_cloud(), [this](const dealii::Point<2> &x) {
+          return fluid_solver->initial_density(x) / parameters.grain_density;
+        });
       if (parameters.top_load > 0.)
         apply_top_load();
       verification.open_files(false);

@@ -147,7 +147,9 @@ namespace slidewave
 
 
     void
-    SoilModel::set_geostatic_stress(particles::PointCloud &cloud) const
+    SoilModel::set_geostatic_stress(
+      particles::PointCloud                                 &cloud,
+      const std::function<double(const dealii::Point<2> &)> &buoyancy) const
     {
       // The weight above each point, per unit width, from the points in its vertical strip
       // (strips of the initial point spacing, which the points of a region fill on a
@@ -165,14 +167,17 @@ namespace slidewave
       std::vector<double> mass(static_cast<std::size_t>(n_x) * n_y, 0.);
       // A downward point force (the water on the surface) weighs like mass F / g.
       const double g = std::abs(prm.gravity[1]);
-      for (const auto &particle : cloud.particles())
-        {
-          const auto p = particle.get_properties();
-          mass[static_cast<std::size_t>(bin(particle.get_location(), 0, n_x)) * n_y
-               + bin(particle.get_location(), 1, n_y)]
-            += p[property::mass]
+      // A point's weight as a mass: its own less the buoyancy, plus its point force.
+      const auto weight = [&](const auto &particle) {
+        const auto   p    = particle.get_properties();
+        const double lift = buoyancy ? buoyancy(particle.get_location()) : 0.;
+        return p[property::mass] * (1. - lift)
                - (prm.point_forces && g > 0. ? p[property::point_force_y] / g : 0.);
-        }
+      };
+      for (const auto &particle : cloud.particles())
+        mass[static_cast<std::size_t>(bin(particle.get_location(), 0, n_x)) * n_y
+             + bin(particle.get_location(), 1, n_y)]
+          += weight(particle);
       dealii::Utilities::MPI::sum(mass, MPI_COMM_WORLD, mass);
       // Weight above the bottom of each bin.
       for (unsigned int i = 0; i < n_x; ++i)
@@ -185,8 +190,7 @@ namespace slidewave
           auto               p   = particle.get_properties();
           const unsigned int i   = bin(particle.get_location(), 0, n_x);
           const unsigned int j   = bin(particle.get_location(), 1, n_y);
-          const double       own = p[property::mass]
-                             - (prm.point_forces && g > 0. ? p[property::point_force_y] / g : 0.);
+          const double       own = weight(particle);
           const double above = (j + 1 < n_y ? mass[static_cast<std::size_t>(i) * n_y + j + 1] : 0.);
           const double sigma_v = -g * (above + 0.5 * own) / spacing;
           const auto &material = prm.materials[static_cast<unsigned int>(p[property::material_id])];

@@ -60,6 +60,20 @@ namespace slidewave
       void
       enable_moving_solid(double grain_density = 0.);
 
+      /** The initial pressure is that of the initial fluids at rest (hydrostatic in the
+       *  water) instead of 0 (a moving solid resting on the water's
+       *  pressure from the start). Call before initialize(). */
+      void
+      start_hydrostatic()
+      {
+        hydrostatic_start = true;
+      }
+
+      /** The density of the initial fluid at @p point (water, air or between them in the
+       *  interface) [kg/m^3]. */
+      double
+      initial_density(const dealii::Point<2> &point) const;
+
       /** The moving solid's fields (enable_moving_solid()), for the physics that sets
        *  them; call values_changed() after writing. */
       grid::FiniteElementField &
@@ -159,6 +173,8 @@ namespace slidewave
       grid::FiniteElementField     phase;
       NavierStokesSystem           flow_system;
       PhaseFieldSystem             phase_system;
+      /** The initial pressure hydrostatic (start_hydrostatic()). */
+      bool hydrostatic_start = false;
       /** The fixed porous structure's fields (only with 'Porous structure/Porosity'). */
       std::unique_ptr<grid::FiniteElementField> fluid_fraction, inverse_permeability;
       /** The moving solid's velocity (enable_moving_solid()). */

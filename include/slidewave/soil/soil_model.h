@@ -149,9 +149,16 @@ namespace slidewave
       void
       set_uniform_stress(particles::PointCloud &cloud) const;
 
-      /** 'geostatic': sigma_v from the weight of the material above, sigma_h = K0 sigma_v. */
+      /**
+       * 'geostatic': sigma_v from the weight of the material above, sigma_h = K0 sigma_v.
+       * With @p buoyancy, the effective stress of grains in a fluid: each point weighs
+       * m g (1 - buoyancy(x)), buoyancy(x) = rho^f(x) / rho^s the share of its grains'
+       * weight the fluid at x carries (the pore fluid's own weight is its pressure's).
+       */
       void
-      set_geostatic_stress(particles::PointCloud &cloud) const;
+      set_geostatic_stress(particles::PointCloud                                 &cloud,
+                           const std::function<double(const dealii::Point<2> &)> &buoyancy
+                           = {}) const;
 
       /** The end of gravity loading: the points at rest where they are now. */
       void

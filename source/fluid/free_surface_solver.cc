@@ -171,12 +171,12 @@ namespace slidewave
     FreeSurfaceSolver::set_initial_state()
     {
       phase.interpolate(InitialPhase(parameters));
-      if (solid_velocity)
+      if (solid_flux)
         {
           // No solid until its physics hands its fields over (before every step).
           fluid_fraction->interpolate(dealii::Functions::ConstantFunction<2>(1.));
           inverse_permeability->interpolate(dealii::Functions::ZeroFunction<2>());
-          solid_velocity->interpolate(dealii::Functions::ZeroFunction<2>(2));
+          solid_flux->interpolate(dealii::Functions::ZeroFunction<2>(2));
         }
       else if (fluid_fraction)
         {
@@ -239,14 +239,14 @@ namespace slidewave
     {
       fluid_fraction       = std::make_unique<grid::FiniteElementField>(grid);
       inverse_permeability = std::make_unique<grid::FiniteElementField>(grid);
-      solid_velocity
+      solid_flux
         = std::make_unique<grid::FiniteElementField>(grid,
                                                      dealii::FESystem<2>(dealii::FE_Q<2>(1), 2),
                                                      1);
       PorousMedium medium;
       medium.fluid_fraction       = fluid_fraction.get();
       medium.inverse_permeability = inverse_permeability.get();
-      medium.solid_velocity       = solid_velocity.get();
+      medium.solid_flux           = solid_flux.get();
       medium.grain_density        = grain_density;
       flow_system.set_porous_medium(medium);
     }
@@ -340,7 +340,7 @@ namespace slidewave
     FreeSurfaceSolver::advance(const double dt)
     {
       // A moving solid's physics drives the grid's changes (between its steps).
-      if (!solid_velocity)
+      if (!solid_flux)
         grid.change_if_due(n_steps);
       FluidStepReport   report;
       const StepLengths lengths{dt, last_dt};

@@ -332,7 +332,7 @@ namespace slidewave
                       }
                     local_rhs(i)
                       += (-Ni * medium.solid_divergence
-                          + Gi * (medium.solid_flux + medium.pressure_diffusion * grad_p_n)
+                          + Gi * (medium.correction_flux + medium.pressure_diffusion * grad_p_n)
                           + pspg * (Gi * explicit_residual))
                          * JxW;
                   }

@@ -25,15 +25,14 @@ namespace slidewave
                                                                 face_quadrature,
                                                                 flags);
         }
-      if (medium.solid_velocity != nullptr)
+      if (medium.solid_flux != nullptr)
         {
-          fv_solid = std::make_unique<dealii::FEValues<2>>(medium.solid_velocity->finite_element(),
+          fv_solid = std::make_unique<dealii::FEValues<2>>(medium.solid_flux->finite_element(),
                                                            quadrature,
                                                            flags);
-          ff_solid
-            = std::make_unique<dealii::FEFaceValues<2>>(medium.solid_velocity->finite_element(),
-                                                        face_quadrature,
-                                                        flags);
+          ff_solid = std::make_unique<dealii::FEFaceValues<2>>(medium.solid_flux->finite_element(),
+                                                               face_quadrature,
+                                                               flags);
         }
     }
 
@@ -50,9 +49,9 @@ namespace slidewave
       const unsigned int n_q    = result.size();
       n.assign(n_q, 1.);
       inverse_permeability.assign(n_q, 0.);
-      div_v_s.assign(n_q, 0.);
+      div_flux.assign(n_q, 0.);
       grad_n.assign(n_q, dealii::Tensor<1, 2>());
-      v_s.assign(n_q, dealii::Tensor<1, 2>());
+      flux.assign(n_q, dealii::Tensor<1, 2>());
       // The cell's (or face's) values of a field.
       const auto values_on = [&](const grid::FiniteElementField &field,
                                  const bool vector) -> dealii::FEValuesBase<2> & {
@@ -80,11 +79,11 @@ namespace slidewave
       if (medium.inverse_permeability != nullptr)
         values_on(*medium.inverse_permeability, false)
           .get_function_values(medium.inverse_permeability->values(0), inverse_permeability);
-      if (medium.solid_velocity != nullptr)
+      if (medium.solid_flux != nullptr)
         {
-          auto &fv = values_on(*medium.solid_velocity, true);
-          fv[velocity].get_function_values(medium.solid_velocity->values(0), v_s);
-          fv[velocity].get_function_divergences(medium.solid_velocity->values(0), div_v_s);
+          auto &fv = values_on(*medium.solid_flux, true);
+          fv[velocity].get_function_values(medium.solid_flux->values(0), flux);
+          fv[velocity].get_function_divergences(medium.solid_flux->values(0), div_flux);
         }
       const double rho_s = medium.grain_density;
       for (unsigned int q = 0; q < n_q; ++q)
@@ -92,11 +91,14 @@ namespace slidewave
           PorousCoefficients &c = result[q];
           c.n                   = n[q];
           c.grad_n              = grad_n[q];
-          c.v_s                 = v_s[q];
-          const double C        = n[q] * n[q] * mu[q] * inverse_permeability[q];
-          const double solid    = 1. - n[q];
-          c.solid_divergence    = solid * div_v_s[q] - v_s[q] * grad_n[q];
-          c.drag                = C;
+          // The solid's velocity from its flux (1 - n) v_s: a node the grains barely touch
+          // hands over a flux as small as its grains, whatever its velocity.
+          const double solid_share = 1. - n[q];
+          c.v_s              = solid_share > 1e-12 ? flux[q] / solid_share : dealii::Tensor<1, 2>();
+          const double C     = n[q] * n[q] * mu[q] * inverse_permeability[q];
+          const double solid = 1. - n[q];
+          c.solid_divergence = div_flux[q];
+          c.drag             = C;
           if (rho_s > 0.)
             {
               // The skeleton's momentum eliminated (PorousMedium): no grains (solid = 0)
@@ -105,7 +107,7 @@ namespace slidewave
               const double Delta       = denominator > 0. ? dt / denominator : 0.;
               const double s           = C * Delta;
               c.drag                   = C * (1. - s);
-              c.solid_flux             = -s * solid * v_s[q];
+              c.correction_flux        = -s * flux[q];
               c.pressure_share         = s * solid;
               c.pressure_diffusion     = solid * solid * Delta;
             }
@@ -141,7 +143,7 @@ namespace slidewave
                         - c.pressure_diffusion * (fv_face[pressure].gradient(j, q) * normal))
                      * JxW;
               local_rhs(i)
-                -= test * ((c.solid_flux + c.pressure_diffusion * grad_p_n[q]) * normal) * JxW;
+                -= test * ((c.correction_flux + c.pressure_diffusion * grad_p_n[q]) * normal) * JxW;
             }
         }
     }

@@ -58,6 +58,7 @@ namespace slidewave
       fluid_parameters.parse_parameters(prm);
       prm.leave_subsection();
       soil_parameters.point_forces = parameters.top_load > 0.;
+      fluid_output = fluid::FreeSurfaceOutput(scene.output_directory, fluid_parameters.gauges);
 
       // One grid for both phases: the skeleton's and the water's must be the same.
       const double extent = (fluid_parameters.upper_right - fluid_parameters.lower_left).norm();
@@ -237,6 +238,7 @@ namespace slidewave
       if (parameters.top_load > 0.)
         apply_top_load();
       verification.open_files(false);
+      fluid_output.open_gauges(false);
     }
 
 
@@ -366,7 +368,7 @@ namespace slidewave
       const grid::NodalWorkspace &nodes = engine->nodal_workspace();
       const SkeletonFields        fields{&fluid_solver->solid_fraction_field(),
                                   &fluid_solver->inverse_permeability_field(),
-                                  &fluid_solver->solid_velocity_field()};
+                                  &fluid_solver->solid_flux_field()};
       for (unsigned int k = 0; k < n_substeps; ++k)
         {
           {
@@ -441,6 +443,7 @@ namespace slidewave
           if (!bad.empty())
             throw RunFailure(where + bad);
         }
+      fluid_output.record_gauges(*fluid_solver, info.time);
       verification.after_step(info.time, fluid_solver->flow_field());
     }
 
@@ -470,6 +473,15 @@ namespace slidewave
       statistics.add_value("skeleton_kinetic_energy", skeleton.kinetic_energy);
       statistics.add_value("skeleton_max_speed", skeleton.max_speed);
       statistics.add_value("skeleton_momentum_y", skeleton.momentum_y);
+      // The granular mass's extent: its front (rightmost point) and top (highest point).
+      double front = -std::numeric_limits<double>::max(), top = front;
+      for (const auto &particle : engine->point_cloud().particles())
+        {
+          front = std::max(front, particle.get_location()[0]);
+          top   = std::max(top, particle.get_location()[1]);
+        }
+      statistics.add_value("skeleton_front", dealii::Utilities::MPI::max(front, MPI_COMM_WORLD));
+      statistics.add_value("skeleton_top", dealii::Utilities::MPI::max(top, MPI_COMM_WORLD));
       statistics.add_value("flow_iterations", last_report.flow.iterations);
       if (parameters.sub_cycling)
         statistics.add_value("skeleton_substeps", n_substeps);
@@ -503,7 +515,10 @@ namespace slidewave
     std::vector<std::string>
     GranularWaterScene::growing_files() const
     {
-      return verification.growing_files();
+      std::vector<std::string> files = verification.growing_files();
+      if (!fluid_parameters.gauges.empty())
+        files.push_back(fluid::FreeSurfaceOutput::gauge_file());
+      return files;
     }
 
 
@@ -556,6 +571,7 @@ namespace slidewave
       fluid_output.files          = record.get_files("fluid/field_files");
       verification.load(record);
       verification.open_files(true);
+      fluid_output.open_gauges(true);
     }
   } // namespace granular
 } // namespace slidewave

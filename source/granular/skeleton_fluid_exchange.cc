@@ -47,12 +47,8 @@ namespace slidewave
     {
       using Vector = grid::NodalWorkspace::Vector;
       if (fraction.get_partitioner() != nodes.nodal_mass.get_partitioner())
-        for (Vector *v : {&fraction,
-                          &inverse_permeability,
-                          &vx,
-                          &vy,
-                          &old_pressure_force[0],
-                          &old_pressure_force[1]})
+        for (Vector *v :
+             {&fraction, &inverse_permeability, &vx, &vy, &pressure_work[0], &pressure_work[1]})
           v->reinit(nodes.nodal_mass);
       const unsigned int n_owned = nodes.nodal_mass.locally_owned_size();
       const double       mu      = parameters.fluid.water_viscosity;
@@ -76,7 +72,7 @@ namespace slidewave
       // grains, -(1 - n) grad p^n with this step's fluid fraction (fluid::PorousMedium).
       const bool with_pressure = flow != nullptr && predictor_step > 0.;
       if (with_pressure)
-        pressure_force(*flow, fields, old_pressure_force);
+        pressure_force(*flow, fields, pressure_work);
       for (unsigned int i = 0; i < n_owned; ++i)
         {
           // v^n, or v* = v^n + dt (f + f_p) / m (semi-implicit).
@@ -86,18 +82,26 @@ namespace slidewave
               {
                 double f = nodes.force[d].local_element(i);
                 if (with_pressure)
-                  f += old_pressure_force[d].local_element(i);
+                  f += pressure_work[d].local_element(i);
                 (d == 0 ? vx : vy).local_element(i)
                   = (nodes.momentum[d].local_element(i) + predictor_step * f) / m;
               }
           else
             vx.local_element(i) = vy.local_element(i) = 0.;
         }
-      // The skeleton's sides and walls hold its velocity: the water sees it held too.
+      // The skeleton's sides and walls hold its velocity: the water sees it held too. The
+      // water gets the flux (1 - n_I) v_I = S_I v_I / A_I: a node with a tiny mass (which
+      // GIMP's gradients may give any velocity) hands over a tiny flux.
       constraints.apply(vx, vy);
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          const double solid = 1. - fraction.local_element(i);
+          vx.local_element(i) *= solid;
+          vy.local_element(i) *= solid;
+        }
       for (Vector *v : {&vx, &vy})
         v->update_ghost_values();
-      fields.solid_velocity->copy_from_grid_nodes({&vx, &vy});
+      fields.solid_flux->copy_from_grid_nodes({&vx, &vy});
     }
 
 
@@ -135,14 +139,22 @@ namespace slidewave
             cell->get_dof_indices(indices);
             for (unsigned int q = 0; q < n_q; ++q)
               {
-                const dealii::Tensor<1, 2> traction = -(1. - n[q]) * grad_p[q] * fv_grid.JxW(q);
+                const dealii::Tensor<1, 2> traction = -grad_p[q] * fv_grid.JxW(q);
                 for (unsigned int i = 0; i < indices.size(); ++i)
                   for (unsigned int d = 0; d < 2; ++d)
                     force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
               }
           }
+      // The node's own solid fraction 1 - n_I = S_I / A_I: the force is that on the node's
+      // grains, so that a node the grains barely touch (a tiny mass) gets a tiny force and
+      // an acceleration -grad p / rho^s like any other.
+      const unsigned int n_owned = fraction.locally_owned_size();
       for (unsigned int d = 0; d < 2; ++d)
-        force[d].compress(dealii::VectorOperation::add);
+        {
+          force[d].compress(dealii::VectorOperation::add);
+          for (unsigned int i = 0; i < n_owned; ++i)
+            force[d].local_element(i) *= 1. - fraction.local_element(i);
+        }
     }
 
 
@@ -152,7 +164,7 @@ namespace slidewave
                                        const grid::FiniteElementField              &phase,
                                        const SkeletonFields                        &fields,
                                        std::array<grid::NodalWorkspace::Vector, 2> &force,
-                                       grid::NodalWorkspace::Vector *water_drag) const
+                                       grid::NodalWorkspace::Vector                *water_drag)
     {
       // The same quadrature as the water's assembly (Q1: 2 x 2 Gauss points).
       const dealii::QGauss<2>                  quadrature(flow.finite_element().degree + 1);
@@ -163,7 +175,7 @@ namespace slidewave
                                   quadrature,
                                   dealii::update_values | dealii::update_gradients);
       dealii::FEValues<2> fv_scalar(phase.finite_element(), quadrature, dealii::update_values);
-      dealii::FEValues<2> fv_solid(fields.solid_velocity->finite_element(),
+      dealii::FEValues<2> fv_solid(fields.solid_flux->finite_element(),
                                    quadrature,
                                    dealii::update_values);
       dealii::FEValues<2> fv_grid(grid.dof_handler().get_fe(),
@@ -194,16 +206,17 @@ namespace slidewave
             fv_flow.reinit(on(cell, flow));
             fv_flow[pressure].get_function_gradients(flow.values(0), grad_p);
             fv_flow[velocity].get_function_values(flow.values(0), u);
-            fv_solid.reinit(on(cell, *fields.solid_velocity));
-            fv_solid[velocity].get_function_values(fields.solid_velocity->values(0), v_s);
+            fv_solid.reinit(on(cell, *fields.solid_flux));
+            fv_solid[velocity].get_function_values(fields.solid_flux->values(0), v_s);
+            for (unsigned int q = 0; q < n_q; ++q) // the velocity from the flux
+              v_s[q] = n[q] < 1. ? v_s[q] / (1. - n[q]) : dealii::Tensor<1, 2>();
             fv_grid.reinit(cell);
             cell->get_dof_indices(indices);
             for (unsigned int q = 0; q < n_q; ++q)
               {
                 const double C = n[q] * n[q] * fluid.viscosity(phi[q]) * inverse_permeability[q];
                 const dealii::Tensor<1, 2> traction
-                  = (-(1. - n[q]) * grad_p[q] + C * (u[q] - explicit_drag * v_s[q]))
-                    * fv_grid.JxW(q);
+                  = C * (u[q] - explicit_drag * v_s[q]) * fv_grid.JxW(q);
                 for (unsigned int i = 0; i < indices.size(); ++i)
                   for (unsigned int d = 0; d < 2; ++d)
                     force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
@@ -216,6 +229,10 @@ namespace slidewave
         force[d].compress(dealii::VectorOperation::add);
       if (water_drag != nullptr)
         water_drag->compress(dealii::VectorOperation::add);
+      // The pressure's force on the grains, lumped at the nodes (pressure_force()).
+      pressure_force(flow, fields, pressure_work);
+      for (unsigned int d = 0; d < 2; ++d)
+        force[d] += pressure_work[d];
     }
 
 
@@ -228,23 +245,26 @@ namespace slidewave
     {
       grid::NodalWorkspace::Vector all(nodes.nodal_mass);
       const auto                  &u   = flow.values(0);
-      const auto                  &v_s = fields.solid_velocity->values(0);
+      const auto                  &v_s = fields.solid_flux->values(0);
       for (const auto &cell : grid.dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
           {
             const auto flow_cell  = on(cell, flow);
-            const auto solid_cell = on(cell, *fields.solid_velocity);
+            const auto solid_cell = on(cell, *fields.solid_flux);
             for (const unsigned int v : cell->vertex_indices())
               {
                 const auto node = cell->vertex_dof_index(v, 0);
                 if (!all.in_local_range(node))
                   continue;
                 // The vertex's dofs of FESystem(Q1^2, Q1) and of Q1^2, by component.
-                double w2 = 0.;
+                // The solid's velocity from its flux (1 - n_I) v_I.
+                const double solid = 1. - fraction(node);
+                double       w2    = 0.;
                 for (unsigned int d = 0; d < 2; ++d)
                   {
-                    const double w = u[flow_cell->vertex_dof_index(v, d)]
-                                     - v_s[solid_cell->vertex_dof_index(v, d)];
+                    const double w
+                      = u[flow_cell->vertex_dof_index(v, d)]
+                        - (solid > 0. ? v_s[solid_cell->vertex_dof_index(v, d)] / solid : 0.);
                     w2 += w * w;
                   }
                 all(node) = std::sqrt(w2);

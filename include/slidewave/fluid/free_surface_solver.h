@@ -50,12 +50,12 @@ namespace slidewave
       /**
        * A moving porous solid in the flow, whose fields another physics on the grid sets
        * before every step (the skeleton of a granular mass, issue 27): creates the fluid
-       * fraction, inverse permeability and solid velocity (Q1 fields that follow the
+       * fraction, inverse permeability and solid flux (Q1 fields that follow the
        * grid), switches the porous terms on, and leaves the grid's changes to that
        * physics (advance() then changes nothing). Call before setup() or load(), instead
-       * of a fixed porous structure. @p grain_density > 0: the solid's velocity field is
-       * its predicted velocity v* and the flow eliminates its momentum (PorousMedium,
-       * the semi-implicit drag); 0: the solid's velocity is given (explicit drag).
+       * of a fixed porous structure. @p grain_density > 0: the solid's flux field is
+       * (1 - n) v* of its predicted velocity and the flow eliminates its momentum (PorousMedium,
+       * the semi-implicit drag); 0: of its velocity (explicit drag).
        */
       void
       enable_moving_solid(double grain_density = 0.);
@@ -89,9 +89,9 @@ namespace slidewave
       }
 
       grid::FiniteElementField &
-      solid_velocity_field()
+      solid_flux_field()
       {
-        return *solid_velocity;
+        return *solid_flux;
       }
 
       /** setup() on a grid another physics has created (collective). */
@@ -177,8 +177,8 @@ namespace slidewave
       bool hydrostatic_start = false;
       /** The fixed porous structure's fields (only with 'Porous structure/Porosity'). */
       std::unique_ptr<grid::FiniteElementField> fluid_fraction, inverse_permeability;
-      /** The moving solid's velocity (enable_moving_solid()). */
-      std::unique_ptr<grid::FiniteElementField> solid_velocity;
+      /** The moving solid's flux (1 - n) v_s (enable_moving_solid()). */
+      std::unique_ptr<grid::FiniteElementField> solid_flux;
     };
   } // namespace fluid
 } // namespace slidewave

@@ -21,8 +21,11 @@ namespace slidewave
      * structure) gives the fluid. Every field is optional (nullptr: none, and nothing of it
      * is evaluated): the fluid fraction n (1 where there is no solid: the effective
      * 1 - theta (1 - n_s) of paper 002 with the solid volume fraction theta), the inverse
-     * permeability 1/kappa [1/m^2] (0: no drag) and the solid's velocity v_s (Q1^2, zero
-     * when absent). With them the momentum and continuity equations read
+     * permeability 1/kappa [1/m^2] (0: no drag) and the solid's flux j = (1 - n) v_s
+     * (Q1^2, zero when absent; the solid's velocity at a point is j / (1 - n) there, so that
+     * a node the grains barely touch, whose velocity a material point method leaves
+     * arbitrary, hands over a flux as small as its grains). With them the momentum and continuity
+     * equations read
      *
      *   n rho (du/dt + u_bar . grad u) = -n grad p + div(2 mu n eps(u)) + n rho g
      *                                    - C (u - v_s),    C = n^2 mu / kappa,
@@ -68,7 +71,7 @@ namespace slidewave
     {
       const grid::FiniteElementField *fluid_fraction       = nullptr;
       const grid::FiniteElementField *inverse_permeability = nullptr;
-      const grid::FiniteElementField *solid_velocity       = nullptr;
+      const grid::FiniteElementField *solid_flux           = nullptr;
       /** rho^s [kg/m^3] of a skeleton whose momentum the flow eliminates; 0: v_s given. */
       double grain_density = 0.;
 
@@ -76,7 +79,7 @@ namespace slidewave
       active() const
       {
         return fluid_fraction != nullptr || inverse_permeability != nullptr
-               || solid_velocity != nullptr;
+               || solid_flux != nullptr;
       }
     };
 
@@ -96,7 +99,7 @@ namespace slidewave
       double solid_divergence = 0.;
       /** - s (1 - n) v*: the known part of the solid's correction flux s (1 - n)(u - v*),
        *  tested by grad q (its divergence in weak form). */
-      dealii::Tensor<1, 2> solid_flux;
+      dealii::Tensor<1, 2> correction_flux;
       /** s (1 - n): the share of the solid's pressure gradient and of its velocity u. */
       double pressure_share = 0.;
       /** (1 - n)^2 Delta: the Darcy flow's pressure diffusion [m^3 s / kg]. */
@@ -170,8 +173,8 @@ namespace slidewave
       const PorousMedium                      &medium;
       std::unique_ptr<dealii::FEValues<2>>     fv_scalar, fv_solid;
       std::unique_ptr<dealii::FEFaceValues<2>> ff_scalar, ff_solid;
-      std::vector<double>                      n, inverse_permeability, div_v_s;
-      std::vector<dealii::Tensor<1, 2>>        grad_n, v_s;
+      std::vector<double>                      n, inverse_permeability, div_flux;
+      std::vector<dealii::Tensor<1, 2>>        grad_n, flux;
       std::vector<PorousCoefficients>          coefficients, face_coefficients;
     };
   } // namespace fluid

@@ -18,7 +18,7 @@ namespace slidewave
     {
       grid::FiniteElementField *fluid_fraction       = nullptr;
       grid::FiniteElementField *inverse_permeability = nullptr;
-      grid::FiniteElementField *solid_velocity       = nullptr;
+      grid::FiniteElementField *solid_flux           = nullptr;
     };
 
     /**
@@ -76,7 +76,7 @@ namespace slidewave
                   const grid::FiniteElementField              &phase,
                   const SkeletonFields                        &fields,
                   std::array<grid::NodalWorkspace::Vector, 2> &force,
-                  grid::NodalWorkspace::Vector                *water_drag = nullptr) const;
+                  grid::NodalWorkspace::Vector                *water_drag = nullptr);
 
       /** The relative speed |u - v_s| of the water's state 0 and the skeleton's velocity
        *  field at the owned nodes of this step's points, into @p speed (the skeleton's
@@ -89,8 +89,9 @@ namespace slidewave
                      grid::NodalWorkspace::Vector   &speed) const;
 
     private:
-      /** -integral of (1 - n) grad p N_I with the pressure of @p flow's state 0 and the
-       *  fluid fraction of @p fields, into @p force (owned totals; collective). */
+      /** The pressure's force on the grains of each node, lumped: -(1 - n_I) times the
+       *  integral of N_I grad p, with the pressure of @p flow's state 0 and the nodes' fluid
+       *  fraction of this step (to_fluid()), into @p force (owned totals; collective). */
       void
       pressure_force(const grid::FiniteElementField              &flow,
                      const SkeletonFields                        &fields,
@@ -100,7 +101,7 @@ namespace slidewave
       const fluid::FreeSurfaceParameters &parameters;
       /** The nodal workspace's vectors of to_fluid() (kept between steps). */
       grid::NodalWorkspace::Vector                fraction, inverse_permeability, vx, vy;
-      std::array<grid::NodalWorkspace::Vector, 2> old_pressure_force;
+      std::array<grid::NodalWorkspace::Vector, 2> pressure_work;
     };
   } // namespace granular
 } // namespace slidewave

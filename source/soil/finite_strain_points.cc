@@ -1,4 +1,6 @@
 #include <cmath>
+#include <deal.II/base/exceptions.h>
+#include <limits>
 #include <slidewave/soil/finite_strain_points.h>
 #include <slidewave/soil/particle_properties.h>
 
@@ -128,12 +130,32 @@ namespace slidewave
       const double J = p[property::volume] / p[property::initial_volume];
 
       dealii::SymmetricTensor<2, 3> be;
-      be[0][0]           = p[first + xx];
-      be[1][1]           = p[first + yy];
-      be[0][1]           = p[first + xy];
-      be[2][2]           = p[first + zz];
-      double     plastic = p[property::equivalent_plastic_strain];
-      const auto step    = model.update(be, f, J, plastic);
+      be[0][0] = p[first + xx];
+      be[1][1] = p[first + yy];
+      be[0][1] = p[first + xy];
+      be[2][2] = p[first + zz];
+
+      // A run that has already failed (non-finite velocities, an overflowing step) makes
+      // the model throw (b^e_trial not positive definite, det f <= 0), on this rank alone,
+      // while the other ranks would wait in the next collective. The point is marked
+      // non-finite instead, and the guards stop the run on every rank with its
+      // description, as for the small-strain models.
+      double                plastic = p[property::equivalent_plastic_strain];
+      materials::HenckyStep step;
+      try
+        {
+          step = model.update(be, f, J, plastic);
+        }
+      catch (const dealii::ExceptionBase &)
+        {
+          const double nan = std::numeric_limits<double>::quiet_NaN();
+          for (const unsigned int c :
+               {property::stress_xx, property::stress_yy, property::stress_xy, property::stress_zz})
+            p[c] = nan;
+          for (unsigned int c = 0; c < 4; ++c)
+            p[first + c] = nan;
+          return;
+        }
 
       p[first + xx]                          = be[0][0];
       p[first + yy]                          = be[1][1];

@@ -7,12 +7,15 @@
 // (b) b^e from a stress and back: kirchhoff_stress(elastic_left_cauchy_green(tau)) = tau
 //     for a general plane-strain stress, and b^e = I for tau = 0;
 // (c) one point's update: b^e, the Cauchy stress sigma = tau / J and the volume of a
-//     point of a Hencky material under a step of uniaxial stretch, against the closed form.
+//     point of a Hencky material under a step of uniaxial stretch, against the closed form;
+// (d) a non-finite velocity gradient (a run that has failed) marks the point non-finite
+//     for the guards instead of throwing on one rank.
 // Each check prints its number and tolerance; exits non-zero when one fails.
 #include "unit_check.h"
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <slidewave/soil/finite_strain_points.h>
 #include <slidewave/soil/particle_properties.h>
 #include <vector>
@@ -119,5 +122,22 @@ main()
           p[soil::property::stress_yy] / (tau_yy / 1.02) - 1.,
           1e-14);
   verdict("sigma_zz - sigma_yy", p[soil::property::stress_zz] - p[soil::property::stress_yy], 1e-9);
+
+  // (d) a failed run's non-finite gradient: no exception (it would leave the other ranks
+  // waiting), the point marked non-finite for the guards.
+  bool thrown = false;
+  try
+    {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      points.update(dealii::make_array_view(p), Tensor<2, 2>({{nan, 0.}, {0., 0.}}), 1., 0.);
+    }
+  catch (...)
+    {
+      thrown = true;
+    }
+  std::printf("non-finite velocity gradient:\n");
+  unit_check::check(!thrown, "no exception");
+  unit_check::check(std::isnan(p[soil::property::stress_xx]) && std::isnan(p[first]),
+                    "stress and b^e marked non-finite");
   return unit_check::finish();
 }

@@ -519,7 +519,7 @@ namespace slidewave
           << (soil_parameters.adaptivity.enabled ? soil_parameters.adaptivity.levels : 0)
           << "; materials";
       for (const auto &material : soil_parameters.materials)
-        out << " '" << material.name << "'";
+        out << " " << material.signature();
       out << "; water cells: "
           << (coupling.water_cells == WaterCells::grid_columns ? "grid columns" : "water mesh")
           << "; loads on soil: " << (coupling.loads_on_soil ? "yes" : "no");

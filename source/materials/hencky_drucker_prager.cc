@@ -181,6 +181,25 @@ namespace slidewave
 
 
 
+    dealii::SymmetricTensor<2, 3>
+    HenckyDruckerPrager::elastic_left_cauchy_green(
+      const dealii::SymmetricTensor<2, 3> &kirchhoff_stress) const
+    {
+      // The principal axes of tau are those of epsilon (isotropic elasticity); no positivity
+      // needed, so the eigenvectors of tau itself.
+      const auto axes
+        = dealii::eigenvectors(kirchhoff_stress, dealii::SymmetricTensorEigenvectorMethod::jacobi);
+      const double K = cone.elasticity().bulk_modulus();
+      const double G = cone.elasticity().shear_modulus();
+      const double p = (axes[0].first + axes[1].first + axes[2].first) / 3.;
+      Principal    stretches_squared;
+      for (unsigned int a = 0; a < 3; ++a)
+        stretches_squared[a] = std::exp(2. * (p / (3. * K) + (axes[a].first - p) / (2. * G)));
+      return from_principal(stretches_squared, axes);
+    }
+
+
+
     double
     HenckyDruckerPrager::yield_function(const dealii::SymmetricTensor<2, 3> &kirchhoff_stress) const
     {

@@ -17,11 +17,18 @@ namespace slidewave
                         "by this name.");
       prm.declare_entry("Model",
                         "drucker prager",
-                        Selection("linear elastic|drucker prager"),
+                        Selection("linear elastic|drucker prager|hencky drucker prager"),
                         "'linear elastic': Hooke's law only. 'drucker prager': "
                         "linear elasticity with the non-associative "
                         "Drucker-Prager criterion matched to Mohr-Coulomb in "
-                        "plane strain and a tension cutoff (paper 000, Eqs. 2-4).");
+                        "plane strain and a tension cutoff (paper 000, Eqs. 2-4); "
+                        "both small strain, on the Jaumann rate of the stress. "
+                        "'hencky drucker prager': finite strain (paper 002, "
+                        "Sec. 2.2): Hencky hyperelasticity on the elastic left "
+                        "Cauchy-Green tensor b^e of F = F^e F^p (carried by the "
+                        "points), the same cone and flow rule, returned in "
+                        "principal logarithmic strains; no tension cutoff (the "
+                        "apex c cot(phi) bounds the mean stress).");
       prm.declare_entry("Density",
                         "2000",
                         Double(),
@@ -71,9 +78,11 @@ namespace slidewave
     void
     MaterialParameters::parse_parameters(dealii::ParameterHandler &prm, const std::string &path)
     {
-      name            = dealii::Utilities::trim(prm.get("Name"));
-      model           = prm.get("Model") == "linear elastic" ? MaterialModel::linear_elastic :
-                                                               MaterialModel::drucker_prager;
+      name                         = dealii::Utilities::trim(prm.get("Name"));
+      const std::string model_name = prm.get("Model");
+      model           = model_name == "linear elastic"        ? MaterialModel::linear_elastic :
+                        model_name == "hencky drucker prager" ? MaterialModel::hencky_drucker_prager :
+                                                                MaterialModel::drucker_prager;
       density         = prm.get_double("Density");
       youngs_modulus  = prm.get_double("Young's modulus");
       poisson_ratio   = prm.get_double("Poisson ratio");
@@ -103,6 +112,20 @@ namespace slidewave
                              "friction angle");
       require_non_negative(path + "/Cohesion", cohesion);
       require_non_negative(path + "/Tension cutoff", tension_cutoff);
+      if (model == MaterialModel::hencky_drucker_prager && tension_cutoff != 0.)
+        throw InputError(path + "/Tension cutoff",
+                         prm.get("Tension cutoff"),
+                         "0 with 'Model = hencky drucker prager', which has no tension "
+                         "cutoff: the apex of its cone, c cot(phi), bounds the mean stress");
+    }
+
+
+
+    std::string
+    MaterialParameters::signature() const
+    {
+      return "'" + name + "'"
+             + (model == MaterialModel::hencky_drucker_prager ? " (finite strain)" : "");
     }
 
 
@@ -156,6 +179,11 @@ namespace slidewave
             break;
           case MaterialModel::drucker_prager:
             plasticity->update_stress(stress, strain_increment, equivalent_plastic_strain);
+            break;
+          case MaterialModel::hencky_drucker_prager:
+            Assert(false,
+                   dealii::ExcMessage("a Hencky material's points are updated from their "
+                                      "deformation (soil::FiniteStrainPoints)"));
             break;
         }
     }

@@ -17,6 +17,7 @@
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
 #include <slidewave/io/solver_checkpoints.h>
+#include <slidewave/soil/hencky_exact_solution.h>
 #include <slidewave/soil/material_point_scene.h>
 #include <slidewave/soil/particle_properties.h>
 #include <sstream>
@@ -56,7 +57,8 @@ namespace slidewave
       {
         prm.declare_entry("Exact solution",
                           "none",
-                          Selection("none|bar vibration|self weight column|rigid rotation"),
+                          Selection("none|bar vibration|self weight column|rigid rotation|"
+                                    "homogeneous deformation"),
                           "'bar vibration': axial vibration of an elastic bar fixed at x = 0 "
                           "and free at x = L, started with v = A sin(pi x / (2 L)); the "
                           "centre-of-mass velocity is compared with A cos(omega t) / (beta L) "
@@ -67,7 +69,13 @@ namespace slidewave
                           "'Rotation centre' (a prescribed velocity) from the 'uniform' "
                           "initial stress sigma_0: at the end, every point's stress against "
                           "R sigma_0 R^T (R the rotation by omega t; the Jaumann rate turns "
-                          "the stress with the material), normalized by |sigma_0|.");
+                          "the stress with the material), normalized by |sigma_0|. "
+                          "'homogeneous deformation': a stress-free body of a 'hencky drucker "
+                          "prager' material (Region 1's) deformed by the constant 'Velocity "
+                          "gradient' L (give the same field as 'Prescribed velocity'): at the "
+                          "end, every point's stress against the closed-form Hencky stress of "
+                          "F = exp(L t) (exact for elastic paths, and for plastic ones with L "
+                          "symmetric), normalized by its norm.");
         prm.declare_entry("Bar length", "25", Double(0.), "L of the vibrating bar [m].");
         prm.declare_entry("Bar amplitude",
                           "0.1",
@@ -85,6 +93,11 @@ namespace slidewave
                           "0, 0",
                           Anything(),
                           "x, y of the centre of the rigid rotation [m].");
+        prm.declare_entry("Velocity gradient",
+                          "0, 0, 0, 0",
+                          Anything(),
+                          "L_xx, L_xy, L_yx, L_yy [1/s] of 'homogeneous deformation' (L_xy = "
+                          "dv_x/dy).");
         prm.declare_entry("Tolerance",
                           "0",
                           Double(0.),
@@ -118,7 +131,9 @@ namespace slidewave
         exact_solution         = type == "bar vibration"      ? ExactSolution::bar_vibration :
                                  type == "self weight column" ? ExactSolution::self_weight_column :
                                  type == "rigid rotation"     ? ExactSolution::rigid_rotation :
-                                                                ExactSolution::none;
+                                 type == "homogeneous deformation" ?
+                                                            ExactSolution::homogeneous_deformation :
+                                                            ExactSolution::none;
         rotation_rate          = prm.get_double("Rotation rate");
         {
           const auto centre = parse_number_list(section + "/Verification/Rotation centre",
@@ -127,6 +142,22 @@ namespace slidewave
                                                 2);
           rotation_centre   = dealii::Point<2>(centre[0], centre[1]);
         }
+        {
+          const auto L      = parse_number_list(section + "/Verification/Velocity gradient",
+                                           prm.get("Velocity gradient"),
+                                           "four numbers L_xx, L_xy, L_yx, L_yy",
+                                           4);
+          velocity_gradient = dealii::Tensor<2, 2>({{L[0], L[1]}, {L[2], L[3]}});
+        }
+        if (exact_solution == ExactSolution::homogeneous_deformation
+            && (parameters.materials[parameters.regions[0].material_index].model
+                  != materials::MaterialModel::hencky_drucker_prager
+                || parameters.initial_stress != InitialStress::none))
+          throw InputError(section + "/Verification/Exact solution",
+                           type,
+                           "another exact solution: 'homogeneous deformation' needs Region 1 "
+                           "of a 'hencky drucker prager' material, stress free at the start "
+                           "('Initial stress/Type = none')");
         bar_length    = prm.get_double("Bar length");
         bar_amplitude = prm.get_double("Bar amplitude");
         column_height = prm.get_double("Column height");
@@ -209,7 +240,7 @@ namespace slidewave
           << ", cell size " << parameters.cell_size << ", adaptive levels "
           << (parameters.adaptivity.enabled ? parameters.adaptivity.levels : 0) << "; materials";
       for (const auto &material : parameters.materials)
-        out << " '" << material.name << "'";
+        out << " " << material.signature();
       return out.str();
     }
 
@@ -377,6 +408,44 @@ namespace slidewave
 
 
 
+    double
+    MaterialPointScene::homogeneous_deformation_error(const double time) const
+    {
+      const auto &material = parameters.materials[parameters.regions[0].material_index];
+      const auto  exact
+        = hencky_homogeneous_state(material, velocity_gradient, time - scene.start_time);
+      double error = 0.;
+      for (const auto &particle : solver->particles())
+        {
+          const auto                    p = particle.get_properties();
+          dealii::SymmetricTensor<2, 3> sigma;
+          sigma[0][0] = p[property::stress_xx];
+          sigma[1][1] = p[property::stress_yy];
+          sigma[0][1] = p[property::stress_xy];
+          sigma[2][2] = p[property::stress_zz];
+          error       = std::max(error, (sigma - exact.cauchy_stress).norm());
+        }
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          const auto &s = exact.cauchy_stress;
+          char        line[240];
+          std::snprintf(line,
+                        sizeof(line),
+                        "Homogeneous deformation: det F = %.6f, %s; exact sigma_xx, sigma_yy, "
+                        "sigma_xy, sigma_zz = %.6e, %.6e, %.6e, %.6e Pa",
+                        exact.jacobian,
+                        exact.plastic ? "plastic" : "elastic",
+                        s[0][0],
+                        s[1][1],
+                        s[0][1],
+                        s[2][2]);
+          std::cout << line << std::endl;
+        }
+      return dealii::Utilities::MPI::max(error, MPI_COMM_WORLD) / exact.cauchy_stress.norm();
+    }
+
+
+
     void
     MaterialPointScene::after_step(const StepInfo &info)
     {
@@ -497,6 +566,8 @@ namespace slidewave
               std::cout << line << std::endl;
             }
         }
+      if (exact_solution == ExactSolution::homogeneous_deformation)
+        max_error = homogeneous_deformation_error(info.time);
       if (exact_solution != ExactSolution::none && is_writer)
         {
           char line[160];
@@ -505,7 +576,8 @@ namespace slidewave
                         "%s error against the exact solution = %.4e",
                         exact_solution == ExactSolution::bar_vibration ?
                           "Largest centre-of-mass velocity" :
-                        exact_solution == ExactSolution::rigid_rotation ?
+                        exact_solution == ExactSolution::rigid_rotation
+                            || exact_solution == ExactSolution::homogeneous_deformation ?
                           "Largest normalized stress" :
                           "Normalized sigma_yy",
                         max_error);

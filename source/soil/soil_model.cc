@@ -27,6 +27,14 @@ namespace slidewave
           property_layout.add_scalar(names[i]);
       if (point_forces)
         property_layout.add_load("point_force", {"point_force_x", "point_force_y"});
+      // b^e only when some material needs it: other scenes keep their layout, output and
+      // checkpoints.
+      if (FiniteStrainPoints::needed(prm.materials))
+        {
+          finite_strain.emplace(prm.materials, property_layout.size());
+          for (const auto &name : FiniteStrainPoints::property_names())
+            property_layout.add_scalar(name);
+        }
     }
 
 
@@ -53,43 +61,61 @@ namespace slidewave
           mean_volumetric = volumetric_sum / volume_sum;
         }
 
-      const bool   follow_stretch = prm.shape_function == grid::ShapeFunction::cpgimp;
-      const double max_half       = 0.5 * prm.cell_size;
-      unsigned int k              = 0;
+      const bool                follow_stretch = prm.shape_function == grid::ShapeFunction::cpgimp;
+      const double              max_half       = 0.5 * prm.cell_size;
+      const FiniteStrainPoints *hencky         = finite_strain ? &*finite_strain : nullptr;
+      unsigned int              k              = 0;
       for (auto &particle : particles_in_cell)
         {
-          const dealii::Tensor<2, 2>   &L = cell_gradients[k++];
-          dealii::SymmetricTensor<2, 3> strain_increment;
-          strain_increment[0][0] = L[0][0] * dt;
-          strain_increment[1][1] = L[1][1] * dt;
-          strain_increment[0][1] = 0.5 * (L[0][1] + L[1][0]) * dt;
-          if (prm.b_bar)
-            {
-              const double correction = 0.5 * (mean_volumetric - (L[0][0] + L[1][1])) * dt;
-              strain_increment[0][0] += correction;
-              strain_increment[1][1] += correction;
-            }
-          const double spin_xy = 0.5 * (L[0][1] - L[1][0]) * dt;
-
-          auto                          p = particle.get_properties();
-          dealii::SymmetricTensor<2, 3> stress;
-          stress[0][0]   = p[property::stress_xx];
-          stress[1][1]   = p[property::stress_yy];
-          stress[0][1]   = p[property::stress_xy];
-          stress[2][2]   = p[property::stress_zz];
-          double plastic = p[property::equivalent_plastic_strain];
-          materials[static_cast<unsigned int>(p[property::material_id])].update_stress(
-            stress, strain_increment, spin_xy, plastic);
-          p[property::stress_xx]                 = stress[0][0];
-          p[property::stress_yy]                 = stress[1][1];
-          p[property::stress_xy]                 = stress[0][1];
-          p[property::stress_zz]                 = stress[2][2];
-          p[property::equivalent_plastic_strain] = plastic;
-          p[property::volume] *= 1. + strain_increment[0][0] + strain_increment[1][1];
+          const dealii::Tensor<2, 2> &L = cell_gradients[k++];
+          auto                        p = particle.get_properties();
+          if (hencky != nullptr
+              && hencky->is_finite_strain(static_cast<unsigned int>(p[property::material_id])))
+            hencky->update(p, L, dt, prm.b_bar ? (mean_volumetric - (L[0][0] + L[1][1])) * dt : 0.);
+          else
+            update_small_strain(p, L, dt, mean_volumetric);
           if (follow_stretch)
             grid::stretch_domain(
               p[property::domain_half_x], p[property::domain_half_y], L, dt, max_half);
         }
+    }
+
+
+
+    void
+    SoilModel::update_small_strain(dealii::ArrayView<double>   p,
+                                   const dealii::Tensor<2, 2> &L,
+                                   const double                dt,
+                                   const double                mean_volumetric) const
+    {
+      dealii::SymmetricTensor<2, 3> strain_increment;
+      strain_increment[0][0] = L[0][0] * dt;
+      strain_increment[1][1] = L[1][1] * dt;
+      strain_increment[0][1] = 0.5 * (L[0][1] + L[1][0]) * dt;
+      if (prm.b_bar)
+        {
+          const double correction = 0.5 * (mean_volumetric - (L[0][0] + L[1][1])) * dt;
+          strain_increment[0][0] += correction;
+          strain_increment[1][1] += correction;
+        }
+      const double spin_xy = 0.5 * (L[0][1] - L[1][0]) * dt;
+
+      dealii::SymmetricTensor<2, 3> stress;
+      stress[0][0]   = p[property::stress_xx];
+      stress[1][1]   = p[property::stress_yy];
+      stress[0][1]   = p[property::stress_xy];
+      stress[2][2]   = p[property::stress_zz];
+      double plastic = p[property::equivalent_plastic_strain];
+      materials[static_cast<unsigned int>(p[property::material_id])].update_stress(stress,
+                                                                                   strain_increment,
+                                                                                   spin_xy,
+                                                                                   plastic);
+      p[property::stress_xx]                 = stress[0][0];
+      p[property::stress_yy]                 = stress[1][1];
+      p[property::stress_xy]                 = stress[0][1];
+      p[property::stress_zz]                 = stress[2][2];
+      p[property::equivalent_plastic_strain] = plastic;
+      p[property::volume] *= 1. + strain_increment[0][0] + strain_increment[1][1];
     }
 
 
@@ -127,6 +153,8 @@ namespace slidewave
       properties[property::material_id]       = m;
       properties[property::domain_half_x]     = 0.5 * hx / n;
       properties[property::domain_half_y]     = 0.5 * hy / n;
+      if (finite_strain)
+        finite_strain->initialize(properties);
     }
 
 
@@ -141,6 +169,8 @@ namespace slidewave
           p[property::stress_yy] = prm.uniform_stress[1];
           p[property::stress_xy] = prm.uniform_stress[2];
           p[property::stress_zz] = prm.uniform_stress[3];
+          if (finite_strain)
+            finite_strain->set_from_stress(p);
         }
     }
 
@@ -196,13 +226,15 @@ namespace slidewave
           const auto &material = prm.materials[static_cast<unsigned int>(p[property::material_id])];
           double      k0       = prm.lateral_stress_ratio;
           if (k0 < 0.)
-            k0 = material.model == materials::MaterialModel::drucker_prager ?
+            k0 = material.model != materials::MaterialModel::linear_elastic ?
                    1. - std::sin(material.friction_angle * M_PI / 180.) :
                    material.poisson_ratio / (1. - material.poisson_ratio);
           p[property::stress_yy] = sigma_v;
           p[property::stress_xx] = k0 * sigma_v;
           p[property::stress_zz] = k0 * sigma_v;
           p[property::stress_xy] = 0.;
+          if (finite_strain)
+            finite_strain->set_from_stress(p);
         }
     }
 
@@ -310,7 +342,14 @@ namespace slidewave
           const double mean = (sxx + syy + szz) / 3.;
           const double dev2 = (sxx - mean) * (sxx - mean) + (syy - mean) * (syy - mean)
                               + (szz - mean) * (szz - mean) + 2. * sxy * sxy;
-          sums[1] += p[property::volume]
+          // Hencky: the energy W(tau) per reference volume V_0 = V / J, tau = J sigma, so
+          // J times the same expression in sigma and V.
+          const double J = finite_strain
+                               && finite_strain->is_finite_strain(
+                                 static_cast<unsigned int>(p[property::material_id])) ?
+                             p[property::volume] / p[property::initial_volume] :
+                             1.;
+          sums[1] += J * p[property::volume]
                      * (0.5 * mean * mean / elastic.bulk_modulus()
                         + 0.25 * dev2 / elastic.shear_modulus());
           sums[2] += m

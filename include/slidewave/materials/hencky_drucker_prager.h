@@ -171,6 +171,16 @@ namespace slidewave
       dealii::SymmetricTensor<2, 3>
       kirchhoff_stress(const dealii::SymmetricTensor<2, 3> &elastic_left_cauchy_green) const;
 
+      /**
+       * The elastic left Cauchy–Green tensor whose Kirchhoff stress is
+       * @p kirchhoff_stress, the inverse of kirchhoff_stress(): the elastic
+       * logarithmic strain ε = tr(τ) / (9K) I + dev(τ) / (2G), and
+       * b^e = exp(2 ε) along the principal axes of τ. A point that starts with
+       * an initial stress starts with this b^e.
+       */
+      dealii::SymmetricTensor<2, 3>
+      elastic_left_cauchy_green(const dealii::SymmetricTensor<2, 3> &kirchhoff_stress) const;
+
       /** f(τ) = α_φ tr(τ) + sqrt(J2(τ)) - k_c [Pa] (Eq. 17). */
       double
       yield_function(const dealii::SymmetricTensor<2, 3> &kirchhoff_stress) const;

@@ -16,7 +16,10 @@ namespace slidewave
     enum class MaterialModel
     {
       linear_elastic,
-      drucker_prager
+      drucker_prager,
+      /** Finite strain: HenckyDruckerPrager on the points' elastic left Cauchy–Green
+       *  tensor (soil::FiniteStrainPoints), not Material::update_stress(). */
+      hencky_drucker_prager
     };
 
 
@@ -37,6 +40,14 @@ namespace slidewave
        * messages. */
       void
       parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
+
+      /**
+       * The material in a scene's checkpoint signature: "'name'", and " (finite strain)"
+       * for a finite-strain model, whose points carry more properties (a checkpoint of the
+       * other kind does not fit; the small-strain signatures are those from before).
+       */
+      std::string
+      signature() const;
 
       std::string   name            = "soil";
       MaterialModel model           = MaterialModel::drucker_prager;
@@ -96,6 +107,8 @@ namespace slidewave
        * 3. for the Drucker–Prager model, the return mapping of
        *    DruckerPrager, which adds to @p equivalent_plastic_strain.
        * A linear elastic material leaves @p equivalent_plastic_strain alone.
+       * Not for MaterialModel::hencky_drucker_prager, whose state is b^e, not a
+       * rate of stress (soil::FiniteStrainPoints updates its points).
        */
       void
       update_stress(dealii::SymmetricTensor<2, 3>       &stress,
@@ -109,6 +122,20 @@ namespace slidewave
        */
       double
       p_wave_modulus() const;
+
+      /** Whether the model is a finite-strain one (state b^e, no Jaumann rate). */
+      bool
+      is_finite_strain() const
+      {
+        return parameters.model == MaterialModel::hencky_drucker_prager;
+      }
+
+      /** The parameters the material was made from. */
+      const MaterialParameters &
+      material_parameters() const
+      {
+        return parameters;
+      }
 
       /** The mass density [kg/m^3]. */
       double

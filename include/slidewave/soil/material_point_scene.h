@@ -118,13 +118,22 @@ namespace slidewave
         none,
         bar_vibration,
         self_weight_column,
-        rigid_rotation
+        rigid_rotation,
+        homogeneous_deformation
       };
 
       /** Rigid rotation: the largest stress error against R sigma_0 R^T over |sigma_0|, and
        *  the largest distance [m] of a point from its rigidly rotated position. */
       std::array<double, 2>
       rotation_errors(double time) const;
+
+      /** Homogeneous deformation: the largest stress error of a point against the closed
+       *  form (hencky_homogeneous_state()) over |sigma_exact|; prints the exact state. */
+      double
+      homogeneous_deformation_error(double time) const;
+
+      /** The constant velocity gradient of 'homogeneous deformation' [1/s]. */
+      dealii::Tensor<2, 2> velocity_gradient;
 
       double           rotation_rate = 1.;
       dealii::Point<2> rotation_centre;

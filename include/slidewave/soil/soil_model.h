@@ -5,11 +5,13 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/particles/particle_handler.h>
 #include <functional>
+#include <optional>
 #include <slidewave/engine/particle_model_defaults.h>
 #include <slidewave/grid/shape_functions.h>
 #include <slidewave/materials/material.h>
 #include <slidewave/particles/point_cloud.h>
 #include <slidewave/particles/property_layout.h>
+#include <slidewave/soil/finite_strain_points.h>
 #include <slidewave/soil/material_point_parameters.h>
 #include <slidewave/soil/particle_properties.h>
 #include <string>
@@ -25,7 +27,8 @@ namespace slidewave
      * coupling when switched on), what they scatter to the grid (the internal force of
      * their stress, Eq. 16, gravity and the point force, Eq. 15), their constitutive
      * update (strain increment with the optional B-bar mean dilatation, the Jaumann rate,
-     * Eqs. 5–6, and the material's elastic or Drucker–Prager update, materials/), the
+     * Eqs. 5–6, and the material's elastic or Drucker–Prager update, materials/; or, for
+     * the finite-strain materials, the Hencky update of FiniteStrainPoints), the
      * P-wave speed of the time step (Eqs. 22–23), their initial state and initial stress
      * (geostatic with K0, uniform; the end of gravity loading), and the soil's
      * diagnostics (energies, integrals and runout, the guards' description of a bad
@@ -65,7 +68,8 @@ namespace slidewave
 
       explicit SoilModel(const MaterialPointParameters &parameters);
 
-      /** The points' properties: property::Index, then the point forces if on. */
+      /** The points' properties: property::Index, then the point forces if on, then b^e
+       *  (FiniteStrainPoints) if some material is a finite-strain one. */
       const particles::PropertyLayout &
       layout() const
       {
@@ -115,7 +119,9 @@ namespace slidewave
       /**
        * The stresses of the points of one cell from their velocity gradients @p L (in the
        * order of @p particles_in_cell): strain and spin increments, B-bar, the material's
-       * update with the Jaumann rate (Eqs. 5–6), the new volume, cpGIMP's domain.
+       * update with the Jaumann rate (Eqs. 5–6), the new volume, cpGIMP's domain; the
+       * points of finite-strain materials by FiniteStrainPoints::update() instead (the
+       * same B-bar mean, as F-bar).
        */
       void
       update_cell(const ParticleRange        &particles_in_cell,
@@ -212,11 +218,21 @@ namespace slidewave
       find_invalid_particle(const particles::PointCloud &cloud) const;
 
     private:
+      /** One small-strain point: strain increment (B-bar with the cell's mean
+       *  @p mean_volumetric of tr L), Jaumann rate, the material's update, the volume. */
+      void
+      update_small_strain(dealii::ArrayView<double>   p,
+                          const dealii::Tensor<2, 2> &L,
+                          double                      dt,
+                          double                      mean_volumetric) const;
+
       const MaterialPointParameters   &prm;
       std::vector<materials::Material> materials;
       particles::PropertyLayout        property_layout;
-      const dealii::Tensor<1, 2>       gravity;
-      const bool                       point_forces;
+      /** The finite-strain points' update and b^e; only when a material needs it. */
+      std::optional<FiniteStrainPoints> finite_strain;
+      const dealii::Tensor<1, 2>        gravity;
+      const bool                        point_forces;
       /** Cundall's local damping in force now. */
       double damping;
     };

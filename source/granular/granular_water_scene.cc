@@ -505,8 +505,11 @@ namespace slidewave
       out.precision(12);
       out << "granular water; grid " << fluid_parameters.lower_left << " to "
           << fluid_parameters.upper_right << ", cell size " << fluid_parameters.cell_size
-          << "; grains " << parameters.grain_density << "; materials "
-          << soil_parameters.materials.size();
+          << "; grains " << parameters.grain_density << "; drag "
+          << (parameters.forchheimer ? "Forchheimer" : "Darcy") << "; materials";
+      // (a material's model decides its points' properties: Hencky's carry b^e)
+      for (const auto &material : soil_parameters.materials)
+        out << " " << material.signature();
       return out.str();
     }
 

@@ -145,6 +145,14 @@ namespace slidewave
                     force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
               }
           }
+      lump_on_grains(force);
+    }
+
+
+
+    void
+    SkeletonFluidExchange::lump_on_grains(std::array<grid::NodalWorkspace::Vector, 2> &force) const
+    {
       // The node's own solid fraction 1 - n_I = S_I / A_I: the force is that on the node's
       // grains, so that a node the grains barely touch (a tiny mass) gets a tiny force and
       // an acceleration -grad p / rho^s like any other.
@@ -185,7 +193,7 @@ namespace slidewave
       std::vector<double>                          n(n_q), inverse_permeability(n_q), phi(n_q);
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
       for (unsigned int d = 0; d < 2; ++d)
-        force[d] = 0.;
+        force[d] = pressure_work[d] = 0.;
       if (water_drag != nullptr)
         *water_drag = 0.;
       // Semi-implicit: the drag on the grains' side is - C v_s of the new step, which the
@@ -217,9 +225,15 @@ namespace slidewave
                 const double C = n[q] * n[q] * fluid.viscosity(phi[q]) * inverse_permeability[q];
                 const dealii::Tensor<1, 2> traction
                   = C * (u[q] - explicit_drag * v_s[q]) * fv_grid.JxW(q);
+                // (the pressure's share, -integral N_I grad p, lumped on the grains below)
+                const dealii::Tensor<1, 2> pressure_traction = -grad_p[q] * fv_grid.JxW(q);
                 for (unsigned int i = 0; i < indices.size(); ++i)
                   for (unsigned int d = 0; d < 2; ++d)
-                    force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
+                    {
+                      force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
+                      pressure_work[d](indices[i])
+                        += pressure_traction[d] * fv_grid.shape_value(i, q);
+                    }
                 if (water_drag != nullptr)
                   for (unsigned int i = 0; i < indices.size(); ++i)
                     (*water_drag)(indices[i]) += C * fv_grid.JxW(q) * fv_grid.shape_value(i, q);
@@ -229,8 +243,8 @@ namespace slidewave
         force[d].compress(dealii::VectorOperation::add);
       if (water_drag != nullptr)
         water_drag->compress(dealii::VectorOperation::add);
-      // The pressure's force on the grains, lumped at the nodes (pressure_force()).
-      pressure_force(flow, fields, pressure_work);
+      // The pressure's force on the grains, lumped at the nodes (as pressure_force()).
+      lump_on_grains(pressure_work);
       for (unsigned int d = 0; d < 2; ++d)
         force[d] += pressure_work[d];
     }

@@ -97,6 +97,11 @@ namespace slidewave
                      const SkeletonFields                        &fields,
                      std::array<grid::NodalWorkspace::Vector, 2> &force) const;
 
+      /** Completes @p force (integrals of N_I grad p, compressed here) and scales each
+       *  owned node's by its solid fraction 1 - n_I: the force on its grains. */
+      void
+      lump_on_grains(std::array<grid::NodalWorkspace::Vector, 2> &force) const;
+
       const grid::BackgroundGrid         &grid;
       const fluid::FreeSurfaceParameters &parameters;
       /** The nodal workspace's vectors of to_fluid() (kept between steps). */

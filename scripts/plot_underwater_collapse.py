@@ -2,11 +2,11 @@
 """Figures of the underwater granular collapse (paper 002, §4.2; prm/underwater-collapse-*.prm).
 
   scripts/plot_underwater_collapse.py LOOSE_DIR DENSE_DIR --out doc/figures/granular-underwater-collapse.png
-      [--times 0.25 1 2]
+      [--times 0.25 1 2] [--labels loose dense] [--xlim 0 0.2] [--ylim 0 0.1] [--vmax 0.05]
 
-LOOSE_DIR and DENSE_DIR are the two scenes' output directories. Top rows: the grains (points
-coloured by their speed) and the water surface (the phase field's 0.5 contour) of each scene
-at the given times. Bottom: the front of the granular mass (its rightmost point) and its
+Each DIR is a granular-water scene's output directory (one or more: the half-submerged
+column's figure has one). Top rows: the grains (points coloured by their speed) and the
+water surface (the phase field's 0.5 contour) of each scene at the given times. Bottom: the front of the granular mass (its rightmost point) and its
 height (its highest point) over time, from statistics.csv. Needs numpy and matplotlib."""
 import argparse
 import csv
@@ -44,17 +44,22 @@ def record_at(directory, time):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("loose")
-    parser.add_argument("dense")
+    parser.add_argument("dirs", nargs="+")
     parser.add_argument("--out", required=True)
     parser.add_argument("--times", type=float, nargs="+", default=[0.25, 1.0, 2.0])
+    parser.add_argument("--labels", nargs="+",
+                        default=["loose (n0 = 0.45, psi = 0)", "dense (n0 = 0.40, psi = 5 deg)"])
+    parser.add_argument("--xlim", type=float, nargs=2, default=[0, 0.2])
+    parser.add_argument("--ylim", type=float, nargs=2, default=[0, 0.1])
+    parser.add_argument("--vmax", type=float, default=0.05, help="top of the speed colour scale [m/s]")
     args = parser.parse_args()
 
-    cases = [("loose (n0 = 0.45, psi = 0)", args.loose), ("dense (n0 = 0.40, psi = 5 deg)", args.dense)]
+    cases = list(zip(args.labels, args.dirs))
     n_times = len(args.times)
-    fig = plt.figure(figsize=(4.2 * n_times, 7.5))
-    grid = fig.add_gridspec(3, n_times, height_ratios=[1, 1, 1.3])
-    speed_max = 0.05
+    n_rows = len(cases)
+    fig = plt.figure(figsize=(4.2 * n_times, 3.2 * n_rows + 3))
+    grid = fig.add_gridspec(n_rows + 1, n_times, height_ratios=[1] * n_rows + [1.3])
+    speed_max = args.vmax
     for row, (label, directory) in enumerate(cases):
         for col, wanted in enumerate(args.times):
             ax = fig.add_subplot(grid[row, col])
@@ -65,16 +70,16 @@ def main():
             _, segments = read_surface(os.path.join(directory, "free_surface", "surface_%05d.csv" % index))
             for x0, y0, x1, y1 in segments:
                 ax.plot([x0, x1], [y0, y1], color="tab:blue", lw=1)
-            ax.set_xlim(0, 0.2)
-            ax.set_ylim(0, 0.1)
+            ax.set_xlim(*args.xlim)
+            ax.set_ylim(*args.ylim)
             ax.set_aspect("equal")
             ax.set_title("%s, t = %.2f s" % (label.split(" ")[0], time), fontsize=9)
             if col == 0:
                 ax.set_ylabel("y [m]")
     fig.colorbar(scatter, ax=fig.axes, shrink=0.5, label="grain speed [m/s]")
-    ax_front = fig.add_subplot(grid[2, : max(1, n_times // 2)])
-    ax_top = fig.add_subplot(grid[2, max(1, n_times // 2):])
-    for (label, directory), style in zip(cases, ("-", "--")):
+    ax_front = fig.add_subplot(grid[n_rows, : max(1, n_times // 2)])
+    ax_top = fig.add_subplot(grid[n_rows, max(1, n_times // 2):])
+    for (label, directory), style in zip(cases, ("-", "--", ":", "-.")):
         s = statistics(directory)
         ax_front.plot(s["time"], s["skeleton_front"] * 100, style, label=label)
         ax_top.plot(s["time"], s["skeleton_top"] * 100, style, label=label)

@@ -85,11 +85,15 @@ namespace slidewave
       std::vector<std::pair<dealii::Point<2>, dealii::Point<2>>> boxes;
       bool                                                       all_boxed = true;
       if (expected_regions != nullptr)
-        for (const auto &region : *expected_regions)
-          if (region.polygon.empty())
-            all_boxed = false;
-          else
-            boxes.push_back(region.bounding_box());
+        {
+          for (const auto &region : *expected_regions)
+            {
+              if (region.polygon.empty())
+                all_boxed = false;
+              else
+                boxes.push_back(region.bounding_box());
+            }
+        }
       for (const auto &cell : grid.triangulation().active_cell_iterators())
         {
           if (!cell->is_locally_owned())

@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 #include <slidewave/core/input_error.h>
+#include <slidewave/materials/drucker_prager.h>
 #include <slidewave/materials/material.h>
 
 namespace slidewave
@@ -61,9 +62,12 @@ namespace slidewave
                         "0",
                         Double(),
                         "Dilatancy angle psi [degrees] of the plastic potential, "
-                        "in [0, friction angle]: 0 gives plastic flow without "
+                        "at most the friction angle: 0 gives plastic flow without "
                         "volume change, the friction angle gives associated "
-                        "flow.");
+                        "flow. 'drucker prager' also takes a negative angle down to "
+                        "minus the friction angle (compaction under shear: a loose "
+                        "soil), as long as G + 9 K alpha_phi alpha_psi > 0.1 G; "
+                        "'hencky drucker prager' takes [0, friction angle].");
       prm.declare_entry("Tension cutoff",
                         "0",
                         Double(),
@@ -104,12 +108,27 @@ namespace slidewave
                          "a number in (-1, 0.5), where the bulk and shear moduli "
                          "are positive and finite");
       require_in_range(path + "/Friction angle", friction_angle, 0., true, 90., false);
-      if (!(dilatancy_angle >= 0. && dilatancy_angle <= friction_angle))
+      // Small-strain Drucker-Prager takes a negative dilatancy (compaction under shear, a
+      // loose soil) as long as its return stays well posed: G + 9 K alpha_phi alpha_psi > 0
+      // (DruckerPrager::return_to_yield_surface divides by it).
+      const bool   small_strain = model == MaterialModel::drucker_prager;
+      const double lowest       = small_strain ? -friction_angle : 0.;
+      const double K            = youngs_modulus / (3. * (1. - 2. * poisson_ratio));
+      const double G            = youngs_modulus / (2. * (1. + poisson_ratio));
+      const bool   well_posed   = G
+                                + 9. * K * DruckerPrager::plane_strain_coefficient(friction_angle)
+                                    * DruckerPrager::plane_strain_coefficient(dilatancy_angle)
+                              > 0.1 * G;
+      if (!(dilatancy_angle >= lowest && dilatancy_angle <= friction_angle) || !well_posed)
         throw InputError(path + "/Dilatancy angle",
                          to_string(dilatancy_angle),
-                         "a number in [0, " + to_string(friction_angle)
-                           + "]: the dilatancy angle may not exceed the "
-                             "friction angle");
+                         small_strain ?
+                           "a number in [-" + to_string(friction_angle) + ", "
+                             + to_string(friction_angle)
+                             + "] (at most the friction angle; negative: compaction under "
+                               "shear) with G + 9 K alpha_phi alpha_psi > 0.1 G" :
+                           "a number in [0, " + to_string(friction_angle)
+                             + "]: the dilatancy angle may not exceed the friction angle");
       require_non_negative(path + "/Cohesion", cohesion);
       require_non_negative(path + "/Tension cutoff", tension_cutoff);
       if (model == MaterialModel::hencky_drucker_prager && tension_cutoff != 0.)

@@ -279,6 +279,27 @@ main()
           "plastic volume change follows the potential g within 1e-10");
   }
 
+  std::printf("\n* Non-associated flow with psi = -10: compaction under shear\n");
+  {
+    // A loose soil's potential: the plastic volume change is negative (tension positive),
+    // with the same ratio to the deviatoric part as for psi = +10, and the return stays on
+    // the cone (G + 9 K alpha_phi alpha_psi > 0).
+    const DruckerPrager     compacting(E, nu, phi, c, -10., 1e6);
+    SymmetricTensor<2, 3>   returned;
+    const PlasticCorrection correction = return_and_print(compacting, trial, returned);
+    check(correction.region == ReturnRegion::cone, "region is the cone");
+    check(on_yield_surface(compacting, returned), "f(sigma) after return = 0 within 1e-9 relative");
+    const double ratio = dealii::trace(correction.plastic_strain_increment)
+                         / norm(dealii::deviator(correction.plastic_strain_increment));
+    std::printf("tr(deps_p) / |dev(deps_p)| = %.9f  3 sqrt(2) alpha_psi = %.9f\n",
+                ratio,
+                3. * std::sqrt(2.) * compacting.alpha_psi());
+    check(ratio < 0. && std::abs(ratio - 3. * std::sqrt(2.) * compacting.alpha_psi()) < 1e-10,
+          "plastic volume decreases, following the potential g within 1e-10");
+    check(mean_stress(returned) > mean_stress(trial),
+          "the compaction relaxes the mean compression (p rises toward tension)");
+  }
+
   std::printf("\n* Apex: strongly tensile trial stress, cutoff above the apex\n");
   for (const double psi : {30., 0.})
     {

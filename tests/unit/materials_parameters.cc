@@ -93,7 +93,10 @@ main()
   try_values({{"Name", "clay"}, {"Friction angle", "95"}}, false);
   try_values({{"Name", "clay"}, {"Friction angle", "-5"}}, false);
   try_values({{"Name", "clay"}, {"Friction angle", "25"}, {"Dilatancy angle", "30"}}, false);
-  try_values({{"Name", "clay"}, {"Dilatancy angle", "-1"}}, false);
+  try_values({{"Name", "clay"}, {"Dilatancy angle", "-10"}}, true);
+  try_values({{"Name", "clay"}, {"Dilatancy angle", "-31"}}, false);
+  try_values({{"Name", "clay"}, {"Model", "hencky drucker prager"}, {"Dilatancy angle", "-1"}},
+             false);
   try_values({{"Name", "clay"}, {"Cohesion", "-10"}}, false);
   try_values({{"Name", "clay"}, {"Tension cutoff", "-1"}}, false);
   try_values({{"Name", "  "}}, false);

@@ -29,23 +29,26 @@ namespace slidewave
      *   S_I, drag D_I; PorousSkeletonModel) the fluid fraction n_I = 1 - S_I / A_I (at
      *   least 0.01), the inverse permeability 1/kappa_I = D_I / (A_I n_I^2 mu^w), so that
      *   the water's drag n^2 mu / kappa is the points' drag where the pores hold water,
-     *   and the solid velocity v_I = momentum / mass (zero on empty nodes, the skeleton's
-     *   sides and walls held);
+     *   and the solid's flux (1 - n_I) v_I (zero on empty nodes, the skeleton's sides and
+     *   walls held): a flux, not a velocity, so that a node the grains barely touch, whose
+     *   velocity GIMP's gradients may make arbitrary on its tiny mass, hands over a tiny
+     *   flux. v_I is momentum / mass (explicit coupling) or the predicted v*_I =
+     *   (momentum + dt (f_I + f^p_I)) / m_I with the old pressure's force (semi-implicit);
      * - to the skeleton: the force of the water on the grains at each node,
      *
-     *     f_I = integral of ( -(1 - n) grad p + C (u - v_s) ) N_I,   C = n^2 mu(phi) / kappa,
+     *     f_I = -(1 - n_I) integral of grad p N_I + integral of C (u - v_s) N_I,
+     *     C = n^2 mu(phi) / kappa,
      *
      *   with the water's new pressure and velocity and the same fields and quadrature as
-     *   the water's own -n grad p and -C (u - v_s) (NavierStokesSystem), so that the two
-     *   phases exchange equal and opposite drag and their pressure forces add up to the
-     *   mixture's -grad p. Explicit coupling: the drag is explicit in the solid's velocity
-     *   (stable for steps below 2 rho^s (1 - n) / C, and the pore pressure's volumetric
-     *   damping below about rho^s (1 - n) k / mu). Semi-implicit coupling (the default):
-     *   the water gets the skeleton's predicted velocity v* = v^n + dt f / m and
-     *   eliminates the skeleton's momentum (fluid::PorousMedium); the skeleton gets
-     *   f_I = integral of ( -(1 - n) grad p + C u ) N_I and the nodal drag
-     *   W_I = integral of C N_I, which its nodes take implicitly, so that the drag it feels
-     *   is C (u - v) with its own velocity of the new step.
+     *   the water's own -n grad p and -C (u - v_s) (NavierStokesSystem): the drag equal
+     *   and opposite, the pressure's force lumped on the node's grains (1 - n_I), so that
+     *   its acceleration is -grad p / rho^s however little mass the node has. Explicit
+     *   coupling: the drag is explicit in the solid's velocity (stable for steps below
+     *   about rho^s (1 - n) k / mu). Semi-implicit coupling (the default): the water
+     *   eliminates the skeleton's momentum (fluid::PorousMedium); the skeleton gets the
+     *   force without - C v_s and the nodal drag W_I = integral of C N_I, which its nodes
+     *   take implicitly, so that the drag it feels is C (u - v) with its own velocity of
+     *   the new step.
      */
     class SkeletonFluidExchange
     {

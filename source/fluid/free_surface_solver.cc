@@ -229,7 +229,10 @@ namespace slidewave
     double
     FreeSurfaceSolver::initial_density(const dealii::Point<2> &point) const
     {
-      return parameters.fluid.density(InitialPhase(parameters).value(point));
+      // (the initial phase field's function, made once: a run asks at every point)
+      if (!initial_phase)
+        initial_phase = std::make_unique<InitialPhase>(parameters);
+      return parameters.fluid.density(initial_phase->value(point));
     }
 
 

@@ -1,6 +1,7 @@
 #ifndef slidewave_fluid_free_surface_solver_h
 #define slidewave_fluid_free_surface_solver_h
 
+#include <deal.II/base/function.h>
 #include <deal.II/fe/fe_system.h>
 #include <memory>
 #include <slidewave/fluid/free_surface_parameters.h>
@@ -175,6 +176,9 @@ namespace slidewave
       PhaseFieldSystem             phase_system;
       /** The initial pressure hydrostatic (start_hydrostatic()). */
       bool hydrostatic_start = false;
+      /** phi of the initial water as a function (initial_density(), made at its first
+       *  call). */
+      mutable std::unique_ptr<dealii::Function<2>> initial_phase;
       /** The fixed porous structure's fields (only with 'Porous structure/Porosity'). */
       std::unique_ptr<grid::FiniteElementField> fluid_fraction, inverse_permeability;
       /** The moving solid's flux (1 - n) v_s (enable_moving_solid()). */

@@ -2,7 +2,8 @@
 """Work-precision of the depth-averaged material points on every exact solution they have.
 
 Error against wall time, for each numerical option varied one at a time from the defaults
-(issue 28: GIMP, 'Depth update = projection', 4 x 4 columns per cell, PIC), on five exact
+(issue 28: GIMP, 'Depth update = projection', 4 x 4 columns per cell, FLIP fraction 0.8,
+'Split stretch = 1.5'; until the columns were split, PIC without splitting), on five exact
 problems:
 
 * ``rigid``: the rigid translation of ``tests/depth_averaged/rigid_translation_q1_strain.prm``
@@ -25,23 +26,24 @@ The front is where the nodal depth first exceeds 1 % of the release depth, again
 same point of the exact solution, in per cent of the exact distance travelled (the line
 "Front (the last node deeper than 1 % ...)" of the program).
 
-Lines (``--lines``), named shape-transfer-update-N:
+Lines (``--lines``), named shape-transfer-update-N[-sX]:
 
-====================  ===============  =============  ============  ==========
-line                  Shape functions  FLIP fraction  Depth update  points/dir
-====================  ===============  =============  ============  ==========
-gimp-pic-proj-4       gimp             0 (PIC)        projection    4  (the defaults)
-q1-pic-proj-4         q1               0              projection    4
-cpgimp-pic-proj-4     cpgimp           0              projection    4
-gimp-pic-strain-4     gimp             0              strain        4
-gimp-flip-proj-4      gimp             1 (FLIP)       projection    4
-gimp-pic-proj-2       gimp             0              projection    2
-gimp-pic-proj-8       gimp             0              projection    8
-gimp-flip-proj-8      gimp             1              projection    8
-q1-pic-strain-2       q1               0              strain        2  (paper 001, old defaults)
-====================  ===============  =============  ============  ==========
+==========================  ===============  =============  ============  ==========  =============
+line                        Shape functions  FLIP fraction  Depth update  points/dir  Split stretch
+==========================  ===============  =============  ============  ==========  =============
+gimp-flip80-proj-4-s1.5     gimp             0.8            projection    4           1.5 (the defaults)
+gimp-flip80-proj-4-s0       gimp             0.8            projection    4           0 (no splitting)
+gimp-pic-proj-4-s1.5        gimp             0 (PIC)        projection    4           1.5
+gimp-flip80-proj-4-s2       gimp             0.8            projection    4           2
+q1-flip80-proj-4-s1.5       q1               0.8            projection    4           1.5
+gimp-flip80-strain-4-s1.5   gimp             0.8            strain        4           1.5
+gimp-flip80-proj-2-s1.5     gimp             0.8            projection    2           1.5
+gimp-pic-proj-4-s0          gimp             0              projection    4           0 (the defaults before splitting)
+q1-pic-strain-2-s0          q1               0              strain        2           0 (paper 001)
+==========================  ===============  =============  ============  ==========  =============
 
-(``flipNN`` is a FLIP fraction 0.NN, e.g. gimp-flip95-proj-8.)
+(``flipNN`` is a FLIP fraction 0.NN, ``pic`` 0, ``flip`` 1; without ``-sX`` the program's
+default split stretch.)
 
 Measurements: the error lines the program prints at the end; ``advance[s]``: the
 'depth averaged: advance' row of the timer table (the time loop's steps; start-up, the
@@ -66,7 +68,7 @@ Usage:
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py               # ~40 minutes
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --quick       # ~4 minutes
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --problems Ritter,slope \\
-        --lines gimp-pic-proj-4,gimp-flip95-proj-8 --repeat 1
+        --lines gimp-flip80-proj-4-s1.5,gimp-pic-proj-4-s0 --repeat 1
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --plot-only
 """
 
@@ -109,10 +111,12 @@ FRONT_PROBLEMS = ["Ritter", "slope"]
 SHAPES = ["q1", "gimp", "cpgimp"]
 UPDATES = {"strain": "strain", "proj": "projection"}
 
-DEFAULT_LINES = ["gimp-pic-proj-4", "q1-pic-proj-4", "cpgimp-pic-proj-4", "gimp-pic-strain-4",
-                 "gimp-flip-proj-4", "gimp-pic-proj-2", "gimp-pic-proj-8", "gimp-flip-proj-8",
-                 "q1-pic-strain-2"]
-QUICK_LINES = ["gimp-pic-proj-4", "q1-pic-strain-2"]
+DEFAULTS = "gimp-flip80-proj-4-s1.5"
+PAPER_001 = "q1-pic-strain-2-s0"
+DEFAULT_LINES = [DEFAULTS, "gimp-flip80-proj-4-s0", "gimp-pic-proj-4-s1.5", "gimp-flip80-proj-4-s2",
+                 "q1-flip80-proj-4-s1.5", "gimp-flip80-strain-4-s1.5", "gimp-flip80-proj-2-s1.5",
+                 "gimp-pic-proj-4-s0", PAPER_001]
+QUICK_LINES = [DEFAULTS, PAPER_001]
 
 _RIGID_RE = re.compile(r"Rigid translation at t = [0-9.eE+-]+ s: relative L1 error of the "
                        r"columns' depth = ([0-9.eE+-]+|nan|inf)")
@@ -140,9 +144,16 @@ CSV_COLUMNS = ["problem", "line", "shape", "flip_fraction", "depth_update",
                "status"]
 
 
+def split_of(name):
+    """The 'Split stretch' of a line name ending in -sX (e.g. gimp-pic-proj-4-s2), or None
+    (the program's default) without that ending."""
+    parts = name.split("-")
+    return float(parts[4][1:]) if len(parts) == 5 else None
+
+
 def parse_line(name):
     """(shape, FLIP fraction, depth update, points per direction) of a line name."""
-    shape, transfer, update, ppd = name.split("-")
+    shape, transfer, update, ppd = name.split("-")[:4]
     if shape not in SHAPES:
         raise ValueError(shape)
     if transfer == "pic":
@@ -171,6 +182,8 @@ def settings_for(problem, line, cell_size):
         "Depth averaged/Release/Particles per direction": ppd,
         "Depth averaged/Verification/Tolerance": 0,
     }
+    if split_of(line) is not None:
+        s["Depth averaged/Split stretch"] = repr(split_of(line))
     width = float(f"{4 * cell_size:.12g}")
     if problem in ("Stoker", "Ritter"):
         s["Time/End time"] = "4.0"
@@ -332,10 +345,17 @@ def line_style(line):
     """Colour by the option that differs from the defaults, dashes for FLIP, marker by
     columns per cell."""
     shape, flip, update, ppd = parse_line(line)
-    if line == "gimp-pic-proj-4":
+    split = split_of(line)
+    if line == DEFAULTS:
         colour = "black"
-    elif line == "q1-pic-strain-2":
+    elif line == PAPER_001:
         colour = "tab:red"
+    elif line == "gimp-pic-proj-4-s0":
+        colour = "tab:gray"
+    elif split == 0:
+        colour = "tab:brown"
+    elif split is not None and split != 1.5:
+        colour = "tab:pink"
     elif shape == "q1":
         colour = "tab:orange"
     elif shape == "cpgimp":
@@ -392,7 +412,7 @@ def plot(rows, path):
                 y = [r["front_error_percent"] for r in group]
                 handles[line], = ax.semilogx(x, y, color=colour, ls=style, marker=marker,
                                              ms=5, lw=1.4, label=line)
-            if line == "gimp-pic-proj-4":
+            if line == DEFAULTS:
                 for xi, yi, r in zip(x, y, group):
                     ax.annotate(f"{r['cell_size']:g}", (xi, yi), textcoords="offset points",
                                 xytext=(-4, 6), fontsize=7, color=colour)
@@ -472,8 +492,8 @@ def main(argv=None):
         try:
             parse_line(line)
         except (KeyError, ValueError):
-            sys.exit(f"bad line name '{line}' (shape-pic|flip|flipNN-strain|proj-N, e.g. "
-                     "gimp-pic-proj-4)")
+            sys.exit(f"bad line name '{line}' (shape-pic|flip|flipNN-strain|proj-N[-sX], e.g. "
+                     "gimp-flip80-proj-4-s1.5)")
     problems = [q.strip() for q in args.problems.split(",") if q.strip()]
     for q in problems:
         if q not in PROBLEMS:

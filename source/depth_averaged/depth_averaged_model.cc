@@ -30,6 +30,15 @@ namespace slidewave
       , atmospheric_pressure(parameters.atmospheric_pressure)
       , project_depth(parameters.depth_update == DepthUpdate::projection)
       , bed_normal(parameters.slope_correction == SlopeCorrection::bed_normal)
+      , split_width(dealii::Tensor<1, 2>(
+          {parameters.split_stretch * parameters.cell_size / parameters.particles_per_direction,
+           parameters.split_stretch * parameters.cell_size / parameters.particles_per_direction}))
+      , lower_corner(parameters.lower_left)
+      , upper_corner(parameters.upper_right)
+      , closed_side({parameters.sides[0] != grid::GridBoundary::free,
+                     parameters.sides[1] != grid::GridBoundary::free,
+                     parameters.sides[2] != grid::GridBoundary::free,
+                     parameters.sides[3] != grid::GridBoundary::free})
     {
       property_layout.add_scalar("mass");
       property_layout.add_scalar("volume");
@@ -45,6 +54,8 @@ namespace slidewave
       property_layout.add_scalar("initial_y");
       property_layout.add_scalar("domain_half_x");
       property_layout.add_scalar("domain_half_y");
+      property_layout.add_scalar("width_x");
+      property_layout.add_scalar("width_y");
     }
 
 
@@ -79,6 +90,9 @@ namespace slidewave
           p[property::stress_xx] = sigma.xx;
           p[property::stress_yy] = sigma.yy;
           p[property::stress_xy] = sigma.xy;
+          // The column's widths follow the stretch along x and y (for splitting).
+          p[property::width_x] *= 1. + L[0][0] * dt;
+          p[property::width_y] *= 1. + L[1][1] * dt;
           if (follow_stretch)
             grid::stretch_domain(
               p[property::domain_half_x], p[property::domain_half_y], L, dt, max_half);
@@ -117,6 +131,8 @@ namespace slidewave
       properties[property::initial_y]     = position[1];
       properties[property::domain_half_x] = 0.5 * hx / n;
       properties[property::domain_half_y] = 0.5 * hy / n;
+      properties[property::width_x]       = hx / n;
+      properties[property::width_y]       = hy / n;
       return true;
     }
 

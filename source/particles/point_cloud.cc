@@ -2,6 +2,7 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/mapping_cartesian.h>
+#include <limits>
 #include <slidewave/particles/point_cloud.h>
 #include <sstream>
 
@@ -301,6 +302,54 @@ namespace slidewave
       for (auto moving = moving_particles.rbegin(); moving != moving_particles.rend(); ++moving)
         handler.remove_particle(moving->particle);
       handler.update_cached_numbers();
+    }
+
+
+
+    std::vector<unsigned int>
+    PointCloud::add_points(const std::vector<NewPoint> &new_points,
+                           const std::vector<double>   &values)
+    {
+      std::vector<unsigned int> local_indices;
+      if (dealii::Utilities::MPI::sum(static_cast<unsigned int>(new_points.size()), MPI_COMM_WORLD)
+          == 0)
+        return local_indices;
+      // The identifiers: after the largest one in use, in the order of the parents'
+      // identifiers over all ranks (the same on any number of ranks).
+      dealii::types::particle_index largest = 0;
+      for (const auto &particle : handler)
+        largest = std::max(largest, particle.get_id());
+      largest = dealii::Utilities::MPI::max(largest, MPI_COMM_WORLD);
+      std::vector<dealii::types::particle_index> parents;
+      parents.reserve(new_points.size());
+      for (const NewPoint &point : new_points)
+        parents.push_back(point.parent_id);
+      std::vector<dealii::types::particle_index> all_parents;
+      for (const auto &rank_parents : dealii::Utilities::MPI::all_gather(MPI_COMM_WORLD, parents))
+        all_parents.insert(all_parents.end(), rank_parents.begin(), rank_parents.end());
+      std::sort(all_parents.begin(), all_parents.end());
+      AssertThrow(static_cast<double>(largest) + all_parents.size() < static_cast<double>(
+                    std::numeric_limits<dealii::types::particle_index>::max()),
+                  dealii::ExcMessage("The points' identifiers are exhausted."));
+
+      const unsigned int n_properties = handler.n_properties_per_particle();
+      local_indices.reserve(new_points.size());
+      for (unsigned int k = 0; k < new_points.size(); ++k)
+        {
+          const NewPoint &point = new_points[k];
+          const auto      place
+            = std::lower_bound(all_parents.begin(), all_parents.end(), point.parent_id)
+              - all_parents.begin();
+          const auto inserted = handler.insert_particle(
+            point.location,
+            point.reference,
+            largest + 1 + place,
+            point.cell,
+            dealii::ArrayView<const double>(values.data() + k * n_properties, n_properties));
+          local_indices.push_back(inserted->get_local_index());
+        }
+      handler.update_cached_numbers();
+      return local_indices;
     }
 
 

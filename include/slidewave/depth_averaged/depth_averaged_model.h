@@ -1,6 +1,7 @@
 #ifndef slidewave_depth_averaged_depth_averaged_model_h
 #define slidewave_depth_averaged_depth_averaged_model_h
 
+#include <array>
 #include <cmath>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -40,6 +41,8 @@ namespace slidewave
         initial_y,
         domain_half_x, ///< GIMP: half-lengths of the point's domain [m]
         domain_half_y,
+        width_x, ///< the column's width along x and y, following its stretch [m]
+        width_y,
         n_properties
       };
     } // namespace property
@@ -74,6 +77,8 @@ namespace slidewave
       static constexpr unsigned int domain_half_x = property::domain_half_x;
       static constexpr unsigned int domain_half_y = property::domain_half_y;
       static constexpr unsigned int depth         = property::depth;
+      /** Columns on nodes that friction holds are at rest, with FLIP too. */
+      static constexpr bool rests_with_its_nodes = true;
       /**
        * The model's nodal fields: the basal resistance (the largest force Voellmy's
        * friction can exert at the node [N], applied in the grid update) and, with 'Depth
@@ -289,6 +294,85 @@ namespace slidewave
                   const dealii::Tensor<2, 2> *L,
                   double                      dt) const;
 
+      /** Every step: the walls and the splitting (finish_point). */
+      bool
+      finishes_points() const
+      {
+        return true;
+      }
+
+      /**
+       * The end of a column's step (the engine's hook, before the columns move to their
+       * cells): keep_inside(), then split_point() when 'Split stretch' > 0.
+       */
+      template <typename Properties>
+      bool
+      finish_point(Properties       &p,
+                   dealii::Point<2> &x,
+                   double           *child,
+                   dealii::Point<2> &child_x) const
+      {
+        keep_inside(x);
+        return split_width[0] > 0. && split_point(p, x, child, child_x);
+      }
+
+      /**
+       * A column's centre stops at a side that is not open. With GIMP a column whose
+       * domain touches a wall still takes the velocity of the nodes inside, which may carry
+       * its centre past the wall in one step (most easily with FLIP, which keeps the
+       * columns' own velocities); the wall's normal velocity is zero, so the centre stays
+       * on it.
+       */
+      void
+      keep_inside(dealii::Point<2> &x) const
+      {
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            if (closed_side[2 * d] && x[d] < lower_corner[d])
+              x[d] = lower_corner[d];
+            if (closed_side[2 * d + 1] && x[d] > upper_corner[d])
+              x[d] = upper_corner[d];
+          }
+      }
+
+      template <typename Properties>
+      bool
+      split_point(Properties       &p,
+                  dealii::Point<2> &x,
+                  double           *child,
+                  dealii::Point<2> &child_x) const
+      {
+        const double       wx = p[property::width_x], wy = p[property::width_y];
+        const unsigned int d     = wx / split_width[0] >= wy / split_width[1] ? 0 : 1;
+        const double       width = d == 0 ? wx : wy;
+        if (width <= split_width[d])
+          return false;
+        // The halves, and their shape functions' domains, stay inside the grid.
+        const unsigned int w     = d == 0 ? property::width_x : property::width_y;
+        const unsigned int half  = d == 0 ? property::domain_half_x : property::domain_half_y;
+        const double       shift = 0.25 * width;
+        const double       reach = shift + std::max(shift, p[half]);
+        if (x[d] - reach < lower_corner[d] || x[d] + reach > upper_corner[d])
+          return false;
+        child_x = x;
+        x[d] -= shift;
+        child_x[d] += shift;
+        for (const unsigned int k : {static_cast<unsigned int>(property::mass),
+                                     static_cast<unsigned int>(property::volume),
+                                     w})
+          {
+            p[k] *= 0.5;
+            child[k] = p[k];
+          }
+        // 'cpgimp': the domain is half the column's width, at most half a cell.
+        if (prm.shape_function == grid::ShapeFunction::cpgimp)
+          {
+            p[half]     = std::min(p[half], 0.25 * width);
+            child[half] = p[half];
+          }
+        return true;
+      }
+
       /** sqrt(g h_p), the speed of gravity waves in the column. */
       template <typename Properties>
       double
@@ -387,6 +471,12 @@ namespace slidewave
       const bool project_depth;
       /** 'Slope correction = bed normal'. */
       const bool bed_normal;
+      /** 'Split stretch' times the columns' initial width along x and y (0: no
+       *  splitting), and the grid's corners. */
+      const dealii::Tensor<1, 2> split_width;
+      const dealii::Point<2>     lower_corner, upper_corner;
+      /** Left, right, bottom, top: not 'open' (a column may not cross it). */
+      const std::array<bool, 4> closed_side;
     };
   } // namespace depth_averaged
 } // namespace slidewave

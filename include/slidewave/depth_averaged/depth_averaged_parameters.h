@@ -128,7 +128,9 @@ namespace slidewave
       DepthUpdate         depth_update   = DepthUpdate::projection;
       grid::ShapeFunction shape_function = grid::ShapeFunction::gimp;
       /** 0: PIC (Eq. 33), 1: FLIP (Eq. 34), between: a blend. */
-      double flip_fraction = 0.;
+      double flip_fraction = 0.8;
+      /** A column wider than this many times its initial width splits (0: never). */
+      double split_stretch = 1.5;
       /** C of Eq. 22, with the wave speed |v| + sqrt(g h). */
       double courant_number  = 0.5;
       double fixed_time_step = 0.;

@@ -232,11 +232,17 @@ namespace slidewave
       void
       start_part(const char *name);
 
+      /** The model's last look at the points at their new positions, before they are
+       *  relocated (Model::finish_point), and the points it splits (collective). */
+      void
+      finish_points();
+
       /** Puts the points at their new positions in their cells (collective). */
       void
       relocate();
 
       grid::BackgroundGrid     &grid;
+      const Model              &model;
       const Settings            settings;
       particles::PointCloud     cloud;
       grid::NodalWorkspace      nodes;
@@ -248,6 +254,9 @@ namespace slidewave
       unsigned int         n_steps = 0, n_full_sorts = 0;
       dealii::TimerOutput *timer    = nullptr;
       core::StepTimeline  *timeline = nullptr;
+      /** Scratch of finish_points(): the new points and their properties. */
+      std::vector<particles::PointCloud::NewPoint> new_points;
+      std::vector<double>                          new_point_values;
       /** The timer section of the part of the step under way. */
       std::optional<dealii::TimerOutput::Scope> part;
     };

@@ -20,6 +20,7 @@ namespace slidewave
                                           const std::vector<grid::RigidWall>      &walls,
                                           const Settings                          &settings)
       : grid(grid)
+      , model(model)
       , settings(settings)
       , cloud(grid, model.layout(), Model::mass, sides, settings.particle_weight)
       , nodes(grid,
@@ -192,10 +193,52 @@ namespace slidewave
           kernels.update_stresses(dt);
           lap(core::StepTimeline::musl_remap);
         }
+      if (model.finishes_points())
+        {
+          start_part("finish particles");
+          finish_points();
+        }
       start_part("sort particles");
       relocate();
       part.reset();
       current_time += dt;
+    }
+
+
+
+    template <class Model>
+    void
+    ParticleEngine<Model>::finish_points()
+    {
+      std::vector<dealii::Point<2>> &positions    = kernels.new_positions();
+      const unsigned int             n_properties = cloud.particles().n_properties_per_particle();
+      std::vector<dealii::Point<2>>  child_positions;
+      new_points.clear();
+      new_point_values.clear();
+      std::vector<double> child(n_properties);
+      cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
+        for (auto &particle : particles_in_cell)
+          {
+            auto p = particle.get_properties();
+            std::copy(p.begin(), p.end(), child.begin());
+            dealii::Point<2> child_x;
+            if (!model.finish_point(
+                  p, positions[particle.get_local_index()], child.data(), child_x))
+              continue;
+            new_points.push_back({cell,
+                                  particle.get_location(),
+                                  particle.get_reference_location(),
+                                  particle.get_id()});
+            new_point_values.insert(new_point_values.end(), child.begin(), child.end());
+            child_positions.push_back(child_x);
+          }
+      });
+      const std::vector<unsigned int> slots = cloud.add_points(new_points, new_point_values);
+      if (slots.empty())
+        return;
+      positions.resize(cloud.particles().get_property_pool().n_slots());
+      for (unsigned int k = 0; k < slots.size(); ++k)
+        positions[slots[k]] = child_positions[k];
     }
 
 

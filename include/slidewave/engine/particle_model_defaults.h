@@ -1,6 +1,7 @@
 #ifndef slidewave_engine_particle_model_defaults_h
 #define slidewave_engine_particle_model_defaults_h
 
+#include <deal.II/base/point.h>
 #include <slidewave/grid/nodal_workspace.h>
 #include <slidewave/grid/shape_functions.h>
 
@@ -19,9 +20,16 @@ namespace slidewave
      * (finish_nodal_fields), how they act at a node in the grid update
      * (update_nodal_velocity) and what the points read back (gather_fields). The engine
      * sums, condenses and exchanges them like the mass, and knows nothing else of them.
+     * A model may also see each point at the end of a step (finish_point), move it and
+     * split it in two: the engine inserts the new half and moves both to their cells
+     * with the others.
      */
     struct ParticleModelDefaults
     {
+      /** Whether a point whose nodes are all at rest after the grid update takes their
+       *  velocity (zero) whatever the FLIP fraction: for a model whose nodes can be held
+       *  by friction, so that a deposit comes to rest exactly. */
+      static constexpr bool rests_with_its_nodes = false;
       /** Nodal fields beyond mass, momentum and force: none. */
       static constexpr unsigned int n_nodal_fields = 0;
 
@@ -82,6 +90,30 @@ namespace slidewave
                     Properties & /*p*/,
                     bool /*before_update*/) const
       {
+      }
+
+      /** Whether finish_point() is called for every point at the end of a step. */
+      bool
+      finishes_points() const
+      {
+        return false;
+      }
+
+      /**
+       * At the end of a step, before the points move to their new cells, for the point
+       * with properties @p p and new position @p x: the model may move @p x (back inside
+       * the grid, say) and may split the point in two. It returns whether it splits; if so
+       * it makes @p p and @p x one half and @p child and @p child_x the other (@p child
+       * holds a copy of @p p when called). Called only when finishes_points().
+       */
+      template <typename Properties>
+      bool
+      finish_point(Properties & /*p*/,
+                   dealii::Point<2> & /*x*/,
+                   double * /*child*/,
+                   dealii::Point<2> & /*child_x*/) const
+      {
+        return false;
       }
     };
   } // namespace engine

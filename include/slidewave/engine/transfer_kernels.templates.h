@@ -315,11 +315,14 @@ namespace slidewave
             shape_weights(particle, cell_index, w);
             double               v_new[2] = {0., 0.}, dv[2] = {0., 0.};
             dealii::Tensor<2, 2> L;
+            bool                 grid_moves = false;
             for (unsigned int e = 0; e < w.n; ++e)
               {
                 const double *v  = all_velocities + grid::NodalWorkspace::n_velocities * w.node[e];
                 const double  vx = v[0];
                 const double  vy = v[1];
+                if constexpr (Model::rests_with_its_nodes)
+                  grid_moves = grid_moves || vx != 0. || vy != 0.;
                 v_new[0] += w.value[e] * vx;
                 v_new[1] += w.value[e] * vy;
                 dv[0] += w.value[e] * v[2];
@@ -332,8 +335,11 @@ namespace slidewave
             auto p = particle.get_properties();
             // The model's nodal fields at the point (before its update, with_stresses).
             model.gather_fields(w, nodes, p, with_stresses);
-            p[Model::velocity_x] = flip * (p[Model::velocity_x] + dv[0]) + (1. - flip) * v_new[0];
-            p[Model::velocity_y] = flip * (p[Model::velocity_y] + dv[1]) + (1. - flip) * v_new[1];
+            // A point whose nodes are all at rest (held by friction) is at rest with them
+            // when the model says so: FLIP would keep its departure from their mean.
+            const double f       = Model::rests_with_its_nodes && !grid_moves ? 0. : flip;
+            p[Model::velocity_x] = f * (p[Model::velocity_x] + dv[0]) + (1. - f) * v_new[0];
+            p[Model::velocity_y] = f * (p[Model::velocity_y] + dv[1]) + (1. - f) * v_new[1];
             positions[particle.get_local_index()]
               = particle.get_location() + dt * dealii::Tensor<1, 2>({v_new[0], v_new[1]});
             if (with_stresses)

@@ -116,6 +116,27 @@ namespace slidewave
                               const grid::CellPatches             &patches,
                               core::StepTimeline                  *timeline);
 
+      /** A point to add next to an existing one (a split): the cell and the location it
+       *  is inserted at (its parent's; the next relocation moves it to where it goes) and
+       *  the parent's identifier. */
+      struct NewPoint
+      {
+        grid::BackgroundGrid::ActiveCellIterator cell;
+        dealii::Point<2>                         location, reference;
+        dealii::types::particle_index            parent_id;
+      };
+
+      /**
+       * Inserts @p new_points, point k with the properties @p values[k n_p ... (k + 1) n_p),
+       * and returns their local indices (their memory slots) in the same order. Their
+       * identifiers do not depend on the partition: the largest identifier on any rank
+       * plus one, plus the place of the parent's identifier among all the parents of this
+       * call (a parent adds at most one point per call). Collective; nothing happens, and
+       * nothing is communicated beyond one sum, when no rank adds a point.
+       */
+      std::vector<unsigned int>
+      add_points(const std::vector<NewPoint> &new_points, const std::vector<double> &values);
+
       /** deal.II's full sort of the points into the cells and ranks. */
       void
       sort();

@@ -511,6 +511,8 @@ namespace slidewave
       if (!parameters.elevation_raster.empty())
         out << " (raster " << parameters.elevation_raster << ")";
       out << "; density " << parameters.density;
+      // What a column carries: a checkpoint of another version's columns is refused.
+      out << "; " << property::n_properties << " column properties";
       return out.str();
     }
 

@@ -31,12 +31,12 @@ namespace slidewave
 
 
     void
-    ColumnProjection::add(const std::uint64_t index, const double *values)
+    ColumnProjection::add(const unsigned int i, const unsigned int j, const double *values)
     {
-      double *s = sums.at(index % (nx + 1), index / (nx + 1));
+      double *s = sums.at(i, j);
       // A column's mass is positive: a pixel with none has not been touched yet.
       if (s[1] == 0.)
-        touched.push_back(index);
+        touched.push_back(static_cast<std::uint64_t>(j) * (nx + 1) + i);
       for (unsigned int v = 0; v < n_sums; ++v)
         s[v] += values[v];
     }
@@ -83,19 +83,28 @@ namespace slidewave
                          i1 = last(right + reach, corner[0], nx);
       const unsigned int j0 = first(bottom - reach, corner[1], ny),
                          j1 = last(top + reach, corner[1], ny);
+      // The weights along x once per column (a rectangle at most 4 c wide reaches at most
+      // 7 nodes), then row by row.
+      if (i1 < i0 || j1 < j0)
+        return;
+      constexpr unsigned int max_reach = 8;
+      Assert(i1 - i0 < max_reach, dealii::ExcInternalError());
+      double             widths[max_reach];
+      const unsigned int n_i = std::min(i1 - i0 + 1, max_reach);
+      for (unsigned int k = 0; k < n_i; ++k)
+        widths[k] = weight(left, right, corner[0] + (i0 + k) * c);
       for (unsigned int j = j0; j <= j1; ++j)
         {
           const double height = weight(bottom, top, corner[1] + j * c);
           if (!(height > 0.))
             continue;
-          for (unsigned int i = i0; i <= i1; ++i)
+          for (unsigned int k = 0; k < n_i; ++k)
             {
-              const double width = weight(left, right, corner[0] + i * c);
-              if (!(width > 0.))
+              if (!(widths[k] > 0.))
                 continue;
-              const double w         = width * height * inverse_area;
+              const double w         = widths[k] * height * inverse_area;
               const double values[4] = {w * V, w * m, w * m * vx, w * m * vy};
-              add(static_cast<std::uint64_t>(j) * (nx + 1) + i, values);
+              add(i0 + k, j, values);
             }
         }
     }
@@ -147,7 +156,10 @@ namespace slidewave
           return;
         }
       for (std::size_t e = 0; e < all.size(); e += n_sums + 1)
-        add(static_cast<std::uint64_t>(all[e]), all.data() + e + 1);
+        {
+          const auto k = static_cast<std::uint64_t>(all[e]);
+          add(k % (nx + 1), k / (nx + 1), all.data() + e + 1);
+        }
     }
 
 

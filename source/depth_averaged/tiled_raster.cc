@@ -20,20 +20,13 @@ namespace slidewave
 
 
 
-    double *
-    TiledRaster::at(const unsigned int i, const unsigned int j)
+    void
+    TiledRaster::allocate(const std::size_t t)
     {
-      const std::size_t t
-        = static_cast<std::size_t>(j / tile_size) * n_tile_columns + i / tile_size;
-      if (slot[t] < 0)
-        {
-          slot[t] = storage.size();
-          storage.emplace_back(static_cast<std::size_t>(tile_size) * tile_size * initial.size());
-          for (std::size_t p = 0; p < static_cast<std::size_t>(tile_size) * tile_size; ++p)
-            std::copy(initial.begin(), initial.end(), storage.back().begin() + p * initial.size());
-        }
-      return storage[slot[t]].data()
-             + ((j % tile_size) * tile_size + i % tile_size) * initial.size();
+      slot[t] = storage.size();
+      storage.emplace_back(static_cast<std::size_t>(tile_size) * tile_size * initial.size());
+      for (std::size_t p = 0; p < static_cast<std::size_t>(tile_size) * tile_size; ++p)
+        std::copy(initial.begin(), initial.end(), storage.back().begin() + p * initial.size());
     }
 
 

@@ -71,9 +71,9 @@ namespace slidewave
                  double                  bx,
                  double                  by);
 
-      /** Adds @p values (volume, mass, momentum x, y) to pixel @p index. */
+      /** Adds @p values (volume, mass, momentum x, y) to pixel (@p i, @p j). */
       void
-      add(std::uint64_t index, const double *values);
+      add(unsigned int i, unsigned int j, const double *values);
 
       /** Rank 0 receives the other ranks' touched sums (collective). */
       void

@@ -49,7 +49,15 @@ namespace slidewave
 
       /** The values of pixel (i, j), for writing (its tile is allocated if it is not). */
       double *
-      at(unsigned int i, unsigned int j);
+      at(const unsigned int i, const unsigned int j)
+      {
+        const std::size_t t
+          = static_cast<std::size_t>(j / tile_size) * n_tile_columns + i / tile_size;
+        if (slot[t] < 0)
+          allocate(t);
+        return storage[slot[t]].data()
+               + ((j % tile_size) * tile_size + i % tile_size) * initial.size();
+      }
 
       /** The values of pixel (i, j), or nullptr if its tile was never written. */
       const double *
@@ -99,6 +107,10 @@ namespace slidewave
       memory_consumption() const;
 
     private:
+      /** Tile @p t, its pixels at the defaults. */
+      void
+      allocate(std::size_t t);
+
       unsigned int        n_columns, n_rows, n_tile_columns;
       std::vector<double> initial;
       /** Per tile: its place in storage, -1 while unallocated. */

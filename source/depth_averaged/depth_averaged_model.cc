@@ -35,10 +35,10 @@ namespace slidewave
            parameters.split_stretch * parameters.cell_size / parameters.particles_per_direction}))
       , lower_corner(parameters.lower_left)
       , upper_corner(parameters.upper_right)
-      , closed_side({parameters.sides[0] != grid::GridBoundary::free,
-                     parameters.sides[1] != grid::GridBoundary::free,
-                     parameters.sides[2] != grid::GridBoundary::free,
-                     parameters.sides[3] != grid::GridBoundary::free})
+      , closed_side({{parameters.sides[0] != grid::GridBoundary::free,
+                      parameters.sides[1] != grid::GridBoundary::free,
+                      parameters.sides[2] != grid::GridBoundary::free,
+                      parameters.sides[3] != grid::GridBoundary::free}})
     {
       property_layout.add_scalar("mass");
       property_layout.add_scalar("volume");

@@ -73,7 +73,8 @@ namespace slidewave
                           "along that direction, each half with half its mass and volume; 0: "
                           "never. Without splitting the columns of a thinning front drift "
                           "apart until they no longer feel one another, whatever the cell "
-                          "size (doc/depth-averaged.md, Column splitting). At least 1.5.");
+                          "size (doc/depth-averaged.md, Column splitting). At least 1.5 (the "
+                          "halves then start at least three quarters of a new column wide).");
         prm.declare_entry("Courant number",
                           "0.5",
                           Double(0.),
@@ -574,8 +575,10 @@ namespace slidewave
       if (split_stretch != 0. && split_stretch < 1.5)
         throw InputError(path + "/Split stretch",
                          prm.get("Split stretch"),
-                         "0 (no splitting) or at least 1.5: a column splits into halves, "
-                         "which must not be due to split again at once");
+                         "0 (no splitting) or at least 1.5: the halves of a column split at "
+                         "this stretch are half as wide, so below 1.5 they would start "
+                         "narrower than three quarters of a new column, and below 1 every "
+                         "new column would split at its first step");
       courant_number = prm.get_double("Courant number");
       if (!(courant_number > 0. && courant_number <= 0.70710678118654752))
         throw InputError(path + "/Courant number",

@@ -314,12 +314,10 @@ namespace slidewave
       if (dealii::Utilities::MPI::sum(static_cast<unsigned int>(new_points.size()), MPI_COMM_WORLD)
           == 0)
         return local_indices;
-      // The identifiers: after the largest one in use, in the order of the parents'
+      // The identifiers: after the largest one in use (deal.II's next free index, the
+      // maximum over all ranks at its last count), in the order of the parents'
       // identifiers over all ranks (the same on any number of ranks).
-      dealii::types::particle_index largest = 0;
-      for (const auto &particle : handler)
-        largest = std::max(largest, particle.get_id());
-      largest = dealii::Utilities::MPI::max(largest, MPI_COMM_WORLD);
+      const dealii::types::particle_index largest = handler.get_next_free_particle_index() - 1;
       std::vector<dealii::types::particle_index> parents;
       parents.reserve(new_points.size());
       for (const NewPoint &point : new_points)
@@ -328,8 +326,9 @@ namespace slidewave
       for (const auto &rank_parents : dealii::Utilities::MPI::all_gather(MPI_COMM_WORLD, parents))
         all_parents.insert(all_parents.end(), rank_parents.begin(), rank_parents.end());
       std::sort(all_parents.begin(), all_parents.end());
-      AssertThrow(static_cast<double>(largest) + all_parents.size() < static_cast<double>(
-                    std::numeric_limits<dealii::types::particle_index>::max()),
+      AssertThrow(handler.get_next_free_particle_index() > 0
+                    && static_cast<double>(largest) + all_parents.size() < static_cast<double>(
+                         std::numeric_limits<dealii::types::particle_index>::max()),
                   dealii::ExcMessage("The points' identifiers are exhausted."));
 
       const unsigned int n_properties = handler.n_properties_per_particle();

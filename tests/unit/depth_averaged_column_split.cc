@@ -11,8 +11,9 @@
 //    not split, at both ends of both directions;
 //  - 'cpgimp': the halves' domains are half their width (at most the column's);
 //  - 'Split stretch = 0': no splitting, whatever the stretch;
-//  - a column's centre past a closed side is put back on it; past an open side it is left
-//    (it leaves the grid there).
+//  - a column's centre less than a cell past a closed side is put back on it; past an open
+//    side, or more than a cell past a closed one (a run gone wrong, which the check of the
+//    sides then stops), it is left.
 #include "depth_averaged_input.h"
 #include "unit_check.h"
 
@@ -207,6 +208,10 @@ main()
     dealii::Point<2> y(10.01, -1e-9);
     split(model, p, y, child, child_x);
     check(y == dealii::Point<2>(10.01, 0.), "past the open right side: left there");
+    dealii::Point<2> far(-1.5, 5.);
+    split(model, p, far, child, child_x);
+    check(far == dealii::Point<2>(-1.5, 5.),
+          "more than a cell past a wall: left there, for the check of the sides to stop the run");
   }
 
   std::printf(unit_check::all_passed ? "all checks passed\n" : "SOME CHECKS FAILED\n");

@@ -321,16 +321,20 @@ namespace slidewave
        * domain touches a wall still takes the velocity of the nodes inside, which may carry
        * its centre past the wall in one step (most easily with FLIP, which keeps the
        * columns' own velocities); the wall's normal velocity is zero, so the centre stays
-       * on it.
+       * on it. Only a centre less than a cell past the wall: one farther out has left by
+       * more than a step of a stable run can carry it, and the run stops on it (the point
+       * cloud's check of the sides).
        */
       void
       keep_inside(dealii::Point<2> &x) const
       {
         for (unsigned int d = 0; d < 2; ++d)
           {
-            if (closed_side[2 * d] && x[d] < lower_corner[d])
+            if (closed_side[2 * d] && x[d] < lower_corner[d]
+                && x[d] > lower_corner[d] - prm.cell_size)
               x[d] = lower_corner[d];
-            if (closed_side[2 * d + 1] && x[d] > upper_corner[d])
+            if (closed_side[2 * d + 1] && x[d] > upper_corner[d]
+                && x[d] < upper_corner[d] + prm.cell_size)
               x[d] = upper_corner[d];
           }
       }
@@ -354,6 +358,8 @@ namespace slidewave
         const double       reach = shift + std::max(shift, p[half]);
         if (x[d] - reach < lower_corner[d] || x[d] + reach > upper_corner[d])
           return false;
+        for (unsigned int k = 0; k < property::n_properties; ++k)
+          child[k] = p[k];
         child_x = x;
         x[d] -= shift;
         child_x[d] += shift;

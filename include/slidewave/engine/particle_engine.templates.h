@@ -219,8 +219,7 @@ namespace slidewave
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
         for (auto &particle : particles_in_cell)
           {
-            auto p = particle.get_properties();
-            std::copy(p.begin(), p.end(), child.begin());
+            auto             p = particle.get_properties();
             dealii::Point<2> child_x;
             if (!model.finish_point(
                   p, positions[particle.get_local_index()], child.data(), child_x))

@@ -103,8 +103,8 @@ namespace slidewave
        * At the end of a step, before the points move to their new cells, for the point
        * with properties @p p and new position @p x: the model may move @p x (back inside
        * the grid, say) and may split the point in two. It returns whether it splits; if so
-       * it makes @p p and @p x one half and @p child and @p child_x the other (@p child
-       * holds a copy of @p p when called). Called only when finishes_points().
+       * it makes @p p and @p x one half and @p child and @p child_x the other (it fills
+       * every property of @p child). Called only when finishes_points().
        */
       template <typename Properties>
       bool

@@ -129,10 +129,10 @@ namespace slidewave
       /**
        * Inserts @p new_points, point k with the properties @p values[k n_p ... (k + 1) n_p),
        * and returns their local indices (their memory slots) in the same order. Their
-       * identifiers do not depend on the partition: the largest identifier on any rank
-       * plus one, plus the place of the parent's identifier among all the parents of this
-       * call (a parent adds at most one point per call). Collective; nothing happens, and
-       * nothing is communicated beyond one sum, when no rank adds a point.
+       * identifiers do not depend on the partition: deal.II's next free identifier (the
+       * largest on any rank plus one), plus the place of the parent's identifier among all
+       * the parents of this call (a parent adds at most one point per call). Collective; nothing
+       * happens, and nothing is communicated beyond one sum, when no rank adds a point.
        */
       std::vector<unsigned int>
       add_points(const std::vector<NewPoint> &new_points, const std::vector<double> &values);

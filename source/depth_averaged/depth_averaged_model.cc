@@ -30,15 +30,8 @@ namespace slidewave
       , atmospheric_pressure(parameters.atmospheric_pressure)
       , project_depth(parameters.depth_update == DepthUpdate::projection)
       , bed_normal(parameters.slope_correction == SlopeCorrection::bed_normal)
-      , split_width(dealii::Tensor<1, 2>(
-          {parameters.split_stretch * parameters.cell_size / parameters.particles_per_direction,
-           parameters.split_stretch * parameters.cell_size / parameters.particles_per_direction}))
-      , lower_corner(parameters.lower_left)
-      , upper_corner(parameters.upper_right)
-      , closed_side({{parameters.sides[0] != grid::GridBoundary::free,
-                      parameters.sides[1] != grid::GridBoundary::free,
-                      parameters.sides[2] != grid::GridBoundary::free,
-                      parameters.sides[3] != grid::GridBoundary::free}})
+      , split_width(parameters.split_stretch * parameters.cell_size
+                    / parameters.particles_per_direction)
     {
       property_layout.add_scalar("mass");
       property_layout.add_scalar("volume");

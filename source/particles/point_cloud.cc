@@ -314,10 +314,10 @@ namespace slidewave
       if (dealii::Utilities::MPI::sum(static_cast<unsigned int>(new_points.size()), MPI_COMM_WORLD)
           == 0)
         return local_indices;
-      // The identifiers: after the largest one in use (deal.II's next free index, the
-      // maximum over all ranks at its last count), in the order of the parents'
-      // identifiers over all ranks (the same on any number of ranks).
-      const dealii::types::particle_index largest = handler.get_next_free_particle_index() - 1;
+      // The identifiers: from deal.II's next free one on (the largest in use on any rank
+      // plus one, at its last count), in the order of the parents' identifiers over all
+      // ranks (the same on any number of ranks).
+      const dealii::types::particle_index        first = handler.get_next_free_particle_index();
       std::vector<dealii::types::particle_index> parents;
       parents.reserve(new_points.size());
       for (const NewPoint &point : new_points)
@@ -326,9 +326,8 @@ namespace slidewave
       for (const auto &rank_parents : dealii::Utilities::MPI::all_gather(MPI_COMM_WORLD, parents))
         all_parents.insert(all_parents.end(), rank_parents.begin(), rank_parents.end());
       std::sort(all_parents.begin(), all_parents.end());
-      AssertThrow(handler.get_next_free_particle_index() > 0
-                    && static_cast<double>(largest) + all_parents.size() < static_cast<double>(
-                         std::numeric_limits<dealii::types::particle_index>::max()),
+      AssertThrow(static_cast<double>(first) + all_parents.size() < static_cast<double>(
+                    std::numeric_limits<dealii::types::particle_index>::max()),
                   dealii::ExcMessage("The points' identifiers are exhausted."));
 
       const unsigned int n_properties = handler.n_properties_per_particle();
@@ -342,7 +341,7 @@ namespace slidewave
           const auto inserted = handler.insert_particle(
             point.location,
             point.reference,
-            largest + 1 + place,
+            first + place,
             point.cell,
             dealii::ArrayView<const double>(values.data() + k * n_properties, n_properties));
           local_indices.push_back(inserted->get_local_index());

@@ -1,7 +1,6 @@
 #ifndef slidewave_depth_averaged_depth_averaged_model_h
 #define slidewave_depth_averaged_depth_averaged_model_h
 
-#include <array>
 #include <cmath>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -313,7 +312,7 @@ namespace slidewave
                    dealii::Point<2> &child_x) const
       {
         keep_inside(x);
-        return split_width[0] > 0. && split_point(p, x, child, child_x);
+        return split_width > 0. && split_point(p, x, child, child_x);
       }
 
       /**
@@ -330,12 +329,13 @@ namespace slidewave
       {
         for (unsigned int d = 0; d < 2; ++d)
           {
-            if (closed_side[2 * d] && x[d] < lower_corner[d]
-                && x[d] > lower_corner[d] - prm.cell_size)
-              x[d] = lower_corner[d];
-            if (closed_side[2 * d + 1] && x[d] > upper_corner[d]
-                && x[d] < upper_corner[d] + prm.cell_size)
-              x[d] = upper_corner[d];
+            const double lower = prm.lower_left[d], upper = prm.upper_right[d];
+            if (prm.sides[2 * d] != grid::GridBoundary::free && x[d] < lower
+                && x[d] > lower - prm.cell_size)
+              x[d] = lower;
+            if (prm.sides[2 * d + 1] != grid::GridBoundary::free && x[d] > upper
+                && x[d] < upper + prm.cell_size)
+              x[d] = upper;
           }
       }
 
@@ -347,16 +347,16 @@ namespace slidewave
                   dealii::Point<2> &child_x) const
       {
         const double       wx = p[property::width_x], wy = p[property::width_y];
-        const unsigned int d     = wx / split_width[0] >= wy / split_width[1] ? 0 : 1;
+        const unsigned int d     = wx >= wy ? 0 : 1;
         const double       width = d == 0 ? wx : wy;
-        if (width <= split_width[d])
+        if (width <= split_width)
           return false;
         // The halves, and their shape functions' domains, stay inside the grid.
         const unsigned int w     = d == 0 ? property::width_x : property::width_y;
         const unsigned int half  = d == 0 ? property::domain_half_x : property::domain_half_y;
         const double       shift = 0.25 * width;
         const double       reach = shift + std::max(shift, p[half]);
-        if (x[d] - reach < lower_corner[d] || x[d] + reach > upper_corner[d])
+        if (x[d] - reach < prm.lower_left[d] || x[d] + reach > prm.upper_right[d])
           return false;
         for (unsigned int k = 0; k < property::n_properties; ++k)
           child[k] = p[k];
@@ -477,12 +477,9 @@ namespace slidewave
       const bool project_depth;
       /** 'Slope correction = bed normal'. */
       const bool bed_normal;
-      /** 'Split stretch' times the columns' initial width along x and y (0: no
-       *  splitting), and the grid's corners. */
-      const dealii::Tensor<1, 2> split_width;
-      const dealii::Point<2>     lower_corner, upper_corner;
-      /** Left, right, bottom, top: not 'open' (a column may not cross it). */
-      const std::array<bool, 4> closed_side;
+      /** 'Split stretch' times the columns' initial width, the cell over the columns per
+       *  direction (0: no splitting). */
+      const double split_width;
     };
   } // namespace depth_averaged
 } // namespace slidewave

@@ -254,9 +254,11 @@ namespace slidewave
       unsigned int         n_steps = 0, n_full_sorts = 0;
       dealii::TimerOutput *timer    = nullptr;
       core::StepTimeline  *timeline = nullptr;
-      /** Scratch of finish_points(): the new points and their properties. */
+      /** Scratch of finish_points(), kept between steps (no allocation once grown): the
+       *  new points, their properties and positions, and one point's properties. */
       std::vector<particles::PointCloud::NewPoint> new_points;
-      std::vector<double>                          new_point_values;
+      std::vector<double>                          new_point_values, new_point_buffer;
+      std::vector<dealii::Point<2>>                new_point_positions;
       /** The timer section of the part of the step under way. */
       std::optional<dealii::TimerOutput::Scope> part;
     };

@@ -210,26 +210,27 @@ namespace slidewave
     void
     ParticleEngine<Model>::finish_points()
     {
-      std::vector<dealii::Point<2>> &positions    = kernels.new_positions();
-      const unsigned int             n_properties = cloud.particles().n_properties_per_particle();
-      std::vector<dealii::Point<2>>  child_positions;
+      std::vector<dealii::Point<2>> &positions = kernels.new_positions();
       new_points.clear();
       new_point_values.clear();
-      std::vector<double> child(n_properties);
+      new_point_positions.clear();
+      new_point_buffer.resize(cloud.particles().n_properties_per_particle());
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
         for (auto &particle : particles_in_cell)
           {
             auto             p = particle.get_properties();
             dealii::Point<2> child_x;
             if (!model.finish_point(
-                  p, positions[particle.get_local_index()], child.data(), child_x))
+                  p, positions[particle.get_local_index()], new_point_buffer.data(), child_x))
               continue;
             new_points.push_back({cell,
                                   particle.get_location(),
                                   particle.get_reference_location(),
                                   particle.get_id()});
-            new_point_values.insert(new_point_values.end(), child.begin(), child.end());
-            child_positions.push_back(child_x);
+            new_point_values.insert(new_point_values.end(),
+                                    new_point_buffer.begin(),
+                                    new_point_buffer.end());
+            new_point_positions.push_back(child_x);
           }
       });
       const std::vector<unsigned int> slots = cloud.add_points(new_points, new_point_values);
@@ -237,7 +238,7 @@ namespace slidewave
         return;
       positions.resize(cloud.particles().get_property_pool().n_slots());
       for (unsigned int k = 0; k < slots.size(); ++k)
-        positions[slots[k]] = child_positions[k];
+        positions[slots[k]] = new_point_positions[k];
     }
 
 

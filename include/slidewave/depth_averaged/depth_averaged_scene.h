@@ -120,10 +120,13 @@ namespace slidewave
       DepthAveragedModel::StillStateErrors
       still_state_errors() const;
 
-      /** The dam break: sum |h_i - h(x_i, t)| a_i over sum h(x_i, t) a_i at the nodes
-       *  and, on a slope (from the tail of the rarefaction on), the velocity's
-       *  sum |u_i - u(x_i, t)| h(x_i, t) a_i over sum |u(x_i, t)| h(x_i, t) a_i. */
-      std::array<double, 2>
+      /** The dam break: sum |h_i - h(x_i, t)| a_i over sum h(x_i, t) a_i at the nodes;
+       *  on a slope (from the tail of the rarefaction on), the velocity's
+       *  sum |u_i - u(x_i, t)| h(x_i, t) a_i over sum |u(x_i, t)| h(x_i, t) a_i (0 on a
+       *  flat bed); and the columns' own sum_p |h_p - h(x_p, t)| A_p over the same
+       *  sum h(x_i, t) a_i, with A_p = V_p / h_p (doc/depth-averaged.md, Speed and
+       *  accuracy: why both). */
+      std::array<double, 3>
       dam_break_errors(double time) const;
 
       /** The dry-bed dam break's front (Ritter, or on a slope): the largest x of a node

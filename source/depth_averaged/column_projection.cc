@@ -43,6 +43,38 @@ namespace slidewave
 
 
 
+    std::pair<unsigned int, unsigned int>
+    ColumnProjection::hat_weights(const double       a,
+                                  const double       b,
+                                  const double       origin,
+                                  const unsigned int n,
+                                  double            *weights) const
+    {
+      // [a, b] in cell units from the origin, inside [0, n]; cell k = [k, k + 1] gives its
+      // node k the integral of 1 - s over its part [s_a, s_b] of the segment and node
+      // k + 1 that of s. The segment is at most 4 cells long: at most 6 nodes.
+      const double       sa = (a - origin) / c, sb = (b - origin) / c;
+      const unsigned int first = std::min<unsigned int>(static_cast<unsigned int>(sa), n - 1);
+      const unsigned int last
+        = std::max(first, std::min<unsigned int>(static_cast<unsigned int>(std::ceil(sb)), n) - 1);
+      Assert(last - first + 2 <= max_reach, dealii::ExcInternalError());
+      const unsigned int n_nodes = std::min(last - first + 2, max_reach);
+      const double       scale   = 1. / (sb - sa);
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        weights[k] = 0.;
+      for (unsigned int k = 0; k + 1 < n_nodes; ++k)
+        {
+          const double left  = std::max(sa - (first + k), 0.);
+          const double right = std::min(sb - (first + k), 1.);
+          const double ramp  = 0.5 * (right * right - left * left);
+          weights[k] += (right - left - ramp) * scale;
+          weights[k + 1] += ramp * scale;
+        }
+      return {first, n_nodes};
+    }
+
+
+
     void
     ColumnProjection::add_column(const dealii::Point<2> &x,
                                  const double            V,
@@ -59,52 +91,29 @@ namespace slidewave
       const double top    = std::min(x[1] + by, corner[1] + ny * c);
       if (!(right > left) || !(top > bottom))
         return;
-      const double inverse_area = 1. / ((right - left) * (top - bottom));
-      // The integral over [a, b] of the hat function of the node at @p node (1 there, 0 a
-      // cell away): c (G(s_b) - G(s_a)) with G the hat's antiderivative in cell units.
-      const auto weight = [this](const double a, const double b, const double node) {
-        const auto G = [](double s) {
-          s = std::clamp(s, -1., 1.);
-          return s <= 0. ? 0.5 * (s + 1.) * (s + 1.) : 1. - 0.5 * (1. - s) * (1. - s);
-        };
-        return c * (G((b - node) / c) - G((a - node) / c));
-      };
-      // The nodes whose hats reach the rectangle.
-      const double reach = c;
-      const auto   first = [this](const double a, const double origin, const unsigned int n) {
-        return static_cast<unsigned int>(
-          std::clamp<long>(std::lround(std::ceil((a - origin) / c - 1e-12)), 0, n));
-      };
-      const auto last = [this](const double a, const double origin, const unsigned int n) {
-        return static_cast<unsigned int>(
-          std::clamp<long>(std::lround(std::floor((a - origin) / c + 1e-12)), 0, n));
-      };
-      const unsigned int i0 = first(left - reach, corner[0], nx),
-                         i1 = last(right + reach, corner[0], nx);
-      const unsigned int j0 = first(bottom - reach, corner[1], ny),
-                         j1 = last(top + reach, corner[1], ny);
-      // The weights along x once per column (a rectangle at most 4 c wide reaches at most
-      // 7 nodes), then row by row.
-      if (i1 < i0 || j1 < j0)
-        return;
-      constexpr unsigned int max_reach = 8;
-      Assert(i1 - i0 < max_reach, dealii::ExcInternalError());
-      double             widths[max_reach];
-      const unsigned int n_i = std::min(i1 - i0 + 1, max_reach);
-      for (unsigned int k = 0; k < n_i; ++k)
-        widths[k] = weight(left, right, corner[0] + (i0 + k) * c);
-      for (unsigned int j = j0; j <= j1; ++j)
+      // S_ip = (1 / |R_p|) integral over R_p of N_i: the product of the hats' mean values
+      // along x and along y, each computed once per column.
+      double       wx[max_reach], wy[max_reach];
+      const auto   x_nodes        = hat_weights(left, right, corner[0], nx, wx);
+      const auto   y_nodes        = hat_weights(bottom, top, corner[1], ny, wy);
+      const auto   i0             = x_nodes.first;
+      const auto   j0             = y_nodes.first;
+      const double values[n_sums] = {V, m, m * vx, m * vy};
+      for (unsigned int b = 0; b < y_nodes.second; ++b)
         {
-          const double height = weight(bottom, top, corner[1] + j * c);
-          if (!(height > 0.))
+          if (!(wy[b] > 0.))
             continue;
-          for (unsigned int k = 0; k < n_i; ++k)
+          for (unsigned int a = 0; a < x_nodes.second; ++a)
             {
-              if (!(widths[k] > 0.))
+              const double w = wx[a] * wy[b];
+              if (!(w > 0.))
                 continue;
-              const double w         = widths[k] * height * inverse_area;
-              const double values[4] = {w * V, w * m, w * m * vx, w * m * vy};
-              add(i0 + k, j, values);
+              double *sum = sums.at(i0 + a, j0 + b);
+              // A column's mass is positive: a pixel with none has not been touched yet.
+              if (sum[1] == 0.)
+                touched.push_back(static_cast<std::uint64_t>(j0 + b) * (nx + 1) + i0 + a);
+              for (unsigned int v = 0; v < n_sums; ++v)
+                sum[v] += w * values[v];
             }
         }
     }

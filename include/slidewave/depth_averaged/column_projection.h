@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 #include <slidewave/depth_averaged/tiled_raster.h>
 #include <slidewave/particles/point_cloud.h>
+#include <utility>
 #include <vector>
 
 namespace slidewave
@@ -74,6 +75,14 @@ namespace slidewave
       /** Adds @p values (volume, mass, momentum x, y) to pixel (@p i, @p j). */
       void
       add(unsigned int i, unsigned int j, const double *values);
+
+      /** The mean over [@p a, @p b] (inside [@p origin, @p origin + @p n c]) of the hat
+       *  of each node it reaches, into @p weights: the first node's index and how many. */
+      std::pair<unsigned int, unsigned int>
+      hat_weights(double a, double b, double origin, unsigned int n, double *weights) const;
+
+      /** The most nodes a column's rectangle (at most 4 c along a side) reaches along x. */
+      static constexpr unsigned int max_reach = 8;
 
       /** Rank 0 receives the other ranks' touched sums (collective). */
       void

@@ -13,14 +13,22 @@ problems:
 * ``Stoker`` and ``Ritter``: the dam break of ``prm/dam-break-channel.prm`` (mu = tau_Y = 0,
   no friction: shallow water) on the channel [0, 100] x [0, 4 C], 1 m of water left of
   x = 50 m, 0.5 m (Stoker) or a dry bed (Ritter) right of it, t = 4 s, cell sizes C = 1 to
-  0.0625 m; error: the relative L1 error of the nodal depth; for Ritter also the front;
+  0.0625 m; error: the relative L1 error of the nodal depth and, beside it, that of the
+  columns' own depths (``column_error``: sum_p |h_p - h(x_p)| A_p / integral of h); for
+  Ritter also the front;
 * ``slope``: the dry-bed dam break on a 40 deg plane with Coulomb friction phi = 20 deg of
   ``prm/dam-break-on-slope.prm`` (Mangeney et al. 2000; reservoir 1 m deep over [8, 28]),
   on [0, 64] x [0, 4 C], t = 2 s, C = 0.5 to 0.0625 m; error: the relative L1 error of the
-  nodal depth, and the front;
+  nodal depth and that of the columns' own depths, as for Stoker and Ritter; the front;
 * ``block``: the slab sliding on 40 deg with phi = 15 deg of
   ``tests/depth_averaged/sliding_block_40.prm``, C = 0.5 m, 1 s; error: the relative error
   of the horizontal acceleration momentum_x / (M t) (round-off for every option).
+
+Both depth errors are reported because the nodal depth, the deposit sum_p V_p N_i(x_p) / a_i,
+carries a quadrature error set by the columns' spacing relative to the cell, which does not
+shrink at a fixed number of columns per cell; the columns' own error has no such floor.
+(Runs of a program that does not print the columns' error, and the CSV's older rows, have
+none.)
 
 The front is where the nodal depth first exceeds 1 % of the release depth, against the
 same point of the exact solution, in per cent of the exact distance travelled (the line
@@ -48,7 +56,8 @@ default split stretch.)
 Measurements: the error lines the program prints at the end; ``advance[s]``: the
 'depth averaged: advance' row of the timer table (the time loop's steps; start-up, the
 stable-step reduction, checks and output are outside it); ``total[s]``: the process;
-``order``: log(e_coarse / e_fine) / log(C_coarse / C_fine) against the next coarser C.
+``order``: log(e_coarse / e_fine) / log(C_coarse / C_fine) against the next coarser C;
+``column_order``: the same of ``column_error``.
 Every run has its own temporary output directory (particles only at the start and the end,
 no statistics rows between, no grid output), removed afterwards. Every run is started
 with ``nice`` (``--nice``, default 10; the machine is shared). The study is repeated
@@ -61,14 +70,19 @@ do). A run that fails is recorded with the reason; the study goes on.
 Output: a line per run while it goes, markdown tables per problem, the CSV ``--csv``
 (default benchmarks/results/depth_averaged_work_precision.csv) and the figure ``--png``
 (default doc/figures/depth-averaged-work-precision.png): error against advance wall time,
-log-log, one panel per problem, and the front error of Ritter and of the slope.
-``--plot-only`` redraws the figure and the tables from the CSV.
+log-log, one panel per problem (for the defaults also the columns' own error, dashed with
+hollow markers), and the front error of Ritter and of the slope. With ``--merge`` the rows
+of the existing CSV whose (problem, line, cell size) are not run this time are kept and the
+others replaced (the orders recomputed over the merged rows); without it the CSV holds only
+this study. ``--plot-only`` redraws the figure and the tables from the CSV.
 
 Usage:
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py               # ~40 minutes
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --quick       # ~4 minutes
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --problems Ritter,slope \\
         --lines gimp-flip80-proj-4-s1.5,gimp-pic-proj-4-s0 --repeat 1
+    /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --merge --problems Stoker \\
+        --lines gimp-flip80-proj-4-s1.5 --repeat 1    # only these rows of the CSV replaced
     /usr/bin/python3 benchmarks/depth_averaged_work_precision.py --plot-only
 """
 
@@ -120,10 +134,13 @@ QUICK_LINES = [DEFAULTS, PAPER_001]
 
 _RIGID_RE = re.compile(r"Rigid translation at t = [0-9.eE+-]+ s: relative L1 error of the "
                        r"columns' depth = ([0-9.eE+-]+|nan|inf)")
+# The dam breaks: the nodal depth's error, then (newer programs) the columns' own.
+_COLUMNS = r"(?: \(the columns' own depths: (-?nan|-?inf|[0-9.eE+-]+)\))?"
 _DAM_RE = re.compile(r"Dam break \((?:Ritter|Stoker)\) at t = [0-9.eE+-]+ s: relative L1 "
-                     r"error of the depth = ([0-9.eE+-]+|nan|inf|-?nan)")
+                     r"error of the depth = (-?nan|-?inf|[0-9.eE+-]+)" + _COLUMNS)
 _SLOPE_RE = re.compile(r"Dam break on a [0-9.]+ deg slope \(Mangeney et al. 2000\) at t = "
-                       r"[0-9.eE+-]+ s: relative L1 error of the depth = ([0-9.eE+-]+|nan|inf)")
+                       r"[0-9.eE+-]+ s: relative L1 error of the depth = "
+                       r"(-?nan|-?inf|[0-9.eE+-]+)" + _COLUMNS)
 _BLOCK_RE = re.compile(r"Sliding block on a [0-9.]+ deg slope at t = [0-9.eE+-]+ s: .* "
                        r"relative error ([0-9.eE+-]+|nan|inf)")
 ERROR_RE = {"rigid": _RIGID_RE, "Stoker": _DAM_RE, "Ritter": _DAM_RE, "slope": _SLOPE_RE,
@@ -139,9 +156,9 @@ _TIMER_RE = re.compile(
 
 CSV_COLUMNS = ["problem", "line", "shape", "flip_fraction", "depth_update",
                "particles_per_direction", "cell_size", "columns", "cells", "steps", "error",
-               "order", "front", "front_exact", "front_error_percent", "advance_wall_s",
-               "advance_min_s", "advance_max_s", "total_wall_s", "repeats", "background_load",
-               "status"]
+               "order", "column_error", "column_order", "front", "front_exact",
+               "front_error_percent", "advance_wall_s", "advance_min_s", "advance_max_s",
+               "total_wall_s", "repeats", "background_load", "status"]
 
 
 def split_of(name):
@@ -214,7 +231,7 @@ def run_slidewave(exe, problem, line, cell_size, niceness):
         cmd += ["--set", f"{key}={value}"]
     cmd.append(os.path.join(REPO, SCENES[problem]))
     r = {"status": "ok", "columns": None, "cells": None, "steps": None, "error": None,
-         "front": None, "front_exact": None, "front_error_percent": None,
+         "column_error": None, "front": None, "front_exact": None, "front_error_percent": None,
          "advance_wall_s": None, "total_wall_s": None, "background_load": None}
     try:
         t0, busy0, own0 = time.perf_counter(), cpu_busy_seconds(), children_cpu_seconds()
@@ -235,6 +252,8 @@ def run_slidewave(exe, problem, line, cell_size, niceness):
         m = ERROR_RE[problem].search(out)
         if m:
             r["error"] = float(m.group(1))
+            if len(m.groups()) >= 2 and m.group(2) is not None:
+                r["column_error"] = float(m.group(2))
         m = _FRONT_RE.search(out)
         if m:
             r["front"], r["front_exact"] = float(m.group(1)), float(m.group(2))
@@ -258,7 +277,7 @@ def run_slidewave(exe, problem, line, cell_size, niceness):
 
 HEADER = (f"{'problem':<7} {'line':<18} {'C[m]':>6} {'columns':>7} {'cells':>6} "
           f"{'steps':>5} {'advance[s]':>10} {'total[s]':>8} {'error':>10} {'order':>6} "
-          f"{'front%':>7} {'bg':>4}")
+          f"{'col.error':>10} {'c.ord':>6} {'front%':>7} {'bg':>4}")
 
 
 def row_line(row):
@@ -266,7 +285,9 @@ def row_line(row):
             f"{fmt(row['columns'], 'd'):>7} {fmt(row['cells'], 'd'):>6} "
             f"{fmt(row['steps'], 'd'):>5} {fmt(row['advance_wall_s'], '.4g'):>10} "
             f"{fmt(row['total_wall_s'], '.2f'):>8} {fmt(row['error'], '.4e'):>10} "
-            f"{fmt(row['order'], '.2f'):>6} {fmt(row['front_error_percent'], '.1f'):>7} "
+            f"{fmt(row['order'], '.2f'):>6} {fmt(row.get('column_error'), '.4e'):>10} "
+            f"{fmt(row.get('column_order'), '.2f'):>6} "
+            f"{fmt(row['front_error_percent'], '.1f'):>7} "
             f"{fmt(row['background_load'], '.1f'):>4}")
     if row["status"] != "ok":
         line += f"  {row['status']}"
@@ -281,16 +302,41 @@ def ordered_lines(rows):
     return lines
 
 
+def add_column_orders(rows):
+    """``add_orders`` of the columns' own error: row["column_order"] against the next
+    coarser cell size of the same problem and line (None where either has none)."""
+    import math
+    groups = {}
+    for row in rows:
+        groups.setdefault((row["problem"], row["line"]), []).append(row)
+    for group in groups.values():
+        group.sort(key=lambda r: -r["cell_size"])
+        previous = None
+        for row in group:
+            row["column_order"] = None
+            if (previous and previous.get("column_error") and row.get("column_error")
+                    and row["status"] == "ok" and previous["status"] == "ok"
+                    and previous["column_error"] > 0 and row["column_error"] > 0):
+                row["column_order"] = (math.log(previous["column_error"] / row["column_error"])
+                                       / math.log(previous["cell_size"] / row["cell_size"]))
+            previous = row
+
+
 def markdown(rows):
     """Markdown tables: per problem, one row per line (error per cell size, the observed
-    order between the two finest, the median advance time at the finest; the front error
-    per cell size for the dry-bed problems)."""
+    order between the two finest, the median advance time at the finest), below it, where
+    the runs have it, a row of the columns' own error and its order; the front error per
+    cell size for the dry-bed problems."""
     out = []
     for problem in [p for p in PROBLEMS if any(r["problem"] == p for r in rows)]:
         sizes = sorted({r["cell_size"] for r in rows if r["problem"] == problem},
                        reverse=True)
+        columns = any(r.get("column_error") is not None for r in rows
+                      if r["problem"] == problem)
         out.append(f"\n**{problem}**: {TITLES[problem]}; order between the two finest; "
-                   "advance = median time-loop wall time at the finest\n")
+                   "advance = median time-loop wall time at the finest"
+                   + ("; the rows '..., columns' own depths': the error of the columns' own "
+                      "depths in the same runs" if columns else "") + "\n")
         out.append("| line | " + " | ".join(f"C = {c:g}" for c in sizes)
                    + " | order | advance [s] |")
         out.append("|---|" + "---:|" * (len(sizes) + 2))
@@ -306,6 +352,12 @@ def markdown(rows):
             out.append(f"| {line} | " + " | ".join(cells) +
                        f" | {fmt(finest['order'], '.2f')} | "
                        f"{fmt(finest['advance_wall_s'], '.3g')} |")
+            if any(r.get("column_error") is not None for r in group.values()):
+                cells = ["-" if c not in group else
+                         (fmt(group[c].get("column_error"), ".3g")
+                          if group[c]["status"] == "ok" else "failed") for c in sizes]
+                out.append(f"| {line}, columns' own depths | " + " | ".join(cells) +
+                           f" | {fmt(finest.get('column_order'), '.2f')} | (same runs) |")
         if problem in FRONT_PROBLEMS:
             out.append(f"\n**{problem}, front** (per cent of the distance travelled)\n")
             out.append("| line | " + " | ".join(f"C = {c:g}" for c in sizes) + " |")
@@ -331,10 +383,11 @@ def read_csv(path):
     with open(path, newline="") as f:
         for r in csv.DictReader(f):
             row = dict(r)
-            for k in ("flip_fraction", "cell_size", "error", "order", "front", "front_exact",
-                      "front_error_percent", "advance_wall_s", "advance_min_s",
-                      "advance_max_s", "total_wall_s", "background_load"):
-                row[k] = to_number(r[k], float)
+            for k in ("flip_fraction", "cell_size", "error", "order", "column_error",
+                      "column_order", "front", "front_exact", "front_error_percent",
+                      "advance_wall_s", "advance_min_s", "advance_max_s", "total_wall_s",
+                      "background_load"):
+                row[k] = to_number(r.get(k), float)  # older CSVs: no column_error, ..._order
             for k in ("particles_per_direction", "columns", "cells", "steps", "repeats"):
                 row[k] = to_number(r[k], int)
             rows.append(row)
@@ -389,6 +442,7 @@ def plot(rows, path):
                         hspace=0.32)
     lines = ordered_lines(rows)
     handles = {}
+    columns_label = "defaults, columns' own depths"
     for ax, (problem, what) in zip(axes.flat, panels):
         for line in lines:
             group = sorted((r for r in rows if r["problem"] == problem and r["line"] == line
@@ -408,6 +462,18 @@ def plot(rows, path):
                     ax.annotate(f"{finest['order']:+.2f}", (x[-1], y[-1]),
                                 textcoords="offset points", xytext=(5, -3), fontsize=7,
                                 color=colour, fontweight="bold")
+                own = [r for r in group if r.get("column_error") is not None]
+                if line == DEFAULTS and own:
+                    # The columns' own error of the same runs: no quadrature floor.
+                    xc = [r["advance_wall_s"] for r in own]
+                    yc = [max(r["column_error"], 1e-16) for r in own]
+                    handles[columns_label], = ax.loglog(
+                        xc, yc, color=colour, ls=(0, (2.5, 2)), marker=marker, ms=5,
+                        mfc="none", lw=1.2, label=columns_label)
+                    if own[-1].get("column_order") is not None:
+                        ax.annotate(f"{own[-1]['column_order']:+.2f}", (xc[-1], yc[-1]),
+                                    textcoords="offset points", xytext=(5, -3), fontsize=7,
+                                    color=colour, fontweight="bold")
             else:
                 y = [r["front_error_percent"] for r in group]
                 handles[line], = ax.semilogx(x, y, color=colour, ls=style, marker=marker,
@@ -429,7 +495,10 @@ def plot(rows, path):
         ax.margins(x=0.12)
     for ax in list(axes.flat)[len(panels):]:
         ax.axis("off")
-    fig.legend([handles[l] for l in lines if l in handles], [l for l in lines if l in handles],
+    labels = [l for l in lines if l in handles]
+    if columns_label in handles:
+        labels.insert(labels.index(DEFAULTS) + 1 if DEFAULTS in labels else 0, columns_label)
+    fig.legend([handles[l] for l in labels], labels,
                loc="lower center", ncol=min(5, len(handles)), fontsize=8,
                title="shape - PIC / FLIP (fraction 1; flipNN: 0.NN) - depth update strain / "
                      "projection - columns per cell direction; black: the defaults; bold "
@@ -474,12 +543,16 @@ def main(argv=None):
                                                  "depth_averaged_work_precision.csv"))
     p.add_argument("--png", default=os.path.join(REPO, "doc", "figures",
                                                  "depth-averaged-work-precision.png"))
+    p.add_argument("--merge", action="store_true",
+                   help="keep the rows of the existing --csv whose (problem, line, cell "
+                        "size) are not run this time, replace the others")
     p.add_argument("--plot-only", action="store_true",
                    help="only redraw the figure (and the tables) from the CSV")
     args = p.parse_args(argv)
 
     if args.plot_only:
         rows = read_csv(args.csv)
+        add_column_orders(rows)  # older CSVs have no column_order
         print(markdown(rows))
         plot(rows, args.png)
         print(f"wrote {args.png}")
@@ -537,7 +610,8 @@ def main(argv=None):
                "advance_wall_s": None, "advance_min_s": None, "advance_max_s": None,
                "total_wall_s": None, "background_load": None, "repeats": 0}
         row.update({k: first[k] for k in ("status", "columns", "cells", "steps", "error",
-                                          "front", "front_exact", "front_error_percent")})
+                                          "column_error", "front", "front_exact",
+                                          "front_error_percent")})
         ok = [r for r in runs if r["status"] == "ok"]
         if len(ok) != len(runs):
             row["status"] = next(r["status"] for r in runs if r["status"] != "ok")
@@ -549,10 +623,17 @@ def main(argv=None):
                         "background_load": statistics.median(r["background_load"]
                                                              for r in ok),
                         "repeats": len(ok)})
-            if any(r["error"] != first["error"] or r["steps"] != first["steps"] for r in ok):
+            if any(r["error"] != first["error"] or r["steps"] != first["steps"]
+                   or r["column_error"] != first["column_error"] for r in ok):
                 changed.append(case)
         rows.append(row)
-    add_orders(rows)
+    kept = []
+    if args.merge and os.path.exists(args.csv):
+        done = set(cases)
+        kept = [r for r in read_csv(args.csv)
+                if (r["problem"], r["line"], r["cell_size"]) not in done]
+    add_orders(rows + kept)
+    add_column_orders(rows + kept)
 
     print("-" * len(HEADER))
     print(f"Medians over {repeat} round(s) (advance, total, bg):")
@@ -569,6 +650,16 @@ def main(argv=None):
     if changed:
         print("WARNING: the error or the step count changed between repetitions for "
               + ", ".join(f"{q}/{l}/{c:g}" for q, l, c in changed))
+    if args.merge:
+        # Sorted as a whole study writes them: problem, line (the docstring's order, then
+        # others as they come), cell size coarse to fine.
+        order = list(DEFAULT_LINES)
+        for r in kept + rows:
+            if r["line"] not in order:
+                order.append(r["line"])
+        rows = sorted(kept + rows, key=lambda r: (PROBLEMS.index(r["problem"]),
+                                                  order.index(r["line"]), -r["cell_size"]))
+        print(f"merged with {len(kept)} rows kept from {args.csv}")
     write_csv(args.csv, rows, CSV_COLUMNS)
     print(f"wrote {args.csv}")
     plot(rows, args.png)

@@ -40,12 +40,14 @@ namespace slidewave
         using namespace dealii::Patterns;
         prm.declare_entry("Shape functions",
                           "q1",
-                          Selection("q1|gimp|cpgimp"),
+                          Selection("q1|gimp|cpgimp|bspline"),
                           "'q1': bilinear functions of the cell holding the point (standard "
                           "MPM). 'gimp': uGIMP, Q1 averaged over a square domain of the "
                           "point's initial size (paper 000, Eq. 11), smooth across cell faces "
                           "(no cell-crossing noise). 'cpgimp': the domain stretches with the "
-                          "point along x and y.");
+                          "point along x and y. 'bspline': quadratic B-splines centred on the "
+                          "nodes (paper 002, Appendix A; support three cells, C1), which are "
+                          "GIMP with a whole cell as every point's domain (doc/mpm.md).");
         prm.declare_entry("Update scheme",
                           "usl",
                           Selection("usl|musl"),
@@ -513,9 +515,10 @@ namespace slidewave
                                               const std::string        &path)
     {
       const std::string shape = prm.get("Shape functions");
-      shape_function          = shape == "gimp"   ? grid::ShapeFunction::gimp :
-                                shape == "cpgimp" ? grid::ShapeFunction::cpgimp :
-                                                    grid::ShapeFunction::q1;
+      shape_function          = shape == "gimp"    ? grid::ShapeFunction::gimp :
+                                shape == "cpgimp"  ? grid::ShapeFunction::cpgimp :
+                                shape == "bspline" ? grid::ShapeFunction::bspline :
+                                                     grid::ShapeFunction::q1;
       update_scheme = prm.get("Update scheme") == "musl" ? UpdateScheme::musl : UpdateScheme::usl;
       flip_fraction = prm.get_double("FLIP fraction");
       time_step_multiplier = prm.get_double("Time step multiplier");

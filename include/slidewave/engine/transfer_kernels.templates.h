@@ -44,6 +44,11 @@ namespace slidewave
           const dealii::Point<2> ref = particle.get_reference_location();
           grid::q1_weights(patches.own(cell_index), ref[0], ref[1], w);
         }
+      else if (settings.shape_function == grid::ShapeFunction::bspline)
+        {
+          const dealii::Point<2> x = particle.get_location();
+          grid::bspline_weights(patches.begin(cell_index), patches.end(cell_index), x[0], x[1], w);
+        }
       else
         {
           const dealii::Point<2> x = particle.get_location();

@@ -11,9 +11,10 @@ namespace slidewave
     /** How a material point is connected to the nodes of the background grid. */
     enum class ShapeFunction
     {
-      q1,    ///< standard bilinear shape functions of the cell holding the point
-      gimp,  ///< uGIMP: Q1 averaged over a fixed square domain around the point (Eq. 11)
-      cpgimp ///< GIMP with a rectangular domain stretched with the point (contiguous particle)
+      q1,     ///< standard bilinear shape functions of the cell holding the point
+      gimp,   ///< uGIMP: Q1 averaged over a fixed square domain around the point (Eq. 11)
+      cpgimp, ///< GIMP with a rectangular domain stretched with the point (contiguous particle)
+      bspline ///< quadratic B-splines centred on the nodes (bspline_weights)
     };
 
     /**
@@ -167,6 +168,54 @@ namespace slidewave
           derivative = 0.;
         }
     }
+    /**
+     * Quadratic B-splines centred on the grid's nodes (Steffen, Kirby and Berzins 2008;
+     * paper 002, Appendix A, has the same functions on a knot vector through the nodes):
+     * node i's function is B((x - x_i) / h) B((y - y_i) / h) with the uniform quadratic
+     * B-spline B(s) = 3/4 - s^2 for |s| <= 1/2, (3/2 - |s|)^2 / 2 for 1/2 <= |s| <= 3/2,
+     * C1, support three cells. B is the hat convolved with the unit box (the hat is the box
+     * convolved with itself), so B-splines are GIMP with the point's domain a whole cell of
+     * the point's cell: half-lengths hx/2, hy/2, whatever the points per cell. Where that
+     * domain pokes out of the grid (a point within half a cell of its edge), gimp_weights
+     * keeps the part on the grid, so the functions still sum to one there (paper 002's
+     * open knot vector instead adds a function per side, whose control point is not a grid
+     * node). On an adaptive grid the domain is the point's own cell's.
+     */
+    inline void
+    bspline_weights(const PatchCell *patch_begin,
+                    const PatchCell *patch_end,
+                    const double     x,
+                    const double     y,
+                    NodeWeights     &w)
+    {
+      gimp_weights(patch_begin, patch_end, x, y, 0.5 * patch_begin->hx, 0.5 * patch_begin->hy, w);
+    }
+
+    /**
+     * The uniform quadratic B-spline B((x - xi) / h) of bspline_weights and its derivative
+     * in x, closed form: used to check bspline_weights.
+     */
+    inline void
+    bspline_1d(const double x, const double xi, const double h, double &value, double &derivative)
+    {
+      const double s = (x - xi) / h, as = std::abs(s), sign = s < 0. ? -1. : 1.;
+      if (as <= 0.5)
+        {
+          value      = 0.75 - s * s;
+          derivative = -2. * s / h;
+        }
+      else if (as < 1.5)
+        {
+          value      = 0.5 * (1.5 - as) * (1.5 - as);
+          derivative = -sign * (1.5 - as) / h;
+        }
+      else
+        {
+          value      = 0.;
+          derivative = 0.;
+        }
+    }
+
     /**
      * cpGIMP: a point's domain follows its stretch along the axes, half-lengths
      * @p half_x, @p half_y times 1 + L_xx dt and 1 + L_yy dt, kept within @p max_half (half

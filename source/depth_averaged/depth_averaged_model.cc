@@ -250,20 +250,20 @@ namespace slidewave
     DepthAveragedModel::TranslationErrors
     DepthAveragedModel::translation_errors(
       const particles::PointCloud                                         &cloud,
-      const double                                                         initial_area,
       const double                                                         t,
-      const std::function<dealii::Tensor<1, 2>(const dealii::Point<2> &)> &initial_velocity) const
+      const std::function<dealii::Tensor<1, 2>(const dealii::Point<2> &)> &initial_velocity,
+      const std::function<double(const dealii::Point<2> &)>               &initial_depth) const
     {
       // Sums: |h_p - h_p0| A_p0, h_p0 A_p0 = V_p; maxima: relative depth error, distance.
       double sums[2] = {0., 0.}, maxima[2] = {0., 0.};
       for (const auto &particle : cloud.particles())
         {
-          const auto             p  = particle.get_properties();
-          const double           h0 = p[property::volume] / initial_area;
+          const auto             p = particle.get_properties();
           const dealii::Point<2> x0(p[property::initial_x], p[property::initial_y]);
+          const double           h0    = initial_depth(x0);
           const dealii::Point<2> exact = x0 + t * initial_velocity(x0);
           const double           e     = std::abs(p[property::depth] - h0);
-          sums[0] += e * initial_area;
+          sums[0] += e * p[property::volume] / h0;
           sums[1] += p[property::volume];
           maxima[0] = std::max(maxima[0], e / h0);
           maxima[1] = std::max(maxima[1], particle.get_location().distance(exact));

@@ -184,15 +184,12 @@ namespace slidewave
     DepthAveragedModel::TranslationErrors
     DepthAveragedScene::translation_errors(const double time) const
     {
-      // The columns were made n x n per cell of the uniform grid: that is their area.
-      const double n    = parameters.particles_per_direction;
-      const double area = parameters.cell_size * parameters.cell_size / (n * n);
-      return solver->model().translation_errors(solver->point_cloud(),
-                                                area,
-                                                time - scene.start_time,
-                                                [this](const dealii::Point<2> &x) {
-                                                  return solver->release_area().velocity(x);
-                                                });
+      const auto &release = solver->release_area();
+      return solver->model().translation_errors(
+        solver->point_cloud(),
+        time - scene.start_time,
+        [&release](const dealii::Point<2> &x) { return release.velocity(x); },
+        [&release](const dealii::Point<2> &x) { return release.depth(x, 0); });
     }
 
 

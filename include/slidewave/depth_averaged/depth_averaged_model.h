@@ -434,21 +434,22 @@ namespace slidewave
                          const std::function<double(const dealii::Point<2> &)> &exact_depth) const;
 
       /** The columns against a rigid translation (collective): the relative L1 error of
-       *  their depth, sum_p |h_p - h_p0| A_p0 / sum_p h_p0 A_p0, with h_p0 = V_p / A_p0 the
-       *  depth at the start (A_p0 = @p initial_area, a cell's area over the columns per
-       *  cell); the largest |h_p - h_p0| / h_p0; and the largest distance of a column
-       *  from x_p0 + v_p0 t, v_p0 = @p initial_velocity(x_p0). */
+       *  their depth, sum_p |h_p - h_p0| A_p0 / sum_p h_p0 A_p0, with h_p0 =
+       *  @p initial_depth(x_p0) the release's depth where the column started and
+       *  A_p0 = V_p / h_p0 its area (so a column that split counts with its half); the
+       *  largest |h_p - h_p0| / h_p0; and the largest distance of a column from
+       *  x_p0 + v_p0 t, v_p0 = @p initial_velocity(x_p0). */
       struct TranslationErrors
       {
         double depth_l1 = 0., depth_max = 0., position_max = 0.;
       };
 
       TranslationErrors
-      translation_errors(const particles::PointCloud &cloud,
-                         double                       initial_area,
-                         double                       t,
-                         const std::function<dealii::Tensor<1, 2>(const dealii::Point<2> &)>
-                           &initial_velocity) const;
+      translation_errors(
+        const particles::PointCloud                                         &cloud,
+        double                                                               t,
+        const std::function<dealii::Tensor<1, 2>(const dealii::Point<2> &)> &initial_velocity,
+        const std::function<double(const dealii::Point<2> &)>               &initial_depth) const;
 
       /**
        * A description of the first point with a non-finite state or a depth that is not

@@ -10,7 +10,8 @@
 #   order, which the 12-digit CSV files can show in their last digit.
 # Arguments: -DMPIEXEC, -DNUMPROC_FLAG, -DEXECUTABLE, -DSCENE, -DDIRECTORY, -DFULL_RANKS,
 # -DRESUME_RANKS, optional -DIGNORE (regex of one column, e.g. " load_imbalance=[^ ]*"),
-# -DFILES (;-separated).
+# -DFILES (;-separated); -DMAPS (;-separated GeoTIFFs), compared pixel by pixel by
+# -DCOMPARE_RASTERS (run with -DPYTHON) to -DMAP_TOLERANCE times their largest value.
 file(REMOVE_RECURSE ${DIRECTORY} ${DIRECTORY}-full)
 function(run_scene ranks resume output status)
   set(command ${EXECUTABLE} --set "Output directory=${DIRECTORY}")
@@ -27,7 +28,7 @@ function(run_scene ranks resume output status)
 endfunction()
 
 run_scene(${FULL_RANKS} FALSE full status_full)
-foreach(name ${FILES})
+foreach(name ${FILES} ${MAPS})
   configure_file(${DIRECTORY}/${name} ${DIRECTORY}-full/${name} COPYONLY)
 endforeach()
 run_scene(${RESUME_RANKS} TRUE resumed status_resumed)
@@ -61,6 +62,17 @@ foreach(name ${FILES})
     message(FATAL_ERROR "${name} of the resumed run differs from the uninterrupted run's")
   endif()
   message(STATUS "${name}: byte for byte the uninterrupted run's")
+endforeach()
+
+foreach(name ${MAPS})
+  execute_process(COMMAND ${PYTHON} ${COMPARE_RASTERS} ${DIRECTORY}/${name}
+                          ${DIRECTORY}-full/${name} ${MAP_TOLERANCE}
+                  OUTPUT_VARIABLE compared RESULT_VARIABLE different)
+  if(different)
+    message(FATAL_ERROR "${name} of the resumed run differs from the uninterrupted run's: "
+                        "${compared}")
+  endif()
+  message(STATUS "${compared}")
 endforeach()
 
 # OTHER_SCENE: resuming that scene from this scene's checkpoint must be refused (exit

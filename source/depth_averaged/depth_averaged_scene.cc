@@ -152,8 +152,9 @@ namespace slidewave
                         "false",
                         Bool(),
                         "Also write the columns as a table at each output time, "
-                        "points/points_NNNNN.csv (x, y, elevation, depth, velocity_x, "
-                        "velocity_y, in no particular order), for the project's scripts.");
+                        "points/points_NNNNN.csv (id, x, y, elevation, depth, velocity_x, "
+                        "velocity_y, in the order of the columns' identifiers, which do not "
+                        "depend on the number of ranks), for the project's scripts.");
       prm.declare_entry("Output grid",
                         "true",
                         Bool(),

@@ -301,26 +301,47 @@ namespace slidewave
     void
     DepthAveragedScene::write_point_table(const unsigned int index) const
     {
-      // Each rank's rows, gathered on rank 0, which writes the file.
-      std::ostringstream rows;
-      rows.precision(9);
+      // Each rank's rows, gathered on rank 0, which writes them in the order of the
+      // columns' identifiers (the same file on any number of ranks).
+      constexpr unsigned int n_columns = 7;
+      std::vector<double>    rows;
+      rows.reserve(n_columns * solver->particles().n_locally_owned_particles());
       const auto &terrain = solver->model().terrain();
       for (const auto &particle : solver->particles())
         {
           const auto              p = particle.get_properties();
           const dealii::Point<2> &x = particle.get_location();
-          rows << x[0] << ',' << x[1] << ',' << terrain.value(x) << ',' << p[property::depth] << ','
-               << p[property::velocity_x] << ',' << p[property::velocity_y] << '\n';
+          rows.insert(rows.end(),
+                      {static_cast<double>(particle.get_id()),
+                       x[0],
+                       x[1],
+                       terrain.value(x),
+                       p[property::depth],
+                       p[property::velocity_x],
+                       p[property::velocity_y]});
         }
-      const auto all = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, rows.str(), 0);
+      const auto all = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, rows, 0);
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
         return;
+      std::vector<const double *> sorted;
+      for (const auto &part : all)
+        for (std::size_t r = 0; r < part.size(); r += n_columns)
+          sorted.push_back(part.data() + r);
+      std::sort(sorted.begin(), sorted.end(), [](const double *a, const double *b) {
+        return a[0] < b[0];
+      });
       char name[32];
       std::snprintf(name, sizeof(name), "points_%05u.csv", index);
       std::ofstream file(scene.output_directory + "/points/" + name);
-      file << "x,y,elevation,depth,velocity_x,velocity_y\n";
-      for (const auto &part : all)
-        file << part;
+      file.precision(9);
+      file << "id,x,y,elevation,depth,velocity_x,velocity_y\n";
+      for (const double *row : sorted)
+        {
+          file << static_cast<dealii::types::particle_index>(row[0]);
+          for (unsigned int c = 1; c < n_columns; ++c)
+            file << ',' << row[c];
+          file << '\n';
+        }
       file.close();
       require_written(file, scene.output_directory + "/points/" + name);
     }

@@ -473,15 +473,24 @@ namespace slidewave
       statistics.add_value("skeleton_kinetic_energy", skeleton.kinetic_energy);
       statistics.add_value("skeleton_max_speed", skeleton.max_speed);
       statistics.add_value("skeleton_momentum_y", skeleton.momentum_y);
-      // The granular mass's extent: its front (rightmost point) and top (highest point).
-      double front = -std::numeric_limits<double>::max(), top = front;
+      // The granular mass's extent: its front (rightmost point) and top (highest point);
+      // its porosity 1 - sum_p m_p / rho^s / sum_p V_p (where a dilatancy takes it).
+      double front = -std::numeric_limits<double>::max(), top = front, volumes[2] = {0., 0.};
       for (const auto &particle : engine->point_cloud().particles())
         {
-          front = std::max(front, particle.get_location()[0]);
-          top   = std::max(top, particle.get_location()[1]);
+          front        = std::max(front, particle.get_location()[0]);
+          top          = std::max(top, particle.get_location()[1]);
+          const auto p = particle.get_properties();
+          volumes[0] += p[soil::property::mass] / parameters.grain_density;
+          volumes[1] += p[soil::property::volume];
         }
+      dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(volumes, 2),
+                                  MPI_COMM_WORLD,
+                                  dealii::ArrayView<double>(volumes, 2));
       statistics.add_value("skeleton_front", dealii::Utilities::MPI::max(front, MPI_COMM_WORLD));
       statistics.add_value("skeleton_top", dealii::Utilities::MPI::max(top, MPI_COMM_WORLD));
+      statistics.add_value("skeleton_porosity",
+                           volumes[1] > 0. ? 1. - volumes[0] / volumes[1] : 0.);
       statistics.add_value("flow_iterations", last_report.flow.iterations);
       if (parameters.sub_cycling)
         statistics.add_value("skeleton_substeps", n_substeps);

@@ -12,7 +12,7 @@ namespace slidewave
                                              const GranularWaterParameters       &parameters,
                                              const double                         fluid_density,
                                              const double                         fluid_viscosity)
-      : soil::SoilModel(soil_parameters)
+      : soil::SoilModel(soil_parameters, parameters.grain_density)
       , parameters(parameters)
       , grain_density(parameters.grain_density)
       , viscosity(fluid_viscosity)

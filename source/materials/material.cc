@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cmath>
 #include <deal.II/base/utilities.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/materials/drucker_prager.h>
@@ -68,6 +70,27 @@ namespace slidewave
                         "minus the friction angle (compaction under shear: a loose "
                         "soil), as long as G + 9 K alpha_phi alpha_psi > 0.1 G; "
                         "'hencky drucker prager' takes [0, friction angle].");
+      prm.declare_entry("Dilatancy law",
+                        "constant",
+                        Selection("constant|critical state"),
+                        "'constant': the 'Dilatancy angle'. 'critical state' ('drucker "
+                        "prager' in 'Physics = granular water', where each point knows its "
+                        "porosity n): tan psi = K (n_c - n) with the 'Critical porosity' n_c "
+                        "and the 'Dilatancy factor' K (Pailha and Pouliquen 2009, in the "
+                        "solid fraction 1 - n): a packing denser than the critical one "
+                        "dilates under shear, a looser one compacts, and both approach n_c; "
+                        "psi is kept within [-phi, phi] and where the return is well posed.");
+      prm.declare_entry("Critical porosity",
+                        "0.42",
+                        Double(),
+                        "Porosity n_c of the critical state, where shear goes on at constant "
+                        "volume, in (0, 0.99) ('Dilatancy law = critical state'; 0.42 is a "
+                        "solid fraction of 0.58, glass beads).");
+      prm.declare_entry("Dilatancy factor",
+                        "4.09",
+                        Double(),
+                        "K in tan psi = K (n_c - n), >= 0 ('Dilatancy law = critical "
+                        "state'; 4.09 for glass beads, Pailha and Pouliquen 2009).");
       prm.declare_entry("Tension cutoff",
                         "0",
                         Double(),
@@ -82,18 +105,22 @@ namespace slidewave
     void
     MaterialParameters::parse_parameters(dealii::ParameterHandler &prm, const std::string &path)
     {
+      this->path                   = path;
       name                         = dealii::Utilities::trim(prm.get("Name"));
       const std::string model_name = prm.get("Model");
-      model           = model_name == "linear elastic"        ? MaterialModel::linear_elastic :
-                        model_name == "hencky drucker prager" ? MaterialModel::hencky_drucker_prager :
-                                                                MaterialModel::drucker_prager;
-      density         = prm.get_double("Density");
-      youngs_modulus  = prm.get_double("Young's modulus");
-      poisson_ratio   = prm.get_double("Poisson ratio");
-      friction_angle  = prm.get_double("Friction angle");
-      cohesion        = prm.get_double("Cohesion");
-      dilatancy_angle = prm.get_double("Dilatancy angle");
-      tension_cutoff  = prm.get_double("Tension cutoff");
+      model                    = model_name == "linear elastic" ? MaterialModel::linear_elastic :
+                                 model_name == "hencky drucker prager" ? MaterialModel::hencky_drucker_prager :
+                                                                         MaterialModel::drucker_prager;
+      density                  = prm.get_double("Density");
+      youngs_modulus           = prm.get_double("Young's modulus");
+      poisson_ratio            = prm.get_double("Poisson ratio");
+      friction_angle           = prm.get_double("Friction angle");
+      cohesion                 = prm.get_double("Cohesion");
+      dilatancy_angle          = prm.get_double("Dilatancy angle");
+      tension_cutoff           = prm.get_double("Tension cutoff");
+      critical_state_dilatancy = prm.get("Dilatancy law") == "critical state";
+      critical_porosity        = prm.get_double("Critical porosity");
+      dilatancy_factor         = prm.get_double("Dilatancy factor");
 
       if (name.empty())
         throw InputError(path + "/Name",
@@ -129,6 +156,17 @@ namespace slidewave
                                "shear) with G + 9 K alpha_phi alpha_psi > 0.1 G" :
                            "a number in [0, " + to_string(friction_angle)
                              + "]: the dilatancy angle may not exceed the friction angle");
+      if (critical_state_dilatancy)
+        {
+          if (model != MaterialModel::drucker_prager)
+            throw InputError(path + "/Dilatancy law",
+                             "critical state",
+                             "constant with 'Model = " + prm.get("Model")
+                               + "' (a state-dependent dilatancy needs the small-strain "
+                                 "'drucker prager', which takes a negative angle)");
+          require_in_range(path + "/Critical porosity", critical_porosity, 0., false, 0.99, false);
+          require_non_negative(path + "/Dilatancy factor", dilatancy_factor);
+        }
       require_non_negative(path + "/Cohesion", cohesion);
       require_non_negative(path + "/Tension cutoff", tension_cutoff);
       if (model == MaterialModel::hencky_drucker_prager && tension_cutoff != 0.)
@@ -174,12 +212,48 @@ namespace slidewave
       , elastic(parameters.youngs_modulus, parameters.poisson_ratio)
     {
       if (parameters.model == MaterialModel::drucker_prager)
-        plasticity.emplace(parameters.youngs_modulus,
-                           parameters.poisson_ratio,
-                           parameters.friction_angle,
-                           parameters.cohesion,
-                           parameters.dilatancy_angle,
-                           parameters.tension_cutoff);
+        {
+          plasticity.emplace(parameters.youngs_modulus,
+                             parameters.poisson_ratio,
+                             parameters.friction_angle,
+                             parameters.cohesion,
+                             parameters.dilatancy_angle,
+                             parameters.tension_cutoff);
+          // A state-dependent alpha_psi stays within [-alpha_phi, alpha_phi] and keeps
+          // G + 9 K alpha_phi alpha_psi >= 0.1 G (MaterialParameters::parse_parameters).
+          const double alpha_phi = plasticity->alpha_phi();
+          highest_alpha_psi      = alpha_phi;
+          lowest_alpha_psi       = -alpha_phi;
+          if (alpha_phi > 0.)
+            lowest_alpha_psi = std::max(lowest_alpha_psi,
+                                        -0.9 * elastic.shear_modulus()
+                                          / (9. * elastic.bulk_modulus() * alpha_phi));
+        }
+    }
+
+
+
+    double
+    Material::dilatancy_coefficient(const double porosity) const
+    {
+      const double t = parameters.dilatancy_factor * (parameters.critical_porosity - porosity);
+      return std::clamp(t / std::sqrt(9. + 12. * t * t), lowest_alpha_psi, highest_alpha_psi);
+    }
+
+
+
+    void
+    Material::update_stress(dealii::SymmetricTensor<2, 3>       &stress,
+                            const dealii::SymmetricTensor<2, 3> &strain_increment,
+                            const double                         spin_increment_xy,
+                            double                              &equivalent_plastic_strain,
+                            const double                         alpha_psi) const
+    {
+      Assert(parameters.model == MaterialModel::drucker_prager, dealii::ExcInternalError());
+      apply_jaumann_rotation(stress, spin_increment_xy);
+      plasticity->with_dilatancy_coefficient(alpha_psi).update_stress(stress,
+                                                                      strain_increment,
+                                                                      equivalent_plastic_strain);
     }
 
 

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <limits>
+#include <slidewave/core/input_error.h>
 #include <slidewave/core/rank_reports.h>
 #include <slidewave/engine/particle_engine.templates.h>
 #include <slidewave/soil/soil_model.h>
@@ -11,14 +12,23 @@ namespace slidewave
 {
   namespace soil
   {
-    SoilModel::SoilModel(const MaterialPointParameters &parameters)
+    SoilModel::SoilModel(const MaterialPointParameters &parameters, const double grain_density)
       : prm(parameters)
+      , solid_density(grain_density)
       , gravity(parameters.gravity)
       , point_forces(parameters.point_forces)
       , damping(parameters.damping)
     {
       for (const auto &material : prm.materials)
-        materials.emplace_back(material);
+        {
+          if (material.critical_state_dilatancy && !(grain_density > 0.))
+            throw InputError(material.path + "/Dilatancy law",
+                             "critical state",
+                             "constant here: a critical-state dilatancy needs each point's "
+                             "porosity, which only the grains of 'Physics = granular water' "
+                             "have (their 'Grain density')");
+          materials.emplace_back(material);
+        }
       const auto &names = property_names();
       for (unsigned int i = 0; i < property::n_properties; ++i)
         if (i == property::velocity_x)
@@ -101,15 +111,22 @@ namespace slidewave
       const double spin_xy = 0.5 * (L[0][1] - L[1][0]) * dt;
 
       dealii::SymmetricTensor<2, 3> stress;
-      stress[0][0]   = p[property::stress_xx];
-      stress[1][1]   = p[property::stress_yy];
-      stress[0][1]   = p[property::stress_xy];
-      stress[2][2]   = p[property::stress_zz];
-      double plastic = p[property::equivalent_plastic_strain];
-      materials[static_cast<unsigned int>(p[property::material_id])].update_stress(stress,
-                                                                                   strain_increment,
-                                                                                   spin_xy,
-                                                                                   plastic);
+      stress[0][0]                       = p[property::stress_xx];
+      stress[1][1]                       = p[property::stress_yy];
+      stress[0][1]                       = p[property::stress_xy];
+      stress[2][2]                       = p[property::stress_zz];
+      double                     plastic = p[property::equivalent_plastic_strain];
+      const materials::Material &material
+        = materials[static_cast<unsigned int>(p[property::material_id])];
+      if (material.state_dependent_dilatancy())
+        {
+          // The porosity at the start of the step, n = 1 - m_p / (rho^s V_p).
+          const double n = 1. - p[property::mass] / (solid_density * p[property::volume]);
+          material.update_stress(
+            stress, strain_increment, spin_xy, plastic, material.dilatancy_coefficient(n));
+        }
+      else
+        material.update_stress(stress, strain_increment, spin_xy, plastic);
       p[property::stress_xx]                 = stress[0][0];
       p[property::stress_yy]                 = stress[1][1];
       p[property::stress_xy]                 = stress[0][1];

@@ -167,6 +167,17 @@ namespace slidewave
       double
       yield_function(const dealii::SymmetricTensor<2, 3> &stress) const;
 
+      /** The same model with the dilatancy coefficient @p alpha_psi instead of its own
+       *  (a state-dependent dilatancy, Material::dilatancy_coefficient()); a copy of a
+       *  few numbers, nothing allocated. */
+      DruckerPrager
+      with_dilatancy_coefficient(double alpha_psi) const
+      {
+        DruckerPrager copy(*this);
+        copy.dilatancy_coefficient = alpha_psi;
+        return copy;
+      }
+
       /** The friction coefficient α_φ (dimensionless). */
       double
       alpha_phi() const;

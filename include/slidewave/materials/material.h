@@ -58,6 +58,13 @@ namespace slidewave
       double        cohesion        = 0.;
       double        dilatancy_angle = 0.;
       double        tension_cutoff  = 0.;
+      /** 'Dilatancy law = critical state': tan psi = K (n_c - n) at the point's porosity
+       *  n (Material::dilatancy_coefficient()); otherwise the fixed 'Dilatancy angle'. */
+      bool critical_state_dilatancy = false;
+      /** The subsection the material was read from, for later messages. */
+      std::string path;
+      double      critical_porosity = 0.42;
+      double      dilatancy_factor  = 4.09;
     };
 
 
@@ -117,6 +124,36 @@ namespace slidewave
                     double                              &equivalent_plastic_strain) const;
 
       /**
+       * The same update with the dilatancy coefficient @p alpha_psi of the point's state
+       * (dilatancy_coefficient()) instead of the material's fixed one; Drucker–Prager
+       * only.
+       */
+      void
+      update_stress(dealii::SymmetricTensor<2, 3>       &stress,
+                    const dealii::SymmetricTensor<2, 3> &strain_increment,
+                    double                               spin_increment_xy,
+                    double                              &equivalent_plastic_strain,
+                    double                               alpha_psi) const;
+
+      /** Whether the dilatancy follows the point's porosity ('Dilatancy law = critical
+       *  state'). */
+      bool
+      state_dependent_dilatancy() const
+      {
+        return parameters.critical_state_dilatancy;
+      }
+
+      /**
+       * The dilatancy coefficient α_ψ = tan ψ / sqrt(9 + 12 tan² ψ) at porosity
+       * @p porosity for 'Dilatancy law = critical state': tan ψ = K (n_c - n), positive
+       * (dilation) for a packing denser than the critical one, negative (compaction)
+       * for a looser one, zero at the critical state; kept within [-α_φ, α_φ] and where
+       * the return stays well posed, G + 9 K α_φ α_ψ >= 0.1 G.
+       */
+      double
+      dilatancy_coefficient(double porosity) const;
+
+      /**
        * K + 4G/3 [Pa], which sets the speed of compression waves and thereby
        * the critical time step (paper 000, Eq. 22).
        */
@@ -156,6 +193,8 @@ namespace slidewave
       LinearElastic      elastic;
       /** The plastic model; set for MaterialModel::drucker_prager only. */
       std::optional<DruckerPrager> plasticity;
+      /** The range of a state-dependent α_ψ (dilatancy_coefficient()). */
+      double lowest_alpha_psi = 0., highest_alpha_psi = 0.;
     };
   } // namespace materials
 } // namespace slidewave

@@ -66,7 +66,11 @@ namespace slidewave
 
       using ParticleRange = dealii::Particles::ParticleHandler<2>::particle_iterator_range;
 
-      explicit SoilModel(const MaterialPointParameters &parameters);
+      /** @p grain_density: rho^s of the grains where the points are a porous skeleton
+       *  (granular::PorousSkeletonModel), which a critical-state dilatancy needs to know
+       *  a point's porosity n = 1 - m_p / (rho^s V_p); 0 for a soil without one, which
+       *  refuses such a material (InputError). */
+      explicit SoilModel(const MaterialPointParameters &parameters, double grain_density = 0.);
 
       /** The points' properties: property::Index, then the point forces if on, then b^e
        *  (FiniteStrainPoints) if some material is a finite-strain one. */
@@ -228,7 +232,9 @@ namespace slidewave
 
       const MaterialPointParameters   &prm;
       std::vector<materials::Material> materials;
-      particles::PropertyLayout        property_layout;
+      /** rho^s of the grains (0: unknown; the constructor's @p grain_density). */
+      double                    solid_density;
+      particles::PropertyLayout property_layout;
       /** The finite-strain points' update and b^e; only when a material needs it. */
       std::optional<FiniteStrainPoints> finite_strain;
       const dealii::Tensor<1, 2>        gravity;

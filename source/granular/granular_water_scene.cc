@@ -89,12 +89,14 @@ namespace slidewave
                          std::to_string(fluid_parameters.element_degree),
                          "1 with Physics = granular water (the skeleton's nodes are the "
                          "vertices)");
-      if (soil_parameters.adaptivity.enabled || fluid_parameters.adaptive)
-        throw InputError(soil_parameters.adaptivity.enabled ?
-                           soil_section + "/Adaptive grid/Enable" :
-                           fluid_section + "/Adaptive grid/Enable",
+      if (soil_parameters.adaptivity.enabled)
+        throw InputError(soil_section + "/Adaptive grid/Enable",
                          "true",
-                         "false with Physics = granular water (not yet adaptive)");
+                         "false with Physics = granular water: the grid both phases share "
+                         "adapts by '"
+                           + fluid_section
+                           + "/Adaptive grid' (fine along the water surface and where the "
+                             "grains are)");
       if (!fluid_parameters.porosity.empty())
         throw InputError(fluid_section + "/Porous structure/Porosity",
                          fluid_parameters.porosity,
@@ -229,6 +231,14 @@ namespace slidewave
       // weight: a saturated layer in equilibrium from the start.
       fluid_solver->start_hydrostatic();
       fluid_solver->initialize(start_time);
+      // On an adaptive grid the points made the cells they fill fine; the water's initial
+      // surface then does the same, its state set again on the finer cells.
+      for (unsigned int l = 0; l < grid->adaptive_levels(); ++l)
+        {
+          if (!grid->adapt())
+            break;
+          fluid_solver->initialize(start_time);
+        }
       if (soil_parameters.initial_stress == soil::InitialStress::uniform)
         model->set_uniform_stress(engine->point_cloud());
       else if (soil_parameters.initial_stress == soil::InitialStress::geostatic)

@@ -63,8 +63,13 @@ namespace slidewave
           inverse_permeability.local_element(i)
             = drag.local_element(i) * inverse_area / (n * n * mu);
         }
+      // On an adaptive grid the sums of a hanging node went to its parents: its values
+      // come from theirs, as every Q1 field's there.
       for (Vector *v : {&fraction, &inverse_permeability})
-        v->update_ghost_values();
+        {
+          v->update_ghost_values();
+          nodes.interpolate_hanging_nodes(*v);
+        }
       fields.fluid_fraction->copy_from_grid_nodes({&fraction});
       fields.inverse_permeability->copy_from_grid_nodes({&inverse_permeability});
 
@@ -100,7 +105,10 @@ namespace slidewave
           vy.local_element(i) *= solid;
         }
       for (Vector *v : {&vx, &vy})
-        v->update_ghost_values();
+        {
+          v->update_ghost_values();
+          nodes.interpolate_hanging_nodes(*v);
+        }
       fields.solid_flux->copy_from_grid_nodes({&vx, &vy});
     }
 

@@ -118,10 +118,11 @@ def interleaved_pairs(run, pairs):
     return done, failed
 
 
-def add_orders(rows):
+def add_orders(rows, error="error", order="order"):
     """Observed order of convergence of each row (a dict with "problem", "line",
-    "cell_size", "error", "status") against the next coarser cell size of its line, in
-    row["order"] (None where either run failed or has no positive error)."""
+    "cell_size", the error under the key ``error`` and "status") against the next coarser
+    cell size of its line, in row[``order``] (None where either run failed or has no
+    positive error)."""
     import math
     groups = {}
     for row in rows:
@@ -130,11 +131,11 @@ def add_orders(rows):
         group.sort(key=lambda r: -r["cell_size"])
         previous = None
         for row in group:
-            row["order"] = None
-            if (previous and previous.get("error") and row.get("error")
+            row[order] = None
+            if (previous and previous.get(error) and row.get(error)
                     and row["status"] == "ok" and previous["status"] == "ok"
-                    and previous["error"] > 0 and row["error"] > 0):
-                row["order"] = (math.log(previous["error"] / row["error"])
-                                / math.log(previous["cell_size"] / row["cell_size"]))
+                    and previous[error] > 0 and row[error] > 0):
+                row[order] = (math.log(previous[error] / row[error])
+                              / math.log(previous["cell_size"] / row["cell_size"]))
             previous = row
 

@@ -305,21 +305,7 @@ def ordered_lines(rows):
 def add_column_orders(rows):
     """``add_orders`` of the columns' own error: row["column_order"] against the next
     coarser cell size of the same problem and line (None where either has none)."""
-    import math
-    groups = {}
-    for row in rows:
-        groups.setdefault((row["problem"], row["line"]), []).append(row)
-    for group in groups.values():
-        group.sort(key=lambda r: -r["cell_size"])
-        previous = None
-        for row in group:
-            row["column_order"] = None
-            if (previous and previous.get("column_error") and row.get("column_error")
-                    and row["status"] == "ok" and previous["status"] == "ok"
-                    and previous["column_error"] > 0 and row["column_error"] > 0):
-                row["column_order"] = (math.log(previous["column_error"] / row["column_error"])
-                                       / math.log(previous["cell_size"] / row["cell_size"]))
-            previous = row
+    add_orders(rows, error="column_error", order="column_order")
 
 
 def markdown(rows):

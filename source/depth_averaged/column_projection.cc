@@ -30,19 +30,6 @@ namespace slidewave
 
 
 
-    void
-    ColumnProjection::add(const unsigned int i, const unsigned int j, const double *values)
-    {
-      double *s = sums.at(i, j);
-      // A column's mass is positive: a pixel with none has not been touched yet.
-      if (s[1] == 0.)
-        touched.push_back(static_cast<std::uint64_t>(j) * (nx + 1) + i);
-      for (unsigned int v = 0; v < n_sums; ++v)
-        s[v] += values[v];
-    }
-
-
-
     std::pair<unsigned int, unsigned int>
     ColumnProjection::hat_weights(const double       a,
                                   const double       b,
@@ -108,12 +95,9 @@ namespace slidewave
               const double w = wx[a] * wy[b];
               if (!(w > 0.))
                 continue;
-              double *sum = sums.at(i0 + a, j0 + b);
-              // A column's mass is positive: a pixel with none has not been touched yet.
-              if (sum[1] == 0.)
-                touched.push_back(static_cast<std::uint64_t>(j0 + b) * (nx + 1) + i0 + a);
-              for (unsigned int v = 0; v < n_sums; ++v)
-                sum[v] += w * values[v];
+              const double weighted[n_sums]
+                = {w * values[0], w * values[1], w * values[2], w * values[3]};
+              add(i0 + a, j0 + b, weighted);
             }
         }
     }

@@ -75,7 +75,9 @@ namespace slidewave
                             "'dam break': the dam break along x of 'Left depth' and 'Right "
                             "depth' at 'Dam position' (Ritter for a dry bed, Stoker for a wet "
                             "one): the L1 error of the nodal depth relative to the exact "
-                            "volume, sum |h_i - h(x_i, t)| a_i / sum h(x_i, t) a_i; with a "
+                            "volume, sum |h_i - h(x_i, t)| a_i / sum h(x_i, t) a_i, and at "
+                            "the end also the columns' own, sum_p |h_p - h(x_p, t)| V_p / h_p "
+                            "over the same volume; with a "
                             "'Slope angle', Mangeney et al.'s (2000) dry dam break down the "
                             "plane Z = -x tan(angle) with the Coulomb friction of 'Basal "
                             "friction', compared from the tail of the rarefaction onwards, and "
@@ -87,8 +89,9 @@ namespace slidewave
                             "its release depth and moves at its release velocity (a uniform "
                             "layer at the still level of a flat bed, doc/depth-averaged.md): "
                             "the relative L1 error of the columns' depth, "
-                            "sum |h_p - h_p0| A_p0 / sum h_p0 A_p0 (A_p0 their area at the "
-                            "start), its largest relative value and the largest distance of "
+                            "sum |h_p - h_p0| A_p0 / sum h_p0 A_p0 (h_p0 the release's depth "
+                            "where the column started, A_p0 = V_p / h_p0), its largest "
+                            "relative value and the largest distance of "
                             "a column from x_p0 + v_p0 t in cell sizes.");
           prm.declare_entry("Slope angle",
                             "0",

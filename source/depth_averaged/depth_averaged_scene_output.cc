@@ -107,7 +107,9 @@ namespace slidewave
           if (x < from)
             continue;
           const auto p = particle.get_properties();
-          double     h, u;
+          if (!(p[property::depth] > 0.))
+            continue; // (the checks stop such a run)
+          double h, u;
           if (on_slope)
             slope.dam_break(x, t, h, u);
           else
@@ -189,7 +191,15 @@ namespace slidewave
         solver->point_cloud(),
         time - scene.start_time,
         [&release](const dealii::Point<2> &x) { return release.velocity(x); },
-        [&release](const dealii::Point<2> &x) { return release.depth(x, 0); });
+        [&release](const dealii::Point<2> &x) {
+          // The area the column started in (the first that contains it, as the points
+          // were made).
+          const auto  &areas = release.regions();
+          unsigned int r     = 0;
+          while (r + 1 < areas.size() && !areas[r].contains(x))
+            ++r;
+          return release.depth(x, r);
+        });
     }
 
 

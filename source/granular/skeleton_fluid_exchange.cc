@@ -77,7 +77,7 @@ namespace slidewave
       // grains, -(1 - n) grad p^n with this step's fluid fraction (fluid::PorousMedium).
       const bool with_pressure = flow != nullptr && predictor_step > 0.;
       if (with_pressure)
-        pressure_force(*flow, fields, pressure_work);
+        pressure_force(*flow, fields, nodes, pressure_work);
       for (unsigned int i = 0; i < n_owned; ++i)
         {
           // v^n, or v* = v^n + dt (f + f_p) / m (semi-implicit).
@@ -117,6 +117,7 @@ namespace slidewave
     void
     SkeletonFluidExchange::pressure_force(const grid::FiniteElementField              &flow,
                                           const SkeletonFields                        &fields,
+                                          const grid::NodalWorkspace                  &nodes,
                                           std::array<grid::NodalWorkspace::Vector, 2> &force) const
     {
       const dealii::QGauss<2>                  quadrature(flow.finite_element().degree + 1);
@@ -153,13 +154,14 @@ namespace slidewave
                     force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
               }
           }
-      lump_on_grains(force);
+      lump_on_grains(nodes, force);
     }
 
 
 
     void
-    SkeletonFluidExchange::lump_on_grains(std::array<grid::NodalWorkspace::Vector, 2> &force) const
+    SkeletonFluidExchange::lump_on_grains(const grid::NodalWorkspace                  &nodes,
+                                          std::array<grid::NodalWorkspace::Vector, 2> &force) const
     {
       // The node's own solid fraction 1 - n_I = S_I / A_I: the force is that on the node's
       // grains, so that a node the grains barely touch (a tiny mass) gets a tiny force and
@@ -167,6 +169,7 @@ namespace slidewave
       const unsigned int n_owned = fraction.locally_owned_size();
       for (unsigned int d = 0; d < 2; ++d)
         {
+          nodes.condense_hanging_nodes(force[d]);
           force[d].compress(dealii::VectorOperation::add);
           for (unsigned int i = 0; i < n_owned; ++i)
             force[d].local_element(i) *= 1. - fraction.local_element(i);
@@ -179,6 +182,7 @@ namespace slidewave
     SkeletonFluidExchange::to_skeleton(const grid::FiniteElementField              &flow,
                                        const grid::FiniteElementField              &phase,
                                        const SkeletonFields                        &fields,
+                                       const grid::NodalWorkspace                  &nodes,
                                        std::array<grid::NodalWorkspace::Vector, 2> &force,
                                        grid::NodalWorkspace::Vector                *water_drag)
     {
@@ -247,12 +251,20 @@ namespace slidewave
                     (*water_drag)(indices[i]) += C * fv_grid.JxW(q) * fv_grid.shape_value(i, q);
               }
           }
+      // What landed on a hanging node belongs to its parents (the transpose of the
+      // interpolation, as the points' scatter): no force is lost where cells change size.
       for (unsigned int d = 0; d < 2; ++d)
-        force[d].compress(dealii::VectorOperation::add);
+        {
+          nodes.condense_hanging_nodes(force[d]);
+          force[d].compress(dealii::VectorOperation::add);
+        }
       if (water_drag != nullptr)
-        water_drag->compress(dealii::VectorOperation::add);
+        {
+          nodes.condense_hanging_nodes(*water_drag);
+          water_drag->compress(dealii::VectorOperation::add);
+        }
       // The pressure's force on the grains, lumped at the nodes (as pressure_force()).
-      lump_on_grains(pressure_work);
+      lump_on_grains(nodes, pressure_work);
       for (unsigned int d = 0; d < 2; ++d)
         force[d] += pressure_work[d];
     }

@@ -60,8 +60,22 @@ namespace slidewave
                                  const dealii::SymmetricTensor<2, 3> &strain_increment,
                                  double &equivalent_plastic_strain) const
     {
+      return update_stress(stress,
+                           strain_increment,
+                           equivalent_plastic_strain,
+                           dilatancy_coefficient);
+    }
+
+
+
+    PlasticCorrection
+    DruckerPrager::update_stress(dealii::SymmetricTensor<2, 3>       &stress,
+                                 const dealii::SymmetricTensor<2, 3> &strain_increment,
+                                 double                              &equivalent_plastic_strain,
+                                 const double                         alpha_psi) const
+    {
       stress += elastic.stress_increment(strain_increment);
-      const PlasticCorrection correction = return_to_yield_surface(stress);
+      const PlasticCorrection correction = return_to_yield_surface(stress, alpha_psi);
       equivalent_plastic_strain += correction.equivalent_plastic_strain_increment;
       return correction;
     }
@@ -70,6 +84,15 @@ namespace slidewave
 
     PlasticCorrection
     DruckerPrager::return_to_yield_surface(dealii::SymmetricTensor<2, 3> &stress) const
+    {
+      return return_to_yield_surface(stress, dilatancy_coefficient);
+    }
+
+
+
+    PlasticCorrection
+    DruckerPrager::return_to_yield_surface(dealii::SymmetricTensor<2, 3> &stress,
+                                           const double                   alpha_psi) const
     {
       const double K = elastic.bulk_modulus();
       const double G = elastic.shear_modulus();
@@ -98,10 +121,9 @@ namespace slidewave
 
       if (outside_cone)
         {
-          const double dlambda
-            = f_trial / (G + 9. * K * friction_coefficient * dilatancy_coefficient);
-          const double q_cone = q_trial - G * dlambda;
-          const double p_cone = p_trial - 3. * K * dilatancy_coefficient * dlambda;
+          const double dlambda = f_trial / (G + 9. * K * friction_coefficient * alpha_psi);
+          const double q_cone  = q_trial - G * dlambda;
+          const double p_cone  = p_trial - 3. * K * alpha_psi * dlambda;
           // Without friction the cone is a cylinder: q_cone = k_c >= 0 up to
           // rounding, and there is no apex to fall back on.
           const bool has_apex = friction_coefficient > 0.;

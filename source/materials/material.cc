@@ -79,7 +79,8 @@ namespace slidewave
                         "and the 'Dilatancy factor' K (Pailha and Pouliquen 2009, in the "
                         "solid fraction 1 - n): a packing denser than the critical one "
                         "dilates under shear, a looser one compacts, and both approach n_c; "
-                        "psi is kept within [-phi, phi] and where the return is well posed.");
+                        "psi is kept within [-phi, phi] and where the return is well posed "
+                        "('Dilatancy angle' stays 0).");
       prm.declare_entry("Critical porosity",
                         "0.42",
                         Double(),
@@ -164,6 +165,11 @@ namespace slidewave
                              "constant with 'Model = " + prm.get("Model")
                                + "' (a state-dependent dilatancy needs the small-strain "
                                  "'drucker prager', which takes a negative angle)");
+          if (dilatancy_angle != 0.)
+            throw InputError(path + "/Dilatancy angle",
+                             prm.get("Dilatancy angle"),
+                             "0 (the default) with 'Dilatancy law = critical state', which "
+                             "sets the angle from each point's porosity");
           require_in_range(path + "/Critical porosity", critical_porosity, 0., false, 0.99, false);
           require_non_negative(path + "/Dilatancy factor", dilatancy_factor);
         }
@@ -251,9 +257,7 @@ namespace slidewave
     {
       Assert(parameters.model == MaterialModel::drucker_prager, dealii::ExcInternalError());
       apply_jaumann_rotation(stress, spin_increment_xy);
-      plasticity->with_dilatancy_coefficient(alpha_psi).update_stress(stress,
-                                                                      strain_increment,
-                                                                      equivalent_plastic_strain);
+      plasticity->update_stress(stress, strain_increment, equivalent_plastic_strain, alpha_psi);
     }
 
 

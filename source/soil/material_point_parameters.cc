@@ -559,6 +559,12 @@ namespace slidewave
       // subsections are read (and checked); the others are ignored.
       parse_regions(prm, path, *this);
       parse_used_materials(prm, path, *this);
+      if (shape_function == grid::ShapeFunction::bspline && adaptivity.enabled)
+        throw InputError(path + "/Shape functions",
+                         "bspline",
+                         "q1, gimp or cpgimp with an adaptive grid (a B-spline's domain is a "
+                         "cell of the point's own cell's size, which would jump where the "
+                         "cells change size)");
       if (regions.empty())
         throw InputError(path + "/Region 1/Shape",
                          "none",

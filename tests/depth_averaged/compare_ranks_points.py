@@ -6,7 +6,7 @@ velocities to TOLERANCE times the largest absolute value of their kind (coordina
 depths, velocity components) (issue 28: the split
 columns' identifiers do not depend on the number of ranks, PointCloud::add_points).
 
-    compare_ranks_points.py SLIDEWAVE SCENE.prm DIRECTORY TOLERANCE MPIEXEC
+    compare_ranks_points.py SLIDEWAVE SCENE.prm DIRECTORY TOLERANCE MPIEXEC NUMPROC_FLAG
 
 Passes (exit 0, "the columns agree on one and two ranks") when they agree and some
 columns split (more rows at the end than at the start); prints what it compared.
@@ -14,11 +14,13 @@ columns split (more rows at the end than at the start); prints what it compared.
 import csv
 import glob
 import os
+import shutil
 import subprocess
 import sys
 
 
 def run(exe, scene, output, launcher):
+    shutil.rmtree(output, ignore_errors=True)  # no table of an earlier run
     settings = ["--set", f"Output directory={output}",
                 "--set", "Depth averaged/Output point table=true"]
     subprocess.run(launcher + [exe] + settings + [scene], check=True,
@@ -34,11 +36,11 @@ def read(path):
 
 
 def main():
-    exe, scene, directory, tolerance, mpiexec = sys.argv[1:6]
+    exe, scene, directory, tolerance, mpiexec, numproc_flag = sys.argv[1:7]
     tolerance = float(tolerance)
     one = run(exe, scene, os.path.join(directory, "one"), [])
     two = run(exe, scene, os.path.join(directory, "two"),
-              [mpiexec, "-np", "2", "--oversubscribe"])
+              [mpiexec, numproc_flag, "2", "--oversubscribe"])
     header, first = one[0]
     _, last_one = one[1]
     _, last_two = two[1]

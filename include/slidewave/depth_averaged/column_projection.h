@@ -74,7 +74,15 @@ namespace slidewave
 
       /** Adds @p values (volume, mass, momentum x, y) to pixel (@p i, @p j). */
       void
-      add(unsigned int i, unsigned int j, const double *values);
+      add(const unsigned int i, const unsigned int j, const double *values)
+      {
+        double *s = sums.at(i, j);
+        // A column's mass is positive: a pixel with none has not been touched yet.
+        if (s[1] == 0.)
+          touched.push_back(static_cast<std::uint64_t>(j) * (nx + 1) + i);
+        for (unsigned int v = 0; v < 4; ++v)
+          s[v] += values[v];
+      }
 
       /** The mean over [@p a, @p b] (inside [@p origin, @p origin + @p n c]) of the hat
        *  of each node it reaches, into @p weights: the first node's index and how many. */

@@ -104,6 +104,11 @@ namespace slidewave
              dealii::TimerOutput        &timer) override;
 
     private:
+      /** Refuses what the two phases on one grid cannot do (InputError naming the
+       *  parameter): granular_water_scene_checks.cc. */
+      void
+      check_parameters() const;
+
       using Engine = engine::ParticleEngine<PorousSkeletonModel>;
 
       /** The grid, the water's solver and the skeleton's engine, attached in that order. */

@@ -73,11 +73,13 @@ namespace slidewave
        *  new velocity and pressure) and @p phase (state 0), into @p force, vectors of the
        *  nodal workspace's layout (owned totals; collective). With @p water_drag (same
        *  layout), the semi-implicit coupling: the force without - C v_s, and W_I into
-       *  @p water_drag. */
+       *  @p water_drag. On an adaptive grid what lands on a hanging node goes to its
+       *  parents (@p nodes' condensation), as the points' own sums do. */
       void
       to_skeleton(const grid::FiniteElementField              &flow,
                   const grid::FiniteElementField              &phase,
                   const SkeletonFields                        &fields,
+                  const grid::NodalWorkspace                  &nodes,
                   std::array<grid::NodalWorkspace::Vector, 2> &force,
                   grid::NodalWorkspace::Vector                *water_drag = nullptr);
 
@@ -98,12 +100,15 @@ namespace slidewave
       void
       pressure_force(const grid::FiniteElementField              &flow,
                      const SkeletonFields                        &fields,
+                     const grid::NodalWorkspace                  &nodes,
                      std::array<grid::NodalWorkspace::Vector, 2> &force) const;
 
-      /** Completes @p force (integrals of N_I grad p, compressed here) and scales each
-       *  owned node's by its solid fraction 1 - n_I: the force on its grains. */
+      /** Completes @p force (integrals of N_I grad p; hanging nodes' shares to their
+       *  parents, then compressed here) and scales each owned node's by its solid
+       *  fraction 1 - n_I: the force on its grains. */
       void
-      lump_on_grains(std::array<grid::NodalWorkspace::Vector, 2> &force) const;
+      lump_on_grains(const grid::NodalWorkspace                  &nodes,
+                     std::array<grid::NodalWorkspace::Vector, 2> &force) const;
 
       const grid::BackgroundGrid         &grid;
       const fluid::FreeSurfaceParameters &parameters;

@@ -170,7 +170,8 @@ namespace slidewave
     }
     /**
      * Quadratic B-splines centred on the grid's nodes (Steffen, Kirby and Berzins 2008;
-     * paper 002, Appendix A, has the same functions on a knot vector through the nodes):
+     * paper 002, Appendix A, builds quadratic B-splines by Cox-de Boor: on knots through
+     * the cells' middles its interior functions are these):
      * node i's function is B((x - x_i) / h) B((y - y_i) / h) with the uniform quadratic
      * B-spline B(s) = 3/4 - s^2 for |s| <= 1/2, (3/2 - |s|)^2 / 2 for 1/2 <= |s| <= 3/2,
      * C1, support three cells. B is the hat convolved with the unit box (the hat is the box
@@ -179,7 +180,8 @@ namespace slidewave
      * domain pokes out of the grid (a point within half a cell of its edge), gimp_weights
      * keeps the part on the grid, so the functions still sum to one there (paper 002's
      * open knot vector instead adds a function per side, whose control point is not a grid
-     * node). On an adaptive grid the domain is the point's own cell's.
+     * node). Uniform grids only: where cells change size the domain would jump with the
+     * point's cell (the scenes refuse 'bspline' with an adaptive grid).
      */
     inline void
     bspline_weights(const PatchCell *patch_begin,

@@ -163,20 +163,21 @@ namespace slidewave
       PlasticCorrection
       return_to_yield_surface(dealii::SymmetricTensor<2, 3> &stress) const;
 
+      /** update_stress() and return_to_yield_surface() with the dilatancy coefficient
+       *  @p alpha_psi instead of the model's own (a state-dependent dilatancy,
+       *  Material::dilatancy_coefficient()). */
+      PlasticCorrection
+      update_stress(dealii::SymmetricTensor<2, 3>       &stress,
+                    const dealii::SymmetricTensor<2, 3> &strain_increment,
+                    double                              &equivalent_plastic_strain,
+                    double                               alpha_psi) const;
+
+      PlasticCorrection
+      return_to_yield_surface(dealii::SymmetricTensor<2, 3> &stress, double alpha_psi) const;
+
       /** f(σ) = α_φ I1 + sqrt(J2) - k_c [Pa] (paper 000, Eq. 3). */
       double
       yield_function(const dealii::SymmetricTensor<2, 3> &stress) const;
-
-      /** The same model with the dilatancy coefficient @p alpha_psi instead of its own
-       *  (a state-dependent dilatancy, Material::dilatancy_coefficient()); a copy of a
-       *  few numbers, nothing allocated. */
-      DruckerPrager
-      with_dilatancy_coefficient(double alpha_psi) const
-      {
-        DruckerPrager copy(*this);
-        copy.dilatancy_coefficient = alpha_psi;
-        return copy;
-      }
 
       /** The friction coefficient α_φ (dimensionless). */
       double

@@ -1,0 +1,119 @@
+#include <cmath>
+#include <slidewave/core/input_error.h>
+#include <slidewave/core/run_bounds.h>
+#include <slidewave/granular/granular_water_scene.h>
+
+namespace slidewave
+{
+  namespace granular
+  {
+    namespace
+    {
+      const std::string section       = "Granular water";
+      const std::string soil_section  = "Material points";
+      const std::string fluid_section = "Free surface flow";
+
+      /** Whether @p a and @p b agree to round-off relative to @p scale. */
+      bool
+      same(const double a, const double b, const double scale)
+      {
+        return std::abs(a - b) <= 1e-12 * scale;
+      }
+    } // namespace
+
+
+
+    void
+    GranularWaterScene::check_parameters() const
+    {
+      // One grid for both phases: the skeleton's and the water's must be the same.
+      const double extent = (fluid_parameters.upper_right - fluid_parameters.lower_left).norm();
+      for (unsigned int d = 0; d < 2; ++d)
+        if (!same(soil_parameters.lower_left[d], fluid_parameters.lower_left[d], extent)
+            || !same(soil_parameters.upper_right[d], fluid_parameters.upper_right[d], extent))
+          throw InputError(soil_section + "/Grid",
+                           "a domain unlike '" + fluid_section + "/Grid''s",
+                           "the same lower left and upper right corners in both subsections "
+                           "(the skeleton and the water share one grid)");
+      if (!same(soil_parameters.cell_size, fluid_parameters.cell_size, fluid_parameters.cell_size))
+        throw InputError(soil_section + "/Grid/Cell size",
+                         to_string(soil_parameters.cell_size),
+                         "the same as '" + fluid_section
+                           + "/Grid/Cell size' = " + to_string(fluid_parameters.cell_size)
+                           + " (the skeleton and the water share one grid)");
+      const dealii::Tensor<1, 2> &g = fluid_parameters.fluid.gravity;
+      for (unsigned int d = 0; d < 2; ++d)
+        if (!same(soil_parameters.gravity[d], g[d], std::max(g.norm(), 1.)))
+          throw InputError(soil_section + "/Gravity",
+                           to_string(soil_parameters.gravity[0]) + ", "
+                             + to_string(soil_parameters.gravity[1]),
+                           "the same as '" + fluid_section + "/Fluids/Gravity' = " + to_string(g[0])
+                             + ", " + to_string(g[1])
+                             + " (one gravity acts on the grains and the water)");
+      if (fluid_parameters.element_degree != 1)
+        throw InputError(fluid_section + "/Finite elements/Degree",
+                         std::to_string(fluid_parameters.element_degree),
+                         "1 with Physics = granular water (the skeleton's nodes are the "
+                         "vertices)");
+      if (fluid_parameters.adaptive
+          && soil_parameters.shape_function == grid::ShapeFunction::bspline)
+        throw InputError(soil_section + "/Shape functions",
+                         "bspline",
+                         "q1, gimp or cpgimp with '" + fluid_section
+                           + "/Adaptive grid/Enable = true' (a B-spline's domain is a cell of "
+                             "the point's own cell's size, which would jump where the cells "
+                             "change size)");
+      if (soil_parameters.adaptivity.enabled)
+        throw InputError(soil_section + "/Adaptive grid/Enable",
+                         "true",
+                         "false with Physics = granular water: the grid both phases share "
+                         "adapts by '"
+                           + fluid_section
+                           + "/Adaptive grid' (fine along the water surface and where the "
+                             "grains are)");
+      if (!fluid_parameters.porosity.empty())
+        throw InputError(fluid_section + "/Porous structure/Porosity",
+                         fluid_parameters.porosity,
+                         "empty with Physics = granular water (the skeleton is the porous "
+                         "solid)");
+      if (soil_parameters.initial_stress == soil::InitialStress::gravity_loading)
+        throw InputError(soil_section + "/Initial stress/Type",
+                         "gravity loading",
+                         "none, geostatic (the buoyant effective stress where the grains "
+                         "are in water) or uniform with Physics = granular water");
+      if (soil_parameters.prescribed_velocity)
+        throw InputError(soil_section + "/Prescribed velocity",
+                         "(set)",
+                         "none with Physics = granular water");
+      // The grains are denser than the skeleton: 0 < n_0 <= 0.99.
+      for (const auto &material : soil_parameters.materials)
+        {
+          const double n0 = 1. - material.density / parameters.grain_density;
+          if (!(n0 > 0. && n0 <= 0.99))
+            throw InputError(soil_section + "/Material '" + material.name + "'/Density",
+                             to_string(material.density),
+                             "a dry density (1 - n_0) rho^s between 0.01 and 1 times '" + section
+                               + "/Grain density' = " + to_string(parameters.grain_density)
+                               + " (an initial porosity in (0, 0.99])");
+        }
+      if (parameters.exact_solution != GranularExactSolution::none)
+        {
+          if (soil_parameters.materials.empty()
+              || soil_parameters.materials[0].model != materials::MaterialModel::linear_elastic)
+            throw InputError(soil_section + "/Material 1/Model",
+                             soil_parameters.materials.empty() ? "(none)" :
+                                                                 soil_parameters.materials[0].name,
+                             "a linear elastic material with an exact solution");
+          if (parameters.permeability_law != PermeabilityLaw::constant)
+            throw InputError(section + "/Permeability law",
+                             "Kozeny-Carman",
+                             "constant with 'Exact solution = Terzaghi' (its c_v is constant)");
+        }
+      core::check_step_count(scene,
+                             soil_parameters.fixed_time_step,
+                             soil_section + "/Fixed time step",
+                             to_string(soil_parameters.fixed_time_step),
+                             "'Fixed time step'");
+    }
+  } // namespace granular
+} // namespace slidewave

@@ -125,9 +125,9 @@ namespace slidewave
        *  sum |u_i - u(x_i, t)| h(x_i, t) a_i over sum |u(x_i, t)| h(x_i, t) a_i (0 on a
        *  flat bed); and the columns' own sum_p |h_p - h(x_p, t)| A_p over the same
        *  sum h(x_i, t) a_i, with A_p = V_p / h_p (doc/depth-averaged.md, Speed and
-       *  accuracy: why both). */
+       *  accuracy: why both), only @p with_columns (0 otherwise). */
       std::array<double, 3>
-      dam_break_errors(double time) const;
+      dam_break_errors(double time, bool with_columns = false) const;
 
       /** The dry-bed dam break's front (Ritter, or on a slope): the largest x of a node
        *  whose depth exceeds 1 % of 'Left depth', and the same point of the exact

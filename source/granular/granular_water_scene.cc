@@ -14,15 +14,6 @@ namespace slidewave
 {
   namespace granular
   {
-    namespace
-    {
-      const std::string section       = "Granular water";
-      const std::string soil_section  = "Material points";
-      const std::string fluid_section = "Free surface flow";
-    } // namespace
-
-
-
     void
     GranularWaterScene::declare_parameters(dealii::ParameterHandler &prm)
     {

@@ -9,10 +9,6 @@ namespace slidewave
   {
     namespace
     {
-      const std::string section       = "Granular water";
-      const std::string soil_section  = "Material points";
-      const std::string fluid_section = "Free surface flow";
-
       /** Whether @p a and @p b agree to round-off relative to @p scale. */
       bool
       same(const double a, const double b, const double scale)

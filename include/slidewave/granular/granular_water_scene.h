@@ -104,6 +104,11 @@ namespace slidewave
              dealii::TimerOutput        &timer) override;
 
     private:
+      /** The scene's subsections: its own, the skeleton's and the water's. */
+      static inline const std::string section       = "Granular water";
+      static inline const std::string soil_section  = "Material points";
+      static inline const std::string fluid_section = "Free surface flow";
+
       /** Refuses what the two phases on one grid cannot do (InputError naming the
        *  parameter): granular_water_scene_checks.cc. */
       void

@@ -291,7 +291,7 @@ namespace slidewave
 
 
     void
-    FreeSurfaceSolver::save(const std::string &prefix) const
+    FreeSurfaceSolver::save(const std::string &prefix)
     {
       grid.save(prefix);
     }

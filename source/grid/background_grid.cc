@@ -1,9 +1,11 @@
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
+#include <iostream>
 #include <limits>
 #include <slidewave/grid/background_grid.h>
 
@@ -93,18 +95,104 @@ namespace slidewave
       for (GridFollower *follower : followers)
         follower->before_checkpoint_load();
       tria.load(prefix);
+      // The partition was attached first (save()): its handle comes first.
+      saved_partition.assign(tria.n_active_cells(), SavedPartition{0, 0, 0, 0});
+      const unsigned int handle = tria.register_data_attach(
+        [](const CellIterator &, const dealii::Triangulation<2>::CellStatus) {
+          return std::vector<char>();
+        },
+        /*returns_variable_size_data=*/false);
+      tria.notify_ready_to_unpack(
+        handle,
+        [this](const CellIterator &cell,
+               const dealii::Triangulation<2>::CellStatus,
+               const boost::iterator_range<std::vector<char>::const_iterator> &data) {
+          AssertThrow(static_cast<std::size_t>(data.end() - data.begin()) == sizeof(SavedPartition),
+                      dealii::ExcInternalError());
+          std::memcpy(&saved_partition[cell->active_cell_index()],
+                      &*data.begin(),
+                      sizeof(SavedPartition));
+        });
       distribute_dofs();
       for (GridFollower *follower : followers)
         follower->grid_ready();
       for (GridFollower *follower : followers)
         follower->checkpoint_loaded();
+      restore_partition();
     }
 
 
 
     void
-    BackgroundGrid::save(const std::string &prefix) const
+    BackgroundGrid::restore_partition()
     {
+      const MPI_Comm     comm    = tria.get_communicator();
+      const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+      // Each saved rank's number of cells, as any cell of it tells (0: no cell seen here).
+      std::vector<unsigned int> saved_cells(n_ranks, 0);
+      unsigned int              saved_ranks = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const SavedPartition &saved = saved_partition[cell->active_cell_index()];
+            saved_ranks                 = std::max(saved_ranks, saved.n_ranks);
+            if (saved.n_ranks == n_ranks && saved.rank < n_ranks)
+              saved_cells[saved.rank] = saved.n_cells;
+          }
+      saved_ranks = dealii::Utilities::MPI::max(saved_ranks, comm);
+      MPI_Allreduce(MPI_IN_PLACE, saved_cells.data(), n_ranks, MPI_UNSIGNED, MPI_MAX, comm);
+      const unsigned int fewest = *std::min_element(saved_cells.begin(), saved_cells.end());
+      if (n_ranks == 1 || saved_ranks != n_ranks || fewest == 0)
+        {
+          saved_partition.clear();
+          return;
+        }
+      const unsigned int most = *std::max_element(saved_cells.begin(), saved_cells.end());
+      restoring_weights.assign(tria.n_active_cells(), 0);
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const SavedPartition &saved = saved_partition[cell->active_cell_index()];
+            restoring_weights[cell->active_cell_index()]
+              = most / saved.n_cells + (saved.count < most % saved.n_cells ? 1 : 0);
+          }
+      saved_partition.clear();
+      repartition();
+      restoring_weights.clear();
+      const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+      const bool         restored
+        = dealii::Utilities::MPI::min(
+            tria.n_locally_owned_active_cells() == saved_cells[rank] ? 1u : 0u, comm)
+          == 1;
+      if (!restored && rank == 0)
+        std::cerr << "Warning: the checkpoint's partition of the cells could not be "
+                     "restored; the resumed run agrees with the uninterrupted one to "
+                     "round-off only."
+                  << std::endl;
+    }
+
+
+
+    void
+    BackgroundGrid::save(const std::string &prefix)
+    {
+      // Each cell's rank, its number of cells and a count (restore_partition()); first,
+      // so that load() finds it under the first handle.
+      const SavedPartition partition{
+        dealii::Utilities::MPI::n_mpi_processes(tria.get_communicator()),
+        dealii::Utilities::MPI::this_mpi_process(tria.get_communicator()),
+        tria.n_locally_owned_active_cells(),
+        0};
+      unsigned int count = 0;
+      tria.register_data_attach(
+        [partition, &count](const CellIterator &, const dealii::Triangulation<2>::CellStatus) {
+          SavedPartition cell_record = partition;
+          cell_record.count          = count++;
+          std::vector<char> data(sizeof(SavedPartition));
+          std::memcpy(data.data(), &cell_record, sizeof(SavedPartition));
+          return data;
+        },
+        /*returns_variable_size_data=*/false);
       for (GridFollower *follower : followers)
         follower->prepare_for_checkpoint();
       tria.save(prefix);
@@ -135,6 +223,8 @@ namespace slidewave
     BackgroundGrid::cell_weight(const CellIterator                        &cell,
                                 const dealii::Triangulation<2>::CellStatus status) const
     {
+      if (!restoring_weights.empty())
+        return restoring_weights[cell->active_cell_index()];
       unsigned long long weight = cell_base_weight;
       for (const GridFollower *follower : followers)
         weight += follower->cell_weight(cell, status);

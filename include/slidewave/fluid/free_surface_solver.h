@@ -104,7 +104,7 @@ namespace slidewave
       load(const std::string &prefix);
 
       void
-      save(const std::string &prefix) const;
+      save(const std::string &prefix);
 
       double
       stable_time_step() const;

@@ -88,15 +88,18 @@ namespace slidewave
       /**
        * Resume: the coarse grid, every follower's before_checkpoint_load(), then the cells
        * written by save() under @p prefix (on any number of ranks), the dofs, every
-       * follower's grid_ready() and then its checkpoint_loaded(), in attach order.
+       * follower's grid_ready() and then its checkpoint_loaded(), in attach order; on as
+       * many ranks as wrote the checkpoint, finally the partition it was written with
+       * (restore_partition()).
        */
       void
       load(const std::string &prefix);
 
-      /** Writes the cells and every follower's data (prepare_for_checkpoint, in attach
-       *  order) under @p prefix (collective). */
+      /** Writes the cells, their partition (each cell's rank; restore_partition()) and
+       *  every follower's data (prepare_for_checkpoint, in attach order) under @p prefix
+       *  (collective). */
       void
-      save(const std::string &prefix) const;
+      save(const std::string &prefix);
 
       /** Attaches @p follower: it follows every later event of the cells. */
       void
@@ -263,6 +266,31 @@ namespace slidewave
       void
       finish_change();
 
+      /**
+       * deal.II partitions a loaded grid evenly by cells, not by the weights the saved
+       * partition came from: the sums over cells and the solvers' block preconditioners
+       * would then differ from the uninterrupted run's by round-off. save() gives every
+       * cell its rank's number of cells n_r and a count k < n_r; with T the largest n_r,
+       * a cell weighing floor(T / n_r), plus one for the first (T mod n_r) counts, makes
+       * every saved rank's cells weigh exactly T, so p4est's weighted partition (cuts at
+       * multiples of the total over the ranks) cuts exactly where the saved one did. Done
+       * after the followers took their data back, as a repartition they follow; checked
+       * (each rank's number of cells), warned about if it failed. On another number of
+       * ranks the data is read and dropped.
+       */
+      void
+      restore_partition();
+
+      /** One cell's record of the partition it was saved on. */
+      struct SavedPartition
+      {
+        unsigned int n_ranks, rank, n_cells, count;
+      };
+      /** Per active cell index, while restore_partition() runs: the weight that restores
+       *  the saved partition (empty otherwise: cell_weight() as usual). */
+      std::vector<unsigned int> restoring_weights;
+      /** What load() read of the saved partition, by active cell index. */
+      std::vector<SavedPartition>                     saved_partition;
       dealii::Point<2>                                corner_low, corner_high;
       double                                          h;
       GridChanges                                     settings;

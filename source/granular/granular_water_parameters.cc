@@ -77,7 +77,7 @@ namespace slidewave
       {
         prm.declare_entry("Exact solution",
                           "none",
-                          Selection("none|Terzaghi|at rest"),
+                          Selection("none|Terzaghi|at rest|seepage"),
                           "'Terzaghi': one-dimensional consolidation of a column of height "
                           "'Column height' with a drained top and an impervious base under "
                           "'Top load' (Material 1 linear elastic, no gravity): the pore "
@@ -91,7 +91,14 @@ namespace slidewave
                           "effective stresses against the buoyant geostatic state "
                           "sigma'_yy = -(rho_dry - (1 - n_0) rho^w) g (H - y), sigma'_xx = "
                           "nu / (1 - nu) sigma'_yy (Material 1 linear elastic), relative "
-                          "to its value at the base.");
+                          "to its value at the base. 'seepage': water flowing down at the "
+                          "superficial velocity U of the top inflow ('Free surface flow/"
+                          "Boundary conditions/Top = inflow', bottom open, no gravity) through "
+                          "a layer of height 'Column height' resting on the grid's bottom: "
+                          "the pressure gradient in the layer's middle half (nodes' least "
+                          "squares) against the steady dp/dy = C(n_0, k, U / n_0) U / n_0^2 "
+                          "of the drag law (Darcy's mu U / k plus the Forchheimer term), "
+                          "relative to it.");
         prm.declare_entry("Column height", "1", Double(0.), "H of the column [m].");
         prm.declare_entry("Time factors",
                           "0.05, 0.1, 0.2, 0.5, 1",
@@ -134,6 +141,7 @@ namespace slidewave
         const std::string exact = prm.get("Exact solution");
         exact_solution          = exact == "Terzaghi" ? GranularExactSolution::terzaghi :
                                   exact == "at rest"  ? GranularExactSolution::at_rest :
+                                  exact == "seepage"  ? GranularExactSolution::seepage :
                                                         GranularExactSolution::none;
         column_height           = prm.get_double("Column height");
         tolerance               = prm.get_double("Tolerance");

@@ -42,6 +42,10 @@ namespace slidewave
       fluid_parameters.parse_parameters(prm);
       prm.leave_subsection();
       soil_parameters.point_forces = parameters.top_load > 0.;
+      // The skeleton's rigid solids hold the water too.
+      for (const auto &wall : soil_parameters.walls)
+        if (wall.is_solid())
+          fluid_parameters.solids.push_back(wall);
       fluid_output = fluid::FreeSurfaceOutput(scene.output_directory, fluid_parameters.gauges);
 
       check_parameters();
@@ -129,6 +133,10 @@ namespace slidewave
                                    const unsigned int      region_index,
                                    const double            hx,
                                    const double            hy) {
+                              // No grains inside a rigid solid.
+                              for (const auto &solid : fluid_parameters.solids)
+                                if (solid.contains(position, 0.))
+                                  return false;
                               model->fill_new_point(properties, position, region_index, hx, hy);
                               return true;
                             });

@@ -59,6 +59,12 @@ namespace slidewave
                            + "/Adaptive grid/Enable = true' (a B-spline's domain is a cell of "
                              "the point's own cell's size, which would jump where the cells "
                              "change size)");
+      for (const auto &solid : fluid_parameters.solids)
+        if (std::isfinite(solid.release_time))
+          throw InputError(solid.path + "/Release time",
+                           to_string(solid.release_time),
+                           "'never' for a solid with Physics = granular water (it holds the "
+                           "water too, whose constraints do not change during the run)");
       if (soil_parameters.adaptivity.enabled)
         throw InputError(soil_section + "/Adaptive grid/Enable",
                          "true",
@@ -100,6 +106,20 @@ namespace slidewave
                              soil_parameters.materials.empty() ? "(none)" :
                                                                  soil_parameters.materials[0].name,
                              "a linear elastic material with an exact solution");
+          if (parameters.exact_solution == GranularExactSolution::seepage)
+            {
+              if (fluid_parameters.boundaries[3] != fluid::FlowBoundary::inflow)
+                throw InputError(fluid_section + "/Boundary conditions/Top",
+                                 "not inflow",
+                                 "inflow with 'Exact solution = seepage' (the water enters "
+                                 "at the top at its 'Inflow velocity')");
+              if (fluid_parameters.fluid.gravity.norm() > 0.)
+                throw InputError(fluid_section + "/Fluids/Gravity",
+                                 to_string(fluid_parameters.fluid.gravity[0]) + ", "
+                                   + to_string(fluid_parameters.fluid.gravity[1]),
+                                 "0, 0 with 'Exact solution = seepage' (the gradient compared "
+                                 "is the drag's alone)");
+            }
           if (parameters.permeability_law != PermeabilityLaw::constant)
             throw InputError(section + "/Permeability law",
                              "Kozeny-Carman",

@@ -26,15 +26,25 @@ namespace slidewave
       using namespace dealii::Patterns;
       prm.declare_entry("Type",
                         "none",
-                        Selection("none|roller|fixed"),
+                        Selection("none|roller|fixed|solid"),
                         "'none': this wall is not used. 'roller': the nodes on the wall keep "
-                        "zero normal velocity (free slip). 'fixed': zero velocity (no slip).");
+                        "zero normal velocity (free slip). 'fixed': zero velocity (no slip). "
+                        "'solid': a rigid body, the polygon 'Polygon'; every node inside it or "
+                        "on its edges keeps zero velocity (no slip; an inclined plane across "
+                        "the cells becomes a staircase of held nodes). In granular water the "
+                        "water's velocity is held at the same nodes, and no point is created "
+                        "inside the solid.");
       prm.declare_entry("From",
                         "0, 0",
                         Anything(),
                         "One end 'x, y' of the wall [m]; the wall is horizontal or vertical "
                         "and lies on grid lines.");
       prm.declare_entry("To", "0, 1", Anything(), "The other end 'x, y' [m].");
+      prm.declare_entry("Polygon",
+                        "",
+                        Anything(),
+                        "Of a 'solid': vertices 'x1, y1; x2, y2; ...' [m], at least three, in "
+                        "order around it.");
       prm.declare_entry("Release time",
                         "never",
                         Anything(),
@@ -51,14 +61,42 @@ namespace slidewave
       const std::string type = prm.get("Type");
       if (type == "none")
         return false;
-      condition = type == "fixed" ? Condition::fixed : Condition::roller;
-      start     = parse_point(path + "/From", prm.get("From"));
-      end       = parse_point(path + "/To", prm.get("To"));
-      if (start.distance(end) == 0. || (start[0] != end[0] && start[1] != end[1]))
-        throw InputError(path + "/To",
-                         prm.get("To"),
-                         "a point other than 'From' on the same vertical or horizontal "
-                         "line (walls are axis-aligned)");
+      condition  = type == "roller" ? Condition::roller : Condition::fixed;
+      this->path = path;
+      polygon.clear();
+      if (type == "solid")
+        {
+          const std::string text = prm.get("Polygon");
+          for (const auto &vertex : dealii::Utilities::split_string_list(text, ';'))
+            {
+              const auto v = parse_number_list(path + "/Polygon",
+                                               vertex,
+                                               "vertices 'x1, y1; x2, y2; ...' [m]");
+              if (v.size() != 2)
+                throw InputError(path + "/Polygon",
+                                 text,
+                                 "vertices 'x1, y1; x2, y2; ...' (two numbers each)");
+              polygon.emplace_back(v[0], v[1]);
+            }
+          double twice_area = 0.;
+          for (unsigned int i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+            twice_area += polygon[j][0] * polygon[i][1] - polygon[i][0] * polygon[j][1];
+          if (polygon.size() < 3 || !(std::abs(twice_area) > 0.))
+            throw InputError(path + "/Polygon",
+                             text,
+                             "at least three vertices enclosing an area (the solid of 'Type = "
+                             "solid')");
+        }
+      else
+        {
+          start = parse_point(path + "/From", prm.get("From"));
+          end   = parse_point(path + "/To", prm.get("To"));
+          if (start.distance(end) == 0. || (start[0] != end[0] && start[1] != end[1]))
+            throw InputError(path + "/To",
+                             prm.get("To"),
+                             "a point other than 'From' on the same vertical or horizontal "
+                             "line (walls are axis-aligned)");
+        }
       const std::string release = dealii::Utilities::trim(prm.get("Release time"));
       if (release == "never")
         release_time = std::numeric_limits<double>::infinity();
@@ -86,6 +124,23 @@ namespace slidewave
     bool
     RigidWall::contains(const dealii::Point<2> &x, const double tolerance) const
     {
+      if (is_solid())
+        {
+          // Inside (even-odd rule), or within the tolerance of an edge.
+          bool inside = false;
+          for (unsigned int i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+            {
+              const dealii::Point<2>    &a = polygon[i], &b = polygon[j];
+              const dealii::Tensor<1, 2> edge = b - a;
+              const double               t
+                = std::clamp((x - a) * edge / std::max(edge.norm_square(), 1e-300), 0., 1.);
+              if (x.distance(a + t * edge) <= tolerance)
+                return true;
+              if ((a[1] > x[1]) != (b[1] > x[1]) && x[0] < a[0] + edge[0] * (x[1] - a[1]) / edge[1])
+                inside = !inside;
+            }
+          return inside;
+        }
       const unsigned int n = normal_component(), t = 1 - n;
       return std::abs(x[n] - start[n]) <= tolerance
              && x[t] >= std::min(start[t], end[t]) - tolerance

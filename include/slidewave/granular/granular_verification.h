@@ -28,7 +28,11 @@ namespace slidewave
      *   one; each profile (nodes' rows averaged) into terzaghi_profiles.csv;
      * - at rest: at the end, the nodes' pore pressure against rho^w g (top - y), relative to
      *   rho^w g H, and the points' effective stresses against the buoyant geostatic state,
-     *   relative to its value at the base.
+     *   relative to its value at the base;
+     * - seepage: at the end, the pressure gradient of the nodes in the middle half of the
+     *   layer (least squares, with the odd-even mode between rows of nodes fitted apart)
+     *   against the steady gradient C U / n_0^2 of the drag law
+     *   (DragLaw) at the top inflow's superficial velocity U, relative to it.
      *
      * Its state (the profiles so far) goes into the checkpoints.
      */
@@ -90,6 +94,12 @@ namespace slidewave
       std::array<double, 2>
       at_rest_errors(const grid::FiniteElementField &flow,
                      const particles::PointCloud    &cloud) const;
+
+      /** Seepage: the measured and the exact pressure gradient [Pa/m], the exact one's
+       *  Darcy part and the amplitude [Pa] of the pressure's odd-even mode between rows of
+       *  nodes (collective). */
+      std::array<double, 4>
+      seepage_gradients(const grid::FiniteElementField &flow) const;
 
       const SceneParameters               &scene;
       const soil::MaterialPointParameters &soil_parameters;

@@ -21,7 +21,8 @@ namespace slidewave
     {
       none,
       terzaghi, ///< one-dimensional consolidation under a top load (paper 002, §4.1)
-      at_rest   ///< a saturated column settled under gravity: hydrostatic and geostatic
+      at_rest,  ///< a saturated column settled under gravity: hydrostatic and geostatic
+      seepage   ///< steady flow down through a layer at rest: Darcy-Forchheimer's gradient
     };
 
     /**

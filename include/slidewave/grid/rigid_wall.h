@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace slidewave
 {
@@ -17,6 +18,11 @@ namespace slidewave
      * removable support: it holds the material until then and is gone afterwards (the
      * gate of a column collapse, the face support of a tunnel). Without one it is
      * permanent (a tunnel lining, a step in the bed).
+     *
+     * A 'solid' is a rigid body of any shape, a polygon: every node inside it or on its
+     * edges is held in both directions (no slip), so that the grid's held nodes follow the
+     * body's outline to a cell (a staircase; an inclined plane across the cells, paper
+     * 002, §4.3). In granular water the water's velocity is held at the same nodes.
      */
     struct RigidWall
     {
@@ -36,19 +42,31 @@ namespace slidewave
       bool
       parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
 
-      /** Whether @p x lies on the segment (within @p tolerance). */
+      /** Whether @p x lies on the segment, or for a solid inside the polygon or on its
+       *  edges (within @p tolerance). */
       bool
       contains(const dealii::Point<2> &x, double tolerance) const;
 
-      /** 0 for a vertical wall (it holds v_x), 1 for a horizontal one (v_y). */
+      /** 0 for a vertical wall (it holds v_x), 1 for a horizontal one (v_y); a solid
+       *  holds both (its condition is 'fixed'). */
       unsigned int
       normal_component() const
       {
         return start[0] == end[0] ? 0 : 1;
       }
 
+      bool
+      is_solid() const
+      {
+        return !polygon.empty();
+      }
+
       Condition        condition = Condition::roller;
       dealii::Point<2> start, end;
+      /** A solid's outline (at least three vertices, in order; empty for a segment). */
+      std::vector<dealii::Point<2>> polygon;
+      /** Where it was read ("<section>/Rigid wall N"), for messages. */
+      std::string path;
       /** The wall holds while t < release_time. */
       double release_time = std::numeric_limits<double>::infinity();
     };

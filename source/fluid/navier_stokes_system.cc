@@ -17,6 +17,7 @@
 #include <deal.II/numerics/vector_tools.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/fluid/navier_stokes_system.h>
+#include <slidewave/fluid/solid_constraints.h>
 #include <slidewave/grid/tree_order.h>
 #include <slidewave/linear_algebra/cell_evaluation.h>
 #include <stdexcept>
@@ -91,37 +92,8 @@ namespace slidewave
               dealii::VectorTools::interpolate_boundary_values(
                 dofs, side, inflow, flow_constraints, dealii::ComponentMask({true, true, false}));
         }
-      // Rigid solids: both velocity components at every support point inside or on them
-      // (the cells are axis-aligned rectangles: x = v_0 + (xi h_x, eta h_y)).
-      if (!parameters.solids.empty())
-        {
-          const auto                                  &fe          = flow.finite_element();
-          const std::vector<dealii::Point<2>>          unit_points = fe.get_unit_support_points();
-          std::vector<dealii::types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-          const double                                 tolerance = 1e-6 * parameters.cell_size;
-          for (const auto &cell : dofs.active_cell_iterators())
-            if (!cell->is_artificial())
-              {
-                cell->get_dof_indices(cell_dofs);
-                const dealii::Point<2> origin = cell->vertex(0);
-                const double           hx     = cell->vertex(1)[0] - origin[0];
-                const double           hy     = cell->vertex(2)[1] - origin[1];
-                for (unsigned int i = 0; i < cell_dofs.size(); ++i)
-                  if (fe.system_to_component_index(i).first < 2
-                      && flow_constraints.can_store_line(cell_dofs[i])
-                      && !flow_constraints.is_constrained(cell_dofs[i]))
-                    {
-                      const dealii::Point<2> x(origin[0] + unit_points[i][0] * hx,
-                                               origin[1] + unit_points[i][1] * hy);
-                      for (const auto &solid : parameters.solids)
-                        if (solid.contains(x, tolerance))
-                          {
-                            flow_constraints.add_line(cell_dofs[i]);
-                            break;
-                          }
-                    }
-              }
-        }
+      // Rigid solids hold both velocity components (after the hanging nodes and sides).
+      add_solid_constraints(dofs, parameters.solids, 1e-6 * parameters.cell_size, flow_constraints);
       // A closed tank: the pressure is determined up to a constant, set to 0 at the lower
       // left corner (a vertex of every grid, never hanging).
       if (sides.closed())

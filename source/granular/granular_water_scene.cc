@@ -443,6 +443,13 @@ namespace slidewave
       // (a material's model decides its points' properties: Hencky's carry b^e)
       for (const auto &material : soil_parameters.materials)
         out << " " << material.signature();
+      // (a solid holds the water's and the skeleton's nodes: another one is another scene)
+      for (const auto &solid : fluid_parameters.solids)
+        {
+          out << "; solid";
+          for (const auto &vertex : solid.polygon)
+            out << " " << vertex;
+        }
       return out.str();
     }
 

@@ -60,7 +60,14 @@ namespace slidewave
                              "the point's own cell's size, which would jump where the cells "
                              "change size)");
       for (const auto &solid : fluid_parameters.solids)
-        if (std::isfinite(solid.release_time))
+        if (fluid_parameters.adaptive)
+          throw InputError(solid.path + "/Type",
+                           "solid",
+                           "none, roller or fixed with '" + fluid_section
+                             + "/Adaptive grid/Enable = true' (a coarse cell could step over a "
+                               "thin solid, and the two phases would hold a hanging node "
+                               "differently)");
+        else if (std::isfinite(solid.release_time))
           throw InputError(solid.path + "/Release time",
                            to_string(solid.release_time),
                            "'never' for a solid with Physics = granular water (it holds the "
@@ -120,7 +127,23 @@ namespace slidewave
                                  "0, 0 with 'Exact solution = seepage' (the gradient compared "
                                  "is the drag's alone)");
             }
-          if (parameters.permeability_law != PermeabilityLaw::constant)
+          if (parameters.exact_solution == GranularExactSolution::seepage)
+            {
+              if (fluid_parameters.boundaries[2] != fluid::FlowBoundary::open)
+                throw InputError(fluid_section + "/Boundary conditions/Bottom",
+                                 "not open",
+                                 "open with 'Exact solution = seepage' (the water leaves at "
+                                 "the bottom)");
+              if (parameters.column_height < 4. * fluid_parameters.cell_size * (1. - 1e-9))
+                throw InputError(section + "/Verification/Column height",
+                                 to_string(parameters.column_height),
+                                 "at least four cells ("
+                                   + to_string(4. * fluid_parameters.cell_size)
+                                   + " m) with 'Exact solution = seepage' (its middle half "
+                                     "must hold two rows of nodes for the gradient)");
+            }
+          if (parameters.exact_solution == GranularExactSolution::terzaghi
+              && parameters.permeability_law != PermeabilityLaw::constant)
             throw InputError(section + "/Permeability law",
                              "Kozeny-Carman",
                              "constant with 'Exact solution = Terzaghi' (its c_v is constant)");

@@ -95,7 +95,8 @@ namespace slidewave
       for (GridFollower *follower : followers)
         follower->before_checkpoint_load();
       tria.load(prefix);
-      // The partition was attached first (save()): its handle comes first.
+      // The partition was attached first among the fixed-size data (save()): its handle
+      // comes first among them (the points' data are variable-size, numbered apart).
       saved_partition.assign(tria.n_active_cells(), SavedPartition{0, 0, 0, 0});
       const unsigned int handle = tria.register_data_attach(
         [](const CellIterator &, const dealii::Triangulation<2>::CellStatus) {
@@ -144,6 +145,12 @@ namespace slidewave
       const unsigned int fewest = *std::min_element(saved_cells.begin(), saved_cells.end());
       if (n_ranks == 1 || saved_ranks != n_ranks || fewest == 0)
         {
+          if (n_ranks > 1 && saved_ranks == n_ranks
+              && dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+            std::cerr << "Warning: a rank of the checkpoint held no cell, so its partition "
+                         "is not restored; the resumed run agrees with the uninterrupted one "
+                         "to round-off only."
+                      << std::endl;
           saved_partition.clear();
           return;
         }
@@ -183,9 +190,9 @@ namespace slidewave
         dealii::Utilities::MPI::this_mpi_process(tria.get_communicator()),
         tria.n_locally_owned_active_cells(),
         0};
-      unsigned int count = 0;
       tria.register_data_attach(
-        [partition, &count](const CellIterator &, const dealii::Triangulation<2>::CellStatus) {
+        [partition, count = 0u](const CellIterator &,
+                                const dealii::Triangulation<2>::CellStatus) mutable {
           SavedPartition cell_record = partition;
           cell_record.count          = count++;
           std::vector<char> data(sizeof(SavedPartition));

@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/grid/rigid_wall.h>
+#include <sstream>
 
 namespace slidewave
 {
@@ -117,6 +118,50 @@ namespace slidewave
             throw InputError(path + "/Release time", release, "'never' or a time [s]");
         }
       return true;
+    }
+
+
+
+    void
+    RigidWall::check_solid_in_grid(const dealii::Point<2> &lower_left,
+                                   const dealii::Point<2> &upper_right,
+                                   const double            cell_size,
+                                   const bool              adaptive) const
+    {
+      std::ostringstream text;
+      for (unsigned int i = 0; i < polygon.size(); ++i)
+        text << (i > 0 ? "; " : "") << polygon[i][0] << ", " << polygon[i][1];
+      if (adaptive)
+        throw InputError(path + "/Type",
+                         "solid",
+                         "none, roller or fixed on an adaptive grid (a coarse cell could step "
+                         "over a thin solid; the solid's cells are not kept fine)");
+      // The area inside the grid, by clipping is not needed: a solid of one cell's area
+      // whose box overlaps the grid by a cell in each direction holds nodes.
+      double           twice_area = 0.;
+      dealii::Point<2> low = polygon[0], high = polygon[0];
+      for (unsigned int i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+        {
+          twice_area += polygon[j][0] * polygon[i][1] - polygon[i][0] * polygon[j][1];
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              low[d]  = std::min(low[d], polygon[i][d]);
+              high[d] = std::max(high[d], polygon[i][d]);
+            }
+        }
+      bool inside = true;
+      for (unsigned int d = 0; d < 2; ++d)
+        inside = inside
+                 && std::min(high[d], upper_right[d]) - std::max(low[d], lower_left[d])
+                      >= cell_size * (1. - 1e-9);
+      std::ostringstream area;
+      area << cell_size * cell_size;
+      if (!(0.5 * std::abs(twice_area) >= cell_size * cell_size * (1. - 1e-9)) || !inside)
+        throw InputError(path + "/Polygon",
+                         text.str(),
+                         "a solid of at least one cell's area (h^2 = " + area.str()
+                           + " m^2) reaching a cell into the grid in each direction (a "
+                             "smaller one would hold no node)");
     }
 
 

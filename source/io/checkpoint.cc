@@ -15,6 +15,15 @@ namespace slidewave
   {
     namespace
     {
+      /** The first words of scene.txt: the format of the checkpoint's data (format 2: the
+       *  cells carry their partition first, BackgroundGrid::save). */
+      constexpr const char *format_tag = "checkpoint format 2: ";
+    } // namespace
+
+
+
+    namespace
+    {
       namespace fs = std::filesystem;
 
       const std::string resume_parameter = "Checkpoint/Resume";
@@ -134,7 +143,7 @@ namespace slidewave
                          previous = directory / "checkpoint.previous";
           {
             std::ofstream out(tmp / "scene.txt");
-            out << signature << '\n';
+            out << format_tag << signature << '\n';
           }
           record.write((tmp / "record.txt").string());
           for (const auto &name : growing_files)
@@ -221,6 +230,14 @@ namespace slidewave
       std::ifstream  in(source / "scene.txt");
       std::string    written_by;
       std::getline(in, written_by);
+      if (written_by.rfind(format_tag, 0) != 0)
+        throw InputError(resume_parameter,
+                         "true",
+                         "a checkpoint in this version's format ('" + std::string(format_tag)
+                           + "'); the one in '" + source.string()
+                           + "' was written by an older version, whose cells do not carry "
+                             "their partition (run the scene from its start)");
+      written_by.erase(0, std::string(format_tag).size());
       if (written_by != signature)
         throw InputError(resume_parameter,
                          "true",

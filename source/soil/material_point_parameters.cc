@@ -547,7 +547,11 @@ namespace slidewave
           prm.enter_subsection("Rigid wall " + std::to_string(w));
           grid::RigidWall wall;
           if (wall.parse_parameters(prm, path + "/Rigid wall " + std::to_string(w)))
-            walls.push_back(wall);
+            {
+              if (wall.is_solid())
+                wall.check_solid_in_grid(lower_left, upper_right, cell_size, adaptivity.enabled);
+              walls.push_back(wall);
+            }
           prm.leave_subsection();
         }
 

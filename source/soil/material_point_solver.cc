@@ -82,6 +82,10 @@ namespace slidewave
                                   const unsigned int      region_index,
                                   const double            hx,
                                   const double            hy) {
+                             // No point inside a rigid solid.
+                             for (const auto &wall : prm.walls)
+                               if (wall.is_solid() && wall.contains(position, 0.))
+                                 return false;
                              model.fill_new_point(properties, position, region_index, hx, hy);
                              return true;
                            });

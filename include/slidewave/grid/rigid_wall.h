@@ -42,6 +42,17 @@ namespace slidewave
       bool
       parse_parameters(dealii::ParameterHandler &prm, const std::string &path);
 
+      /** A solid must hold nodes of the grid [@p lower_left, @p upper_right] of cells
+       *  @p cell_size: an area of at least one cell inside the grid; and the grid must not
+       *  adapt (@p adaptive: a coarse cell could step over a thin solid, and the two
+       *  phases would hold a hanging node differently). Throws an InputError naming the
+       *  parameter otherwise. */
+      void
+      check_solid_in_grid(const dealii::Point<2> &lower_left,
+                          const dealii::Point<2> &upper_right,
+                          double                  cell_size,
+                          bool                    adaptive) const;
+
       /** Whether @p x lies on the segment, or for a solid inside the polygon or on its
        *  edges (within @p tolerance). */
       bool

@@ -231,8 +231,8 @@ namespace slidewave
                           "0.05",
                           Double(0.),
                           "The run stops (exit status 2) when the water volume (the "
-                          "integral of phi) differs from the initial one by more than this "
-                          "fraction (0: never).");
+                          "integral of phi, of n phi in a porous solid) differs from the "
+                          "initial one by more than this fraction (0: never).");
         prm.declare_entry("Maximum speed",
                           "1000",
                           Double(0.),

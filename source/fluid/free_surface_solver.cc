@@ -162,6 +162,7 @@ namespace slidewave
           medium.fluid_fraction       = fluid_fraction.get();
           medium.inverse_permeability = inverse_permeability.get();
           flow_system.set_porous_medium(medium);
+          phase_system.set_porous_medium(medium);
         }
     }
 
@@ -252,6 +253,7 @@ namespace slidewave
       medium.solid_flux           = solid_flux.get();
       medium.grain_density        = grain_density;
       flow_system.set_porous_medium(medium);
+      phase_system.set_porous_medium(medium);
     }
 
 

@@ -37,6 +37,17 @@ namespace slidewave
 
 
     void
+    PhaseFieldSystem::set_porous_medium(const PorousMedium &medium)
+    {
+      // The phase field needs the fluid fraction and the solid's flux; not the drag.
+      porous                      = medium;
+      porous.inverse_permeability = nullptr;
+      porous.grain_density        = 0.;
+    }
+
+
+
+    void
     PhaseFieldSystem::grid_ready()
     {
       setup_system();
@@ -95,6 +106,14 @@ namespace slidewave
       std::vector<dealii::Tensor<1, 2>>        u_face_n(face_quadrature.size()),
         u_face_old(face_quadrature.size());
       std::vector<double> phi_face_n(face_quadrature.size());
+      // The porous solid's fluid fraction and flux (only when there is one).
+      std::unique_ptr<PorousMediumValues> porous_values;
+      if (porous.active())
+        porous_values
+          = std::make_unique<PorousMediumValues>(grid, porous, quadrature, face_quadrature);
+      const std::vector<double> no_viscosity(std::max(quadrature.size(), face_quadrature.size()),
+                                             0.);
+      static const PorousCoefficients open_water;
 
       const double theta = parameters.theta, dt = lengths.dt;
       const double w       = extrapolation_weight(lengths, theta);
@@ -147,6 +166,8 @@ namespace slidewave
           fv_flow, flow_component, flow_dofs_old, &u_old, nullptr, &div_old);
         linear_algebra::evaluate_scalar(fv, phase_dofs, &phi_n, &grad_phi_n);
         const double h = cell->extent_in_direction(0);
+        if (porous_values)
+          porous_values->reinit(cell, dt, no_viscosity);
 
         local_matrix = 0.;
         local_rhs    = 0.;
@@ -154,11 +175,18 @@ namespace slidewave
           {
             const dealii::Tensor<1, 2> u_bar = u_n[q] + w * (u_n[q] - u_old[q]);
             const double               speed = u_bar.norm();
-            // The advection in divergence form, div(u phi) = u . grad phi + phi div u:
-            // summed over the test functions it leaves only the flux through the
-            // sides, so the water volume is kept whatever the discrete divergence of
-            // the stabilized velocity.
-            const double div_bar = div_n[q] + w * (div_n[q] - div_old[q]);
+            // The advection in divergence form, div(n u phi) = n u . grad phi + phi
+            // div(n u): summed over the test functions it leaves only the flux through
+            // the sides, so the water volume is kept whatever the discrete divergence of
+            // the stabilized velocity. In the pores the mixture's divergence R (with the
+            // solid's flux) multiplies phi, and the equation is weighted by the fluid
+            // fraction n (see the class's documentation; n = 1, R = div u in open water).
+            const PorousCoefficients &medium  = porous_values ? (*porous_values)[q] : open_water;
+            const double              n       = medium.n;
+            const double              div_bar = div_n[q] + w * (div_n[q] - div_old[q]);
+            const double              mixture_divergence
+              = porous_values ? n * div_bar + u_bar * medium.grad_n + medium.solid_divergence :
+                                div_bar;
             // SUPG parameter of the interface equation (paper 002, Eq. 95).
             const double tau = 1.
                                / std::sqrt(4. / (dt * dt) + 4. * speed * speed / (h * h)
@@ -175,25 +203,25 @@ namespace slidewave
             const double reaction
               = conservative ? 0. : -gamma * p * (1. - p) * (1. - 2. * p) / epsilon;
             const double explicit_residual
-              = p / dt - (1. - theta) * (u_bar * grad_phi_n[q] + p * div_bar);
+              = n * p / dt - (1. - theta) * (n * (u_bar * grad_phi_n[q]) + p * mixture_divergence);
 
             for (unsigned int i = 0; i < n_dofs; ++i)
               {
                 value[i]    = fv.shape_value(i, q);
                 gradient[i] = fv.shape_grad(i, q);
-                advect[i]   = u_bar * gradient[i] + value[i] * div_bar;
+                advect[i]   = n * (u_bar * gradient[i]) + value[i] * mixture_divergence;
               }
             for (unsigned int i = 0; i < n_dofs; ++i)
               {
                 const double test = value[i] + tau * u_bar * gradient[i];
                 for (unsigned int j = 0; j < n_dofs; ++j)
-                  local_matrix(i, j) += (test * (value[j] / dt + theta * advect[j])
-                                         + theta * kappa * gradient[i] * gradient[j])
+                  local_matrix(i, j) += (test * (n * value[j] / dt + theta * advect[j])
+                                         + theta * n * kappa * gradient[i] * gradient[j])
                                         * JxW;
-                local_rhs(i)
-                  += (test * explicit_residual - (1. - theta) * kappa * gradient[i] * grad_phi_n[q]
-                      + gradient[i] * sharpening_flux + value[i] * reaction)
-                     * JxW;
+                local_rhs(i) += (test * explicit_residual
+                                 - (1. - theta) * n * kappa * gradient[i] * grad_phi_n[q]
+                                 + n * (gradient[i] * sharpening_flux) + n * value[i] * reaction)
+                                * JxW;
               }
           }
         // The inflow sides, weakly and upwind: where the flow enters (u_bar . n < 0) the
@@ -209,11 +237,15 @@ namespace slidewave
               fv_face_flow[velocity].get_function_values(flow.values(0), u_face_n);
               fv_face_flow[velocity].get_function_values(flow.values(1), u_face_old);
               fv_face.get_function_values(phase_old, phi_face_n);
+              if (porous_values)
+                porous_values->reinit_face(cell, f, dt, no_viscosity);
               for (unsigned int q = 0; q < fv_face.n_quadrature_points; ++q)
                 {
                   const dealii::Tensor<1, 2> u_bar
                     = u_face_n[q] + w * (u_face_n[q] - u_face_old[q]);
-                  const double entering = std::min(u_bar * fv_face.normal_vector(q), 0.);
+                  // The water's flux n u . n (the pore velocity times the fluid fraction).
+                  const double n        = porous_values ? porous_values->face(q).n : 1.;
+                  const double entering = std::min(n * (u_bar * fv_face.normal_vector(q)), 0.);
                   const double phi_in
                     = parameters.boundaries.inflow_phase(fv_face.quadrature_point(q)[1], epsilon);
                   const double JxW = fv_face.JxW(q);
@@ -298,6 +330,13 @@ namespace slidewave
       const double theta = parameters.theta, w = extrapolation_weight(lengths, theta);
       const double epsilon = parameters.interface_thickness();
       double       flux    = 0.;
+      std::unique_ptr<PorousMediumValues> porous_values;
+      if (porous.active())
+        porous_values = std::make_unique<PorousMediumValues>(grid,
+                                                             porous,
+                                                             dealii::QGauss<2>(2),
+                                                             face_quadrature);
+      const std::vector<double> no_viscosity(n_q, 0.);
       grid::for_each_owned_cell_in_tree_order(phase.dof_handler(), [&](const auto &cell) {
         if (!cell->at_boundary())
           return;
@@ -318,9 +357,14 @@ namespace slidewave
             fv_face_flow[velocity].get_function_values(flow.values(1), u_old);
             fv_face.get_function_values(phase.values(0), phi_new);
             fv_face.get_function_values(phase_old, phi_old);
+            if (porous_values)
+              porous_values->reinit_face(cell, f, lengths.dt, no_viscosity);
             for (unsigned int q = 0; q < n_q; ++q)
               {
-                const double un  = (u_n[q] + w * (u_n[q] - u_old[q])) * fv_face.normal_vector(q);
+                // The water's flux n u . n (the pore velocity times the fluid fraction).
+                const double n = porous_values ? porous_values->face(q).n : 1.;
+                const double un
+                  = n * ((u_n[q] + w * (u_n[q] - u_old[q])) * fv_face.normal_vector(q));
                 const double phi = theta * phi_new[q] + (1. - theta) * phi_old[q];
                 const double carried
                   = side == FlowBoundary::inflow && un < 0. ?
@@ -331,6 +375,34 @@ namespace slidewave
           }
       });
       return lengths.dt * dealii::Utilities::MPI::sum(flux, grid.communicator());
+    }
+
+
+
+    double
+    PhaseFieldSystem::water_volume() const
+    {
+      if (!porous.active())
+        return phase.integral();
+      // The integral of n phi with the quadrature of the assembly, whose mass term summed
+      // over the test functions is this integral (so the balance closes).
+      const dealii::QGauss<2>   quadrature(2);
+      const dealii::QGauss<1>   face_quadrature(2);
+      dealii::FEValues<2>       fv(phase.finite_element(),
+                             quadrature,
+                             dealii::update_values | dealii::update_JxW_values);
+      PorousMediumValues        porous_values(grid, porous, quadrature, face_quadrature);
+      const std::vector<double> no_viscosity(quadrature.size(), 0.);
+      std::vector<double>       phi(quadrature.size());
+      double                    sum = 0.;
+      grid::for_each_owned_cell_in_tree_order(phase.dof_handler(), [&](const auto &cell) {
+        fv.reinit(cell);
+        fv.get_function_values(phase.values(0), phi);
+        porous_values.reinit(cell, 0., no_viscosity);
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          sum += porous_values[q].n * phi[q] * fv.JxW(q);
+      });
+      return dealii::Utilities::MPI::sum(sum, grid.communicator());
     }
   } // namespace fluid
 } // namespace slidewave

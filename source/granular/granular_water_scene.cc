@@ -160,6 +160,17 @@ namespace slidewave
         });
       if (parameters.top_load > 0.)
         apply_top_load();
+      // The water sees the grains from the start: the first row's water volume is the
+      // integral of n phi, as every later row's (each step hands the skeleton over anew).
+      engine->scatter_points();
+      exchange->to_fluid(engine->nodal_workspace(),
+                         engine->velocity_constraints(),
+                         model->empty_node_mass(),
+                         SkeletonFields{&fluid_solver->solid_fraction_field(),
+                                        &fluid_solver->inverse_permeability_field(),
+                                        &fluid_solver->solid_flux_field()},
+                         0.,
+                         nullptr);
       verification.open_files(false);
       fluid_output.open_gauges(false);
     }

@@ -155,6 +155,15 @@ namespace slidewave
       double
       max_signal_speed() const;
 
+      /** The points to the grid alone, without a step (no grid change, no walls' update):
+       *  the nodal sums of the current state, for a physics coupled at the nodes to read
+       *  before the first step (collective). */
+      void
+      scatter_points()
+      {
+        kernels.particles_to_grid();
+      }
+
       /** Scatters the points and returns the nodal totals {mass, momentum x, momentum y}
        *  (a check of the transfer; collective). */
       std::array<double, 3>

@@ -279,7 +279,7 @@ namespace slidewave
     std::array<double, 3>
     ParticleEngine<Model>::nodal_totals()
     {
-      kernels.particles_to_grid();
+      scatter_points();
       std::array<double, 3> totals{{nodes.nodal_mass.l1_norm(), 0., 0.}};
       for (unsigned int d = 0; d < 2; ++d)
         totals[d + 1] = nodes.momentum[d].mean_value() * nodes.momentum[d].size();

@@ -122,11 +122,12 @@ namespace slidewave
         return flow_system.max_speed();
       }
 
-      /** The integral of phi: the water's area [m^2 per m of width]. */
+      /** The water's area [m^2 per m of width]: the integral of phi, of n phi in the
+       *  pores of a solid (PhaseFieldSystem::water_volume()). */
       double
       water_volume() const
       {
-        return phase.integral();
+        return phase_system.water_volume();
       }
 
       /** Whether every value of the fields is finite (collective). */

@@ -156,5 +156,16 @@ namespace slidewave
              && x[t] >= std::min(start[t], end[t]) - tolerance
              && x[t] <= std::max(start[t], end[t]) + tolerance;
     }
+
+
+
+    bool
+    inside_a_solid(const std::vector<RigidWall> &walls, const dealii::Point<2> &x)
+    {
+      for (const auto &wall : walls)
+        if (wall.is_solid() && wall.contains(x, 0.))
+          return true;
+      return false;
+    }
   } // namespace grid
 } // namespace slidewave

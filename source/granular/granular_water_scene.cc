@@ -134,9 +134,8 @@ namespace slidewave
                                    const double            hx,
                                    const double            hy) {
                               // No grains inside a rigid solid.
-                              for (const auto &solid : fluid_parameters.solids)
-                                if (solid.contains(position, 0.))
-                                  return false;
+                              if (grid::inside_a_solid(fluid_parameters.solids, position))
+                                return false;
                               model->fill_new_point(properties, position, region_index, hx, hy);
                               return true;
                             });

@@ -95,9 +95,12 @@ namespace slidewave
       for (GridFollower *follower : followers)
         follower->before_checkpoint_load();
       tria.load(prefix);
+      // What was saved of the partition, by active cell index, for restore_partition().
+      std::vector<SavedPartition> saved_partition(tria.n_active_cells(),
+                                                  SavedPartition{0, 0, 0, 0});
+
       // The partition was attached first among the fixed-size data (save()): its handle
       // comes first among them (the points' data are variable-size, numbered apart).
-      saved_partition.assign(tria.n_active_cells(), SavedPartition{0, 0, 0, 0});
       const unsigned int handle = tria.register_data_attach(
         [](const CellIterator &, const dealii::Triangulation<2>::CellStatus) {
           return std::vector<char>();
@@ -105,9 +108,9 @@ namespace slidewave
         /*returns_variable_size_data=*/false);
       tria.notify_ready_to_unpack(
         handle,
-        [this](const CellIterator &cell,
-               const dealii::Triangulation<2>::CellStatus,
-               const boost::iterator_range<std::vector<char>::const_iterator> &data) {
+        [&saved_partition](const CellIterator &cell,
+                           const dealii::Triangulation<2>::CellStatus,
+                           const boost::iterator_range<std::vector<char>::const_iterator> &data) {
           AssertThrow(static_cast<std::size_t>(data.end() - data.begin()) == sizeof(SavedPartition),
                       dealii::ExcInternalError());
           std::memcpy(&saved_partition[cell->active_cell_index()],
@@ -119,13 +122,13 @@ namespace slidewave
         follower->grid_ready();
       for (GridFollower *follower : followers)
         follower->checkpoint_loaded();
-      restore_partition();
+      restore_partition(saved_partition);
     }
 
 
 
     void
-    BackgroundGrid::restore_partition()
+    BackgroundGrid::restore_partition(const std::vector<SavedPartition> &saved_partition)
     {
       const MPI_Comm     comm    = tria.get_communicator();
       const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
@@ -151,7 +154,6 @@ namespace slidewave
                          "is not restored; the resumed run agrees with the uninterrupted one "
                          "to round-off only."
                       << std::endl;
-          saved_partition.clear();
           return;
         }
       const unsigned int most = *std::max_element(saved_cells.begin(), saved_cells.end());
@@ -163,7 +165,6 @@ namespace slidewave
             restoring_weights[cell->active_cell_index()]
               = most / saved.n_cells + (saved.count < most % saved.n_cells ? 1 : 0);
           }
-      saved_partition.clear();
       repartition();
       restoring_weights.clear();
       const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <slidewave/core/input_error.h>
+#include <slidewave/core/polygon.h>
 #include <slidewave/grid/rigid_wall.h>
 #include <sstream>
 
@@ -68,21 +69,8 @@ namespace slidewave
       if (type == "solid")
         {
           const std::string text = prm.get("Polygon");
-          for (const auto &vertex : dealii::Utilities::split_string_list(text, ';'))
-            {
-              const auto v = parse_number_list(path + "/Polygon",
-                                               vertex,
-                                               "vertices 'x1, y1; x2, y2; ...' [m]");
-              if (v.size() != 2)
-                throw InputError(path + "/Polygon",
-                                 text,
-                                 "vertices 'x1, y1; x2, y2; ...' (two numbers each)");
-              polygon.emplace_back(v[0], v[1]);
-            }
-          double twice_area = 0.;
-          for (unsigned int i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
-            twice_area += polygon[j][0] * polygon[i][1] - polygon[i][0] * polygon[j][1];
-          if (polygon.size() < 3 || !(std::abs(twice_area) > 0.))
+          polygon                = core::parse_polygon(path + "/Polygon", text, "m");
+          if (polygon.size() < 3 || !(std::abs(core::signed_area(polygon)) > 0.))
             throw InputError(path + "/Polygon",
                              text,
                              "at least three vertices enclosing an area (the solid of 'Type = "
@@ -138,25 +126,15 @@ namespace slidewave
                          "over a thin solid; the solid's cells are not kept fine)");
       // The area inside the grid, by clipping is not needed: a solid of one cell's area
       // whose box overlaps the grid by a cell in each direction holds nodes.
-      double           twice_area = 0.;
-      dealii::Point<2> low = polygon[0], high = polygon[0];
-      for (unsigned int i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
-        {
-          twice_area += polygon[j][0] * polygon[i][1] - polygon[i][0] * polygon[j][1];
-          for (unsigned int d = 0; d < 2; ++d)
-            {
-              low[d]  = std::min(low[d], polygon[i][d]);
-              high[d] = std::max(high[d], polygon[i][d]);
-            }
-        }
-      bool inside = true;
+      const auto [low, high] = core::bounding_box(polygon);
+      bool inside            = true;
       for (unsigned int d = 0; d < 2; ++d)
         inside = inside
                  && std::min(high[d], upper_right[d]) - std::max(low[d], lower_left[d])
                       >= cell_size * (1. - 1e-9);
       std::ostringstream area;
       area << cell_size * cell_size;
-      if (!(0.5 * std::abs(twice_area) >= cell_size * cell_size * (1. - 1e-9)) || !inside)
+      if (!(std::abs(core::signed_area(polygon)) >= cell_size * cell_size * (1. - 1e-9)) || !inside)
         throw InputError(path + "/Polygon",
                          text.str(),
                          "a solid of at least one cell's area (h^2 = " + area.str()
@@ -169,27 +147,25 @@ namespace slidewave
     bool
     RigidWall::contains(const dealii::Point<2> &x, const double tolerance) const
     {
+      // A solid: inside (even-odd rule), or within the tolerance (a distance) of an edge.
       if (is_solid())
-        {
-          // Inside (even-odd rule), or within the tolerance of an edge.
-          bool inside = false;
-          for (unsigned int i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
-            {
-              const dealii::Point<2>    &a = polygon[i], &b = polygon[j];
-              const dealii::Tensor<1, 2> edge = b - a;
-              const double               t
-                = std::clamp((x - a) * edge / std::max(edge.norm_square(), 1e-300), 0., 1.);
-              if (x.distance(a + t * edge) <= tolerance)
-                return true;
-              if ((a[1] > x[1]) != (b[1] > x[1]) && x[0] < a[0] + edge[0] * (x[1] - a[1]) / edge[1])
-                inside = !inside;
-            }
-          return inside;
-        }
+        return core::side_of(polygon, x, core::EdgeTest::distance, tolerance)
+               != core::PolygonSide::outside;
       const unsigned int n = normal_component(), t = 1 - n;
       return std::abs(x[n] - start[n]) <= tolerance
              && x[t] >= std::min(start[t], end[t]) - tolerance
              && x[t] <= std::max(start[t], end[t]) + tolerance;
+    }
+
+
+
+    bool
+    inside_a_solid(const std::vector<RigidWall> &walls, const dealii::Point<2> &x)
+    {
+      for (const auto &wall : walls)
+        if (wall.is_solid() && wall.contains(x, 0.))
+          return true;
+      return false;
     }
   } // namespace grid
 } // namespace slidewave

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <iostream>
 #include <slidewave/core/input_error.h>
+#include <slidewave/core/polygon.h>
 #include <slidewave/particles/material_region.h>
 #include <sstream>
 
@@ -97,16 +98,7 @@ namespace slidewave
         }
       else
         {
-          for (const auto &vertex : dealii::Utilities::split_string_list(prm.get("Polygon"), ';'))
-            {
-              const auto v
-                = parse_number_list(path + "/Polygon", vertex, "vertices 'x1, y1; x2, y2; ...'");
-              if (v.size() != 2)
-                throw InputError(path + "/Polygon",
-                                 prm.get("Polygon"),
-                                 "vertices 'x1, y1; x2, y2; ...' (two numbers each)");
-              polygon.emplace_back(v[0], v[1]);
-            }
+          polygon = core::parse_polygon(path + "/Polygon", prm.get("Polygon"), "");
           if (polygon.size() < 3)
             throw InputError(path + "/Polygon", prm.get("Polygon"), "at least three vertices");
         }
@@ -145,34 +137,12 @@ namespace slidewave
 
     namespace
     {
-      enum class Side
-      {
-        outside,
-        inside,
-        on_edge
-      };
-
-      /** Where @p p lies with respect to the closed ring @p ring (even-odd rule). */
-      Side
+      /** Where @p p lies with respect to the closed ring @p ring: on an edge when on its
+       *  line to a relative 1e-12 (core::EdgeTest::collinear), else by the even-odd rule. */
+      core::PolygonSide
       side_of(const std::vector<dealii::Point<2>> &ring, const dealii::Point<2> &p)
       {
-        bool               inside = false;
-        const unsigned int n      = ring.size();
-        for (unsigned int i = 0, j = n - 1; i < n; j = i++)
-          {
-            const auto &a = ring[i];
-            const auto &b = ring[j];
-            // On the edge a-b?
-            const double cross = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
-            if (std::abs(cross) <= 1e-12 * (a.distance(b) + 1.)
-                && p[0] >= std::min(a[0], b[0]) - 1e-12 && p[0] <= std::max(a[0], b[0]) + 1e-12
-                && p[1] >= std::min(a[1], b[1]) - 1e-12 && p[1] <= std::max(a[1], b[1]) + 1e-12)
-              return Side::on_edge;
-            if ((a[1] > p[1]) != (b[1] > p[1])
-                && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
-              inside = !inside;
-          }
-        return inside ? Side::inside : Side::outside;
+        return core::side_of(ring, p, core::EdgeTest::collinear, 1e-12);
       }
     } // namespace
 
@@ -182,11 +152,11 @@ namespace slidewave
     MaterialRegion::contains(const dealii::Point<2> &p) const
     {
       // Points on an edge, the holes' included, count as inside.
-      const Side side = side_of(polygon, p);
-      if (side != Side::inside)
-        return side == Side::on_edge;
+      const core::PolygonSide side = side_of(polygon, p);
+      if (side != core::PolygonSide::inside)
+        return side == core::PolygonSide::on_edge;
       for (const auto &hole : holes)
-        if (side_of(hole, p) == Side::inside)
+        if (side_of(hole, p) == core::PolygonSide::inside)
           return false;
       return true;
     }
@@ -207,14 +177,7 @@ namespace slidewave
     std::pair<dealii::Point<2>, dealii::Point<2>>
     MaterialRegion::bounding_box() const
     {
-      dealii::Point<2> lower = polygon[0], upper = polygon[0];
-      for (const auto &p : polygon)
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            lower[d] = std::min(lower[d], p[d]);
-            upper[d] = std::max(upper[d], p[d]);
-          }
-      return {lower, upper};
+      return core::bounding_box(polygon);
     }
   } // namespace particles
 } // namespace slidewave

@@ -83,9 +83,8 @@ namespace slidewave
                                   const double            hx,
                                   const double            hy) {
                              // No point inside a rigid solid.
-                             for (const auto &wall : prm.walls)
-                               if (wall.is_solid() && wall.contains(position, 0.))
-                                 return false;
+                             if (grid::inside_a_solid(prm.walls, position))
+                               return false;
                              model.fill_new_point(properties, position, region_index, hx, hy);
                              return true;
                            });

@@ -266,6 +266,12 @@ namespace slidewave
       void
       finish_change();
 
+      /** One cell's record of the partition it was saved on. */
+      struct SavedPartition
+      {
+        unsigned int n_ranks, rank, n_cells, count;
+      };
+
       /**
        * deal.II partitions a loaded grid evenly by cells, not by the weights the saved
        * partition came from: the sums over cells and the solvers' block preconditioners
@@ -276,21 +282,15 @@ namespace slidewave
        * multiples of the total over the ranks) cuts exactly where the saved one did. Done
        * after the followers took their data back, as a repartition they follow; checked
        * (each rank's number of cells), warned about if it failed. On another number of
-       * ranks the data is read and dropped.
+       * ranks the data is read and dropped. @p saved_partition: what load() read of the
+       * saved partition, by active cell index.
        */
       void
-      restore_partition();
+      restore_partition(const std::vector<SavedPartition> &saved_partition);
 
-      /** One cell's record of the partition it was saved on. */
-      struct SavedPartition
-      {
-        unsigned int n_ranks, rank, n_cells, count;
-      };
       /** Per active cell index, while restore_partition() runs: the weight that restores
        *  the saved partition (empty otherwise: cell_weight() as usual). */
-      std::vector<unsigned int> restoring_weights;
-      /** What load() read of the saved partition, by active cell index. */
-      std::vector<SavedPartition>                     saved_partition;
+      std::vector<unsigned int>                       restoring_weights;
       dealii::Point<2>                                corner_low, corner_high;
       double                                          h;
       GridChanges                                     settings;

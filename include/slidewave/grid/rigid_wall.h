@@ -81,6 +81,12 @@ namespace slidewave
       /** The wall holds while t < release_time. */
       double release_time = std::numeric_limits<double>::infinity();
     };
+
+    /** Whether @p x lies inside one of the solids among @p walls or on its edges (exactly:
+     *  RigidWall::contains() with tolerance 0); segments are ignored. No material point is
+     *  created there. */
+    bool
+    inside_a_solid(const std::vector<RigidWall> &walls, const dealii::Point<2> &x);
   } // namespace grid
 } // namespace slidewave
 

@@ -50,12 +50,11 @@ namespace slidewave
       check_interval = prm.get_integer("Check interval");
       prm.leave_subsection();
       soil_parameters.point_forces = coupling.loads_on_soil;
-      for (const auto &wall : soil_parameters.walls)
-        if (wall.is_solid())
-          throw InputError(wall.path + "/Type",
-                           "solid",
-                           "none, roller or fixed with Physics = coupled (the shallow water "
-                           "would not see the solid)");
+      if (!soil_parameters.solids.empty())
+        throw InputError(soil_parameters.solids.front().path + "/Type",
+                         "solid",
+                         "none, roller or fixed with Physics = coupled (the shallow water "
+                         "would not see the solid)");
 
       const std::string water_section = "Shallow water";
       prm.enter_subsection(water_section);

@@ -108,6 +108,8 @@ namespace slidewave
 
       /** No rigid walls in a depth-averaged scene. */
       const std::vector<grid::RigidWall> no_walls;
+      /** Nor rigid solids. */
+      const std::vector<grid::RigidSolid> no_solids;
     } // namespace
 
 
@@ -120,7 +122,7 @@ namespace slidewave
       , release(prm, elevation, model_crs)
       , flow(prm, elevation)
       , grid(grid)
-      , engine(grid, flow, prm.sides, no_walls, engine_settings(prm))
+      , engine(grid, flow, prm.sides, no_walls, no_solids, engine_settings(prm))
     {
       // The raster (a warped copy of a large DEM, maybe) has given its CRS and
       // elevations: it is not kept for the run.

@@ -6,10 +6,10 @@ namespace slidewave
   namespace fluid
   {
     void
-    add_solid_constraints(const dealii::DoFHandler<2>        &dofs,
-                          const std::vector<grid::RigidWall> &solids,
-                          const double                        tolerance,
-                          dealii::AffineConstraints<double>  &constraints)
+    add_solid_constraints(const dealii::DoFHandler<2>         &dofs,
+                          const std::vector<grid::RigidSolid> &solids,
+                          const double                         tolerance,
+                          dealii::AffineConstraints<double>   &constraints)
     {
       if (solids.empty())
         return;

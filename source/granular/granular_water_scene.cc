@@ -43,9 +43,7 @@ namespace slidewave
       prm.leave_subsection();
       soil_parameters.point_forces = parameters.top_load > 0.;
       // The skeleton's rigid solids hold the water too.
-      for (const auto &wall : soil_parameters.walls)
-        if (wall.is_solid())
-          fluid_parameters.solids.push_back(wall);
+      fluid_parameters.solids = soil_parameters.solids;
       fluid_output = fluid::FreeSurfaceOutput(scene.output_directory, fluid_parameters.gauges);
 
       check_parameters();
@@ -111,8 +109,12 @@ namespace slidewave
       settings.full_sort_every_step = soil_parameters.full_sort_every_step;
       settings.particle_weight      = soil_parameters.adaptivity.particle_weight;
       settings.timer_name           = "granular: skeleton";
-      engine                        = std::make_unique<Engine>(
-        *grid, *model, soil_parameters.boundaries, soil_parameters.walls, settings);
+      engine                        = std::make_unique<Engine>(*grid,
+                                        *model,
+                                        soil_parameters.boundaries,
+                                        soil_parameters.walls,
+                                        soil_parameters.solids,
+                                        settings);
       exchange = std::make_unique<SkeletonFluidExchange>(*grid, fluid_parameters);
     }
 

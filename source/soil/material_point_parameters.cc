@@ -4,6 +4,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/grid/grid_extent.h>
 #include <slidewave/grid/load_balancing_parameters.h>
+#include <slidewave/grid/rigid_bodies.h>
 #include <slidewave/particles/point_count.h>
 #include <slidewave/soil/material_point_parameters.h>
 #include <sstream>
@@ -487,12 +488,7 @@ namespace slidewave
       declare_relocation_and_timing_parameters(prm);
       declare_damping_and_point_parameters(prm);
       declare_grid_parameters(prm);
-      for (unsigned int w = 1; w <= grid::RigidWall::max_walls; ++w)
-        {
-          prm.enter_subsection("Rigid wall " + std::to_string(w));
-          grid::RigidWall::declare_parameters(prm);
-          prm.leave_subsection();
-        }
+      grid::declare_rigid_body_parameters(prm);
       declare_initial_stress_parameters(prm);
       for (unsigned int m = 1; m <= max_materials; ++m)
         {
@@ -541,19 +537,8 @@ namespace slidewave
 
       parse_grid_parameters(prm, path, *this);
 
-      walls.clear();
-      for (unsigned int w = 1; w <= grid::RigidWall::max_walls; ++w)
-        {
-          prm.enter_subsection("Rigid wall " + std::to_string(w));
-          grid::RigidWall wall;
-          if (wall.parse_parameters(prm, path + "/Rigid wall " + std::to_string(w)))
-            {
-              if (wall.is_solid())
-                wall.check_solid_in_grid(lower_left, upper_right, cell_size, adaptivity.enabled);
-              walls.push_back(wall);
-            }
-          prm.leave_subsection();
-        }
+      grid::parse_rigid_body_parameters(
+        prm, path, lower_left, upper_right, cell_size, adaptivity.enabled, walls, solids);
 
       parse_prescribed_velocity(prm, path, *this);
 

@@ -53,7 +53,7 @@ namespace slidewave
       : prm(parameters)
       , model(prm)
       , grid(grid)
-      , engine(grid, model, prm.boundaries, prm.walls, engine_settings(prm))
+      , engine(grid, model, prm.boundaries, prm.walls, prm.solids, engine_settings(prm))
     {
       if (prm.step_timeline)
         timeline = std::make_unique<core::StepTimeline>();
@@ -83,7 +83,7 @@ namespace slidewave
                                   const double            hx,
                                   const double            hy) {
                              // No point inside a rigid solid.
-                             if (grid::inside_a_solid(prm.walls, position))
+                             if (grid::inside_a_solid(prm.solids, position))
                                return false;
                              model.fill_new_point(properties, position, region_index, hx, hy);
                              return true;

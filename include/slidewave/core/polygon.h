@@ -12,7 +12,7 @@ namespace slidewave
   {
     // Polygons in the plane, as the scenes give them: a ring of vertices in order around
     // it (either way), closed implicitly (the last vertex joins the first). Shared by the
-    // rigid solids (grid::RigidWall) and the material regions (particles::MaterialRegion).
+    // rigid solids (grid::RigidSolid) and the material regions (particles::MaterialRegion).
 
     /** Where a point lies with respect to a polygon (side_of()). */
     enum class PolygonSide
@@ -27,7 +27,7 @@ namespace slidewave
     {
       /** Within the tolerance (a distance [m]) of the closest point of the segment a-b;
        *  with tolerance 0 only a point the projection meets exactly (the rigid solids,
-       *  grid::RigidWall::contains()). */
+       *  grid::RigidSolid::contains()). */
       distance,
       /** On the line a-b to a relative tolerance, |(b - a) x (p - a)| <= tolerance
        *  (|b - a| + 1), and within the tolerance of the segment's bounding box (the

@@ -11,6 +11,7 @@
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/grid_boundary.h>
 #include <slidewave/grid/nodal_workspace.h>
+#include <slidewave/grid/rigid_solid.h>
 #include <slidewave/grid/rigid_wall.h>
 #include <slidewave/grid/shape_functions.h>
 #include <slidewave/grid/velocity_constraints.h>
@@ -73,12 +74,13 @@ namespace slidewave
 
       /**
        * The engine of @p model on @p grid: attaches its followers. @p sides: the grid
-       * sides' conditions; @p walls: rigid walls (empty: none).
+       * sides' conditions; @p walls, @p solids: rigid walls and solids (empty: none).
        */
       ParticleEngine(grid::BackgroundGrid                    &grid,
                      const Model                             &model,
                      const std::array<grid::GridBoundary, 4> &sides,
                      const std::vector<grid::RigidWall>      &walls,
+                     const std::vector<grid::RigidSolid>     &solids,
                      const Settings                          &settings);
 
       /**

@@ -18,6 +18,7 @@ namespace slidewave
                                           const Model                             &model,
                                           const std::array<grid::GridBoundary, 4> &sides,
                                           const std::vector<grid::RigidWall>      &walls,
+                                          const std::vector<grid::RigidSolid>     &solids,
                                           const Settings                          &settings)
       : grid(grid)
       , model(model)
@@ -28,7 +29,7 @@ namespace slidewave
               Model::n_nodal_fields,
               model.n_used_nodal_fields(),
               model.needs_lumped_area())
-      , constraints(grid, nodes, sides, walls)
+      , constraints(grid, nodes, sides, walls, solids)
       , patches(grid, nodes)
       , kernels(model,
                 cloud,

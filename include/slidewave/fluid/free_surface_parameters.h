@@ -7,7 +7,7 @@
 #include <deal.II/base/tensor.h>
 #include <slidewave/fluid/flow_boundaries.h>
 #include <slidewave/grid/background_grid.h>
-#include <slidewave/grid/rigid_wall.h>
+#include <slidewave/grid/rigid_solid.h>
 #include <string>
 #include <vector>
 
@@ -114,10 +114,10 @@ namespace slidewave
       /** The velocity at the start, "u_x; u_y" of x and y. */
       std::string initial_velocity = "0; 0";
 
-      /** Rigid solids in the flow (grid::RigidWall of type 'solid', permanent): the
-       *  velocity is held at zero at every velocity node inside them or on their edges.
-       *  Not read from this section: granular water gives the skeleton's solids. */
-      std::vector<grid::RigidWall> solids;
+      /** Rigid solids in the flow (permanent): the velocity is held at zero at every
+       *  velocity node inside them or on their edges. Not read from this section:
+       *  granular water gives the skeleton's solids. */
+      std::vector<grid::RigidSolid> solids;
 
       /** A fixed porous structure: porosity n(x, y) and permeability kappa(x, y) [m^2]
        *  (empty porosity: none). */

@@ -6,6 +6,7 @@
 #include <slidewave/grid/grid_boundary.h>
 #include <slidewave/grid/grid_follower.h>
 #include <slidewave/grid/nodal_workspace.h>
+#include <slidewave/grid/rigid_solid.h>
 #include <slidewave/grid/rigid_wall.h>
 #include <vector>
 
@@ -16,19 +17,23 @@ namespace slidewave
     /**
      * The nodal velocities held at zero (the boundary conditions of the grid update,
      * paper 000, Eqs. 18–19): on the sides of the grid (left, right, bottom, top: ids
-     * 0–3) by their GridBoundary, and on the rigid walls, in the normal direction
-     * (roller) or both (fixed); a wall with a release time holds only until then. A
-     * GridFollower: the held nodes are found anew on every change of the grid.
+     * 0–3) by their GridBoundary, on the rigid walls, in the normal direction (roller)
+     * or both (fixed), and inside the rigid solids and on their edges, in both; a wall or
+     * solid with a release time holds only until then. A GridFollower: the held nodes are
+     * found anew on every change of the grid.
      */
     class VelocityConstraints : public GridFollower
     {
     public:
-      VelocityConstraints(const BackgroundGrid               &grid,
-                          const NodalWorkspace               &nodes,
-                          const std::array<GridBoundary, 4>  &sides,
-                          const std::vector<grid::RigidWall> &walls);
+      /** The constraints on @p grid's nodes (@p nodes: their local indices) by @p sides,
+       *  @p walls and @p solids (either empty: none). */
+      VelocityConstraints(const BackgroundGrid                &grid,
+                          const NodalWorkspace                &nodes,
+                          const std::array<GridBoundary, 4>   &sides,
+                          const std::vector<grid::RigidWall>  &walls,
+                          const std::vector<grid::RigidSolid> &solids);
 
-      /** The held nodes of the sides and walls on the current grid. */
+      /** The held nodes of the sides, walls and solids on the current grid. */
       void
       reinit();
 
@@ -44,8 +49,8 @@ namespace slidewave
         reinit();
       }
 
-      /** Which walls hold at @p time: those not yet released, or all when @p hold_all
-       *  (gravity loading). */
+      /** Which walls and solids hold at @p time: those not yet released, or all when
+       *  @p hold_all (gravity loading). */
       void
       update_walls(double time, bool hold_all);
 
@@ -75,19 +80,26 @@ namespace slidewave
       }
 
     private:
-      /** The owned nodes of each rigid wall. */
+      /** The owned nodes of each rigid wall, then of each rigid solid. */
       void
       find_wall_nodes();
 
-      const BackgroundGrid              &grid;
-      const NodalWorkspace              &nodes;
-      const std::array<GridBoundary, 4>  sides;
-      const std::vector<grid::RigidWall> walls;
+      /** The local indices, sorted and unique, of the owned nodes at which @p holds (a
+       *  wall's or solid's contains() with the tolerance) is true. */
+      template <typename Predicate>
+      std::vector<unsigned int>
+      owned_nodes_where(const Predicate &holds) const;
+
+      const BackgroundGrid               &grid;
+      const NodalWorkspace               &nodes;
+      const std::array<GridBoundary, 4>   sides;
+      const std::vector<grid::RigidWall>  walls;
+      const std::vector<grid::RigidSolid> solids;
 
       /** Local indices of owned nodes where v_x (0) or v_y (1) is held at zero. */
       std::array<std::vector<unsigned int>, 2> constrained_dofs;
 
-      /** A rigid wall's owned nodes (local indices) per held component. */
+      /** A rigid wall's or solid's owned nodes (local indices) per held component. */
       struct WallNodes
       {
         std::array<std::vector<unsigned int>, 2> nodes;

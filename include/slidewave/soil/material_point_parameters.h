@@ -9,6 +9,7 @@
 #include <memory>
 #include <slidewave/core/memory_estimate.h>
 #include <slidewave/grid/grid_boundary.h>
+#include <slidewave/grid/rigid_solid.h>
 #include <slidewave/grid/rigid_wall.h>
 #include <slidewave/grid/shape_functions.h>
 #include <slidewave/materials/material.h>
@@ -89,7 +90,11 @@ namespace slidewave
       std::array<GridBoundary, 4> boundaries{
         {GridBoundary::roller, GridBoundary::roller, GridBoundary::fixed, GridBoundary::free}};
 
+      /** The rigid walls: the segments of the subsections "Rigid wall N" of Type 'roller'
+       *  or 'fixed', in their order (grid::parse_rigid_body_parameters()). */
       std::vector<grid::RigidWall> walls;
+      /** The rigid solids: the polygons of those of Type 'solid', in their order. */
+      std::vector<grid::RigidSolid> solids;
 
       /** Subsection "Adaptive grid". */
       struct Adaptivity

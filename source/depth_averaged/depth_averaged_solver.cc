@@ -7,6 +7,8 @@
 #include <optional>
 #include <slidewave/core/input_error.h>
 #include <slidewave/depth_averaged/depth_averaged_solver.h>
+#include <slidewave/grid/rigid_solid.h>
+#include <slidewave/grid/rigid_wall.h>
 #include <slidewave/terrain/crs.h>
 #include <slidewave/terrain/earth_bounds.h>
 #include <slidewave/terrain/elevation_table.h>

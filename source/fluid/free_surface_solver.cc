@@ -178,6 +178,8 @@ namespace slidewave
           fluid_fraction->interpolate(dealii::Functions::ConstantFunction<2>(1.));
           inverse_permeability->interpolate(dealii::Functions::ZeroFunction<2>());
           solid_flux->interpolate(dealii::Functions::ZeroFunction<2>(2));
+          if (start_flux)
+            start_flux->interpolate(dealii::Functions::ZeroFunction<2>(2));
         }
       else if (fluid_fraction)
         {
@@ -253,6 +255,17 @@ namespace slidewave
       medium.solid_flux           = solid_flux.get();
       medium.grain_density        = grain_density;
       flow_system.set_porous_medium(medium);
+      // With the solid's momentum eliminated its flux field holds the predicted v*; the
+      // phase field's mixture divergence needs the flux the last flow solved with, that of
+      // the step's start (PhaseFieldSystem).
+      if (grain_density > 0.)
+        {
+          start_flux
+            = std::make_unique<grid::FiniteElementField>(grid,
+                                                         dealii::FESystem<2>(dealii::FE_Q<2>(1), 2),
+                                                         1);
+          medium.solid_flux = start_flux.get();
+        }
       phase_system.set_porous_medium(medium);
     }
 

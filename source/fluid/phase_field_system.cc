@@ -47,6 +47,17 @@ namespace slidewave
 
 
 
+    unsigned int
+    PhaseFieldSystem::gauss_points() const
+    {
+      // Two points integrate div(u phi) and u . n phi exactly for Q1 and Q2 velocities
+      // (degree 3 in each variable); in the pores n u phi has one degree more, which Q2
+      // velocities take beyond two points.
+      return porous.active() ? std::max(2u, flow.finite_element().degree + 1) : 2;
+    }
+
+
+
     void
     PhaseFieldSystem::grid_ready()
     {
@@ -84,7 +95,7 @@ namespace slidewave
     PhaseFieldSystem::assemble(const StepLengths &lengths, const double gamma)
     {
       const auto             &fe = phase.finite_element();
-      const dealii::QGauss<2> quadrature(2);
+      const dealii::QGauss<2> quadrature(gauss_points());
       const unsigned int      n_q = quadrature.size(), n_dofs = fe.n_dofs_per_cell();
       dealii::FEValues<2>     fv(fe,
                              quadrature,
@@ -94,7 +105,7 @@ namespace slidewave
                                   quadrature,
                                   dealii::update_values | dealii::update_gradients);
       const dealii::FEValuesExtractors::Vector velocity(0);
-      const dealii::QGauss<1>                  face_quadrature(2);
+      const dealii::QGauss<1>                  face_quadrature(gauss_points());
       dealii::FEFaceValues<2>                  fv_face(fe,
                                       face_quadrature,
                                       dealii::update_values | dealii::update_quadrature_points
@@ -314,7 +325,7 @@ namespace slidewave
       // - dt times the flux u_bar . n phi^{n+theta} through the sides, phi_in on the
       // inflow sides where the flow enters (see assemble()). The same quadrature, so the
       // balance closes to the solver's tolerance.
-      const dealii::QGauss<1>                  face_quadrature(2);
+      const dealii::QGauss<1>                  face_quadrature(gauss_points());
       const unsigned int                       n_q = face_quadrature.size();
       const dealii::FEValuesExtractors::Vector velocity(0);
       dealii::FEFaceValues<2>                  fv_face(phase.finite_element(),
@@ -334,7 +345,7 @@ namespace slidewave
       if (porous.active())
         porous_values = std::make_unique<PorousMediumValues>(grid,
                                                              porous,
-                                                             dealii::QGauss<2>(2),
+                                                             dealii::QGauss<2>(gauss_points()),
                                                              face_quadrature);
       const std::vector<double> no_viscosity(n_q, 0.);
       grid::for_each_owned_cell_in_tree_order(phase.dof_handler(), [&](const auto &cell) {
@@ -386,8 +397,8 @@ namespace slidewave
         return phase.integral();
       // The integral of n phi with the quadrature of the assembly, whose mass term summed
       // over the test functions is this integral (so the balance closes).
-      const dealii::QGauss<2>   quadrature(2);
-      const dealii::QGauss<1>   face_quadrature(2);
+      const dealii::QGauss<2>   quadrature(gauss_points());
+      const dealii::QGauss<1>   face_quadrature(gauss_points());
       dealii::FEValues<2>       fv(phase.finite_element(),
                              quadrature,
                              dealii::update_values | dealii::update_JxW_values);

@@ -162,14 +162,14 @@ namespace slidewave
       if (parameters.top_load > 0.)
         apply_top_load();
       // The water sees the grains from the start: the first row's water volume is the
-      // integral of n phi, as every later row's (each step hands the skeleton over anew).
+      // integral of n phi, as every later row's (each step hands the skeleton over anew,
+      // with the walls and solids updated to its time first: this hand-over's solid flux,
+      // held at every wall and solid, is read by nothing before the first step's).
       engine->scatter_points();
       exchange->to_fluid(engine->nodal_workspace(),
                          engine->velocity_constraints(),
                          model->empty_node_mass(),
-                         SkeletonFields{&fluid_solver->solid_fraction_field(),
-                                        &fluid_solver->inverse_permeability_field(),
-                                        &fluid_solver->solid_flux_field()},
+                         skeleton_fields(),
                          0.,
                          nullptr);
       verification.open_files(false);
@@ -247,6 +247,17 @@ namespace slidewave
 
 
 
+    SkeletonFields
+    GranularWaterScene::skeleton_fields()
+    {
+      return SkeletonFields{&fluid_solver->solid_fraction_field(),
+                            &fluid_solver->inverse_permeability_field(),
+                            &fluid_solver->solid_flux_field(),
+                            fluid_solver->start_flux_field()};
+    }
+
+
+
     double
     GranularWaterScene::skeleton_limit() const
     {
@@ -298,12 +309,10 @@ namespace slidewave
         = parameters.sub_cycling ? static_cast<unsigned int>(std::ceil(
             info.dt / (soil_parameters.time_step_multiplier * skeleton_limit()) - 1e-12)) :
                                    1;
-      n_substeps                        = std::max(n_sub, 1u);
-      const double                dt    = info.dt / n_substeps;
-      const grid::NodalWorkspace &nodes = engine->nodal_workspace();
-      const SkeletonFields        fields{&fluid_solver->solid_fraction_field(),
-                                  &fluid_solver->inverse_permeability_field(),
-                                  &fluid_solver->solid_flux_field()};
+      n_substeps                         = std::max(n_sub, 1u);
+      const double                dt     = info.dt / n_substeps;
+      const grid::NodalWorkspace &nodes  = engine->nodal_workspace();
+      const SkeletonFields        fields = skeleton_fields();
       for (unsigned int k = 0; k < n_substeps; ++k)
         {
           {

@@ -78,38 +78,45 @@ namespace slidewave
       const bool with_pressure = flow != nullptr && predictor_step > 0.;
       if (with_pressure)
         pressure_force(*flow, fields, nodes, pressure_work);
-      for (unsigned int i = 0; i < n_owned; ++i)
-        {
-          // v^n, or v* = v^n + dt (f + f_p) / m (semi-implicit).
-          const double m = nodes.nodal_mass.local_element(i);
-          if (m > empty_mass)
-            for (unsigned int d = 0; d < 2; ++d)
-              {
-                double f = nodes.force[d].local_element(i);
-                if (with_pressure)
-                  f += pressure_work[d].local_element(i);
-                (d == 0 ? vx : vy).local_element(i)
-                  = (nodes.momentum[d].local_element(i) + predictor_step * f) / m;
-              }
-          else
-            vx.local_element(i) = vy.local_element(i) = 0.;
-        }
-      // The skeleton's sides and walls hold its velocity: the water sees it held too. The
-      // water gets the flux (1 - n_I) v_I = S_I v_I / A_I: a node with a tiny mass (which
-      // GIMP's gradients may give any velocity) hands over a tiny flux.
-      constraints.apply(vx, vy);
-      for (unsigned int i = 0; i < n_owned; ++i)
-        {
-          const double solid = 1. - fraction.local_element(i);
-          vx.local_element(i) *= solid;
-          vy.local_element(i) *= solid;
-        }
-      for (Vector *v : {&vx, &vy})
-        {
-          v->update_ghost_values();
-          nodes.interpolate_hanging_nodes(*v);
-        }
-      fields.solid_flux->copy_from_grid_nodes({&vx, &vy});
+      // The solid's flux of the velocity v^n + step (f + f_p) / m into the field @p field:
+      // v^n (step 0), or v* (the semi-implicit predictor). The skeleton's sides and walls
+      // hold its velocity: the water sees it held too. The water gets the flux (1 - n_I)
+      // v_I = S_I v_I / A_I: a node with a tiny mass (which GIMP's gradients may give any
+      // velocity) hands over a tiny flux.
+      const auto flux_into = [&](const double step, grid::FiniteElementField &field) {
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            const double m = nodes.nodal_mass.local_element(i);
+            if (m > empty_mass)
+              for (unsigned int d = 0; d < 2; ++d)
+                {
+                  double f = nodes.force[d].local_element(i);
+                  if (with_pressure)
+                    f += pressure_work[d].local_element(i);
+                  (d == 0 ? vx : vy).local_element(i)
+                    = (nodes.momentum[d].local_element(i) + step * f) / m;
+                }
+            else
+              vx.local_element(i) = vy.local_element(i) = 0.;
+          }
+        constraints.apply(vx, vy);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            const double solid = 1. - fraction.local_element(i);
+            vx.local_element(i) *= solid;
+            vy.local_element(i) *= solid;
+          }
+        for (Vector *v : {&vx, &vy})
+          {
+            v->update_ghost_values();
+            nodes.interpolate_hanging_nodes(*v);
+          }
+        field.copy_from_grid_nodes({&vx, &vy});
+      };
+      // The phase field's flux of v^n first (when it has its own), then the flow's.
+      if (fields.start_flux != nullptr)
+        flux_into(0., *fields.start_flux);
+      flux_into(predictor_step, *fields.solid_flux);
     }
 
 

@@ -16,8 +16,10 @@ namespace slidewave
     namespace
     {
       /** The first words of scene.txt: the format of the checkpoint's data (format 2: the
-       *  cells carry their partition first, BackgroundGrid::save). */
-      constexpr const char *format_tag = "checkpoint format 2: ";
+       *  cells carry their partition first, BackgroundGrid::save; format 3: granular water
+       *  keeps the solid's flux of the step's start, and the water's volume is the integral
+       *  of n phi in porous solids). */
+      constexpr const char *format_tag = "checkpoint format 3: ";
     } // namespace
 
 

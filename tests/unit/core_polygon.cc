@@ -9,7 +9,7 @@
 //    test at tolerance 1e-2 and inside at tolerance 0, the collinear test's 1e-12;
 //  - the even-odd rule where the ray towards +x passes through a vertex;
 //  - parse_polygon: three vertices read back exactly; a vertex of one number, a word and
-//    an infinite value refused, each naming the parameter.
+//    an infinite value refused, each naming the parameter; without a unit, no "[m]".
 #include "unit_check.h"
 
 #include <cmath>
@@ -97,5 +97,16 @@ main()
   check(names_it("0, 0; 1; 1, 1"), "a vertex of one number refused, naming the parameter");
   check(names_it("0, 0; one, 1; 1, 1"), "a word refused, naming the parameter");
   check(names_it("0, 0; inf, 1; 1, 1"), "an infinite value refused, naming the parameter");
+  // Without a unit (the material regions): the message has no " [m]".
+  try
+    {
+      parse_polygon("Region 1/Polygon", "0, 0; x, 1; 1, 1", "");
+      check(false, "without a unit: a word refused");
+    }
+  catch (const slidewave::InputError &e)
+    {
+      std::printf("    (%s)\n", e.allowed.c_str());
+      check(e.allowed.find("[m]") == std::string::npos, "without a unit: no unit in the message");
+    }
   return finish();
 }

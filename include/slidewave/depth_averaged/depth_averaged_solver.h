@@ -16,8 +16,6 @@
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/nodal_workspace.h>
-#include <slidewave/grid/rigid_solid.h>
-#include <slidewave/grid/rigid_wall.h>
 #include <slidewave/grid/velocity_constraints.h>
 #include <slidewave/particles/point_cloud.h>
 #include <slidewave/terrain/elevation_grid.h>

@@ -95,6 +95,15 @@ namespace slidewave
         return *solid_flux;
       }
 
+      /** The flux (1 - n) v^n of the solid's velocity at the step's start, which the phase
+       *  field reads when solid_flux_field() holds a predicted velocity (grain_density > 0
+       *  in enable_moving_solid(); null otherwise: the phase field reads that one). */
+      grid::FiniteElementField *
+      start_flux_field()
+      {
+        return start_flux.get();
+      }
+
       /** setup() on a grid another physics has created (collective). */
       void
       initialize(double start_time);
@@ -182,8 +191,9 @@ namespace slidewave
       mutable std::unique_ptr<dealii::Function<2>> initial_phase;
       /** The fixed porous structure's fields (only with 'Porous structure/Porosity'). */
       std::unique_ptr<grid::FiniteElementField> fluid_fraction, inverse_permeability;
-      /** The moving solid's flux (1 - n) v_s (enable_moving_solid()). */
-      std::unique_ptr<grid::FiniteElementField> solid_flux;
+      /** The moving solid's flux (1 - n) v_s (enable_moving_solid()), and that of its
+       *  velocity at the step's start for the phase field (start_flux_field()). */
+      std::unique_ptr<grid::FiniteElementField> solid_flux, start_flux;
     };
   } // namespace fluid
 } // namespace slidewave

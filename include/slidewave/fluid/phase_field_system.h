@@ -45,19 +45,28 @@ namespace slidewave
      * fluid fraction. The water's and the solid's balances, d(n phi)/dt + div(n u phi) = 0
      * and dn/dt = div((1 - n) v_s), give
      *
-     *   n d phi/dt + n u . grad phi + phi R = div( n gamma (epsilon grad phi - phi (1 - phi) n) ),
-     *   R = div(n u) + div((1 - n) v_s) = n div u + u . grad n + div((1 - n) v_s),
+     *   n d phi/dt + n u . grad phi + phi R = div( n gamma (epsilon grad phi - phi (1 - phi) nhat)
+     * ), R = div(n u) + div((1 - n) v_s) = n div u + u . grad n + div((1 - n) v_s),
      *
-     * R the mixture's divergence that the flow's continuity makes zero (weakly). With n = 1
-     * and no solid, R = div u and the equation is the open water's above, bit for bit. The
+     * (nhat the interface's normal), R the mixture's divergence, which the flow's
+     * continuity makes zero (weakly) with the velocities it solved with. The phase field's
+     * step comes before the flow's (FreeSurfaceSolver::advance()): it takes u^n and the
+     * solid's flux of the step's start, (1 - n) v^n, the one the last flow solved with (a
+     * skeleton whose momentum the flow eliminates hands it over apart from its predicted
+     * v*, SkeletonFluidExchange), with this step's n: R is then small, not zero. With
+     * n = 1 and no solid, R = div u and the equation is the open water's above, bit for
+     * bit (on a build that contracts n * a + b the same way as a + b, as this one). The
      * advection n u . grad phi + phi div(n u) = div(n u phi) again leaves only the flux
-     * through the sides when summed over the test functions, so the integral of n phi
-     * (water_volume()) is kept in a fixed solid to the solver's tolerance; in a moving
-     * one it changes by the integral of phi times the change of n. Without the porous
-     * terms, the divergence form would read div u = -u . grad n / n as a source: it
-     * drained the water where it entered a solid (phi fell to 0.81 in the seepage test).
-     * The solid's velocity is the one the flow is given (v_s, or the skeleton's predicted
-     * v*, whose difference to the step's v is of order dt).
+     * n u . n phi through the sides when summed over the test functions, so the integral of
+     * n phi (water_volume()) is kept in a fixed solid to the solver's tolerance; in a
+     * moving one, from one step's row to the next, it changes by the integral of
+     * phi^k (n^k - n^{k-1}) (the fluid fraction handed over at the step's start against
+     * the last one: the points' last step) minus dt times that of phi^theta
+     * div((1 - n^k) v^n), which cancel to first order. Without the porous terms, the divergence
+     * form would read div u = -(u . grad n
+     * + div((1 - n) v_s)) / n as a source: it drained the water where it entered a solid
+     * (phi fell to 0.81 in the seepage test). The SUPG residual leaves out -kappa grad n .
+     * grad phi, the part of div(n kappa grad phi) that Q1's second derivatives miss too.
      */
     class PhaseFieldSystem : public grid::GridFollower
     {
@@ -89,7 +98,8 @@ namespace slidewave
 
       /** The water that left through the sides in the last step [m^2 per m of width]
        *  (negative: it entered), the flux of the discrete equation: the water volume
-       *  changes by exactly minus this (to the solver's tolerance). */
+       *  changes by exactly minus this (to the solver's tolerance; the flux n u . n phi in
+       *  the pores, where the volume balance is exact in a fixed solid only). */
       double
       last_outflow() const
       {
@@ -112,6 +122,11 @@ namespace slidewave
     private:
       void
       setup_system();
+
+      /** The Gauss points per direction of the cells' and sides' quadratures: enough for
+       *  the advective flux to sum exactly to the sides' flux (the volume's balance). */
+      unsigned int
+      gauss_points() const;
 
       void
       assemble(const StepLengths &lengths, double gamma);

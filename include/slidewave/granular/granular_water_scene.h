@@ -124,6 +124,10 @@ namespace slidewave
       void
       apply_top_load();
 
+      /** The water's fields the skeleton hands over (SkeletonFluidExchange::to_fluid()). */
+      SkeletonFields
+      skeleton_fields();
+
       /** h / max(c_p + |v_p|): the skeleton's P-wave limit before the multiplier
        *  (collective). */
       double

@@ -19,6 +19,12 @@ namespace slidewave
       grid::FiniteElementField *fluid_fraction       = nullptr;
       grid::FiniteElementField *inverse_permeability = nullptr;
       grid::FiniteElementField *solid_flux           = nullptr;
+      /** The flux (1 - n) v^n of the skeleton's velocity at the step's start, for the water's
+       *  phase field, when solid_flux holds the predicted v* (semi-implicit coupling;
+       *  null: the phase field reads solid_flux). The flow solved last had this v^n in
+       *  its continuity, so the phase field's mixture divergence with it is the one the
+       *  water's velocity satisfies. */
+      grid::FiniteElementField *start_flux = nullptr;
     };
 
     /**

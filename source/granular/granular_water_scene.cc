@@ -72,9 +72,10 @@ namespace slidewave
         ny = std::round((fluid_parameters.upper_right[1] - fluid_parameters.lower_left[1])
                         / fluid_parameters.cell_size);
       // Flow (Q1^2-Q1), phase field and the skeleton's fields (fluid fraction, inverse
-      // permeability, velocity): eight unknowns per node.
+      // permeability, flux; semi-implicit: the flux of the step's start too): eight or ten
+      // unknowns per node.
       estimate.add("water unknowns",
-                   8. * (nx + 1.) * (ny + 1.),
+                   (parameters.implicit_drag ? 10. : 8.) * (nx + 1.) * (ny + 1.),
                    core::MemoryEstimate::bytes_per_dof,
                    fluid_section + "/Grid/Cell size",
                    to_string(fluid_parameters.cell_size));
@@ -323,10 +324,14 @@ namespace slidewave
             // The skeleton's fields now: the water's step reads them (first sub-step), the
             // water's force on the grains the skeleton's velocity in the drag (each).
             dealii::TimerOutput::Scope scope(*timer, "granular: exchange");
+            // (the phase field reads the flux of the step's start at the water's step only)
+            SkeletonFields sub_step_fields = fields;
+            if (k > 0)
+              sub_step_fields.start_flux = nullptr;
             exchange->to_fluid(nodes,
                                engine->velocity_constraints(),
                                model->empty_node_mass(),
-                               fields,
+                               sub_step_fields,
                                parameters.implicit_drag && k == 0 ? info.dt : 0.,
                                &fluid_solver->flow_field());
           }
@@ -460,7 +465,8 @@ namespace slidewave
       out << "granular water; grid " << fluid_parameters.lower_left << " to "
           << fluid_parameters.upper_right << ", cell size " << fluid_parameters.cell_size
           << "; grains " << parameters.grain_density << "; drag "
-          << (parameters.forchheimer ? "Forchheimer" : "Darcy") << "; materials";
+          << (parameters.forchheimer ? "Forchheimer" : "Darcy") << " coupled "
+          << (parameters.implicit_drag ? "semi-implicitly" : "explicitly") << "; materials";
       // (a material's model decides its points' properties: Hencky's carry b^e)
       for (const auto &material : soil_parameters.materials)
         out << " " << material.signature();

@@ -237,8 +237,8 @@ namespace slidewave
                          "true",
                          "a checkpoint in this version's format ('" + std::string(format_tag)
                            + "'); the one in '" + source.string()
-                           + "' was written by an older version, whose cells do not carry "
-                             "their partition (run the scene from its start)");
+                           + "' was written by an older version in another format (run the "
+                             "scene from its start)");
       written_by.erase(0, std::string(format_tag).size());
       if (written_by != signature)
         throw InputError(resume_parameter,

@@ -45,8 +45,9 @@ namespace slidewave
      * fluid fraction. The water's and the solid's balances, d(n phi)/dt + div(n u phi) = 0
      * and dn/dt = div((1 - n) v_s), give
      *
-     *   n d phi/dt + n u . grad phi + phi R = div( n gamma (epsilon grad phi - phi (1 - phi) nhat)
-     * ), R = div(n u) + div((1 - n) v_s) = n div u + u . grad n + div((1 - n) v_s),
+     *   n d phi/dt + n u . grad phi + phi R
+     *     = div(n gamma (epsilon grad phi - phi (1 - phi) nhat)),
+     *   R = div(n u) + div((1 - n) v_s) = n div u + u . grad n + div((1 - n) v_s)
      *
      * (nhat the interface's normal), R the mixture's divergence, which the flow's
      * continuity makes zero (weakly) with the velocities it solved with. The phase field's
@@ -62,11 +63,11 @@ namespace slidewave
      * moving one, from one step's row to the next, it changes by the integral of
      * phi^k (n^k - n^{k-1}) (the fluid fraction handed over at the step's start against
      * the last one: the points' last step) minus dt times that of phi^theta
-     * div((1 - n^k) v^n), which cancel to first order. Without the porous terms, the divergence
-     * form would read div u = -(u . grad n
-     * + div((1 - n) v_s)) / n as a source: it drained the water where it entered a solid
-     * (phi fell to 0.81 in the seepage test). The SUPG residual leaves out -kappa grad n .
-     * grad phi, the part of div(n kappa grad phi) that Q1's second derivatives miss too.
+     * div((1 - n^k) v^n), which cancel to first order. Without the porous terms, the
+     * divergence form would read div u = -(u . grad n + div((1 - n) v_s)) / n as a source:
+     * it drained the water where it entered a solid (phi fell to 0.81 in the seepage test).
+     * The SUPG residual leaves out -kappa grad n . grad phi, the part of div(n kappa grad
+     * phi) that Q1's second derivatives miss too.
      */
     class PhaseFieldSystem : public grid::GridFollower
     {

@@ -10,7 +10,8 @@
 #   order, which the 12-digit CSV files can show in their last digit.
 # Arguments: -DMPIEXEC, -DNUMPROC_FLAG, -DEXECUTABLE, -DSCENE, -DDIRECTORY, -DFULL_RANKS,
 # -DRESUME_RANKS, optional -DIGNORE (regex of one column, e.g. " load_imbalance=[^ ]*"),
-# -DFILES (;-separated); -DMAPS (;-separated GeoTIFFs), compared pixel by pixel by
+# -DFILES (;-separated), optional -DOTHER_SCENE and -DOTHER_SETTING (below); -DMAPS
+# (;-separated GeoTIFFs), compared pixel by pixel by
 # -DCOMPARE_RASTERS (run with -DPYTHON) to -DMAP_TOLERANCE times their largest value.
 file(REMOVE_RECURSE ${DIRECTORY} ${DIRECTORY}-full)
 function(run_scene ranks resume output status)
@@ -76,7 +77,8 @@ foreach(name ${MAPS})
 endforeach()
 
 # OTHER_SCENE: resuming that scene from this scene's checkpoint must be refused (exit
-# status 1) with a message naming both scenes.
+# status 1) with a message naming both scenes. OTHER_SETTING ('PATH=VALUE'): the same for
+# this scene with that parameter changed.
 if(OTHER_SCENE)
   execute_process(COMMAND ${EXECUTABLE} --set "Output directory=${DIRECTORY}" --resume
                           ${OTHER_SCENE}
@@ -86,4 +88,15 @@ if(OTHER_SCENE)
                         "${out}${err}")
   endif()
   message(STATUS "another scene refused: ${err}")
+endif()
+
+if(OTHER_SETTING)
+  execute_process(COMMAND ${EXECUTABLE} --set "Output directory=${DIRECTORY}" --resume
+                          --set "${OTHER_SETTING}" ${SCENE}
+                  OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE status)
+  if(NOT status EQUAL 1 OR NOT err MATCHES "is of a different scene \\(.*; this scene: .*\\)")
+    message(FATAL_ERROR "resuming with '${OTHER_SETTING}' from this checkpoint: status "
+                        "${status}\n${out}${err}")
+  endif()
+  message(STATUS "the scene with '${OTHER_SETTING}' refused: ${err}")
 endif()

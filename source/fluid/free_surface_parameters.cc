@@ -201,6 +201,16 @@ namespace slidewave
                         Bool(),
                         "The continuity (LSIC) stabilization tau_cont rho (div w)(div u) of "
                         "paper 002 besides SUPG and PSPG.");
+      prm.declare_entry(
+        "Subscales",
+        "quasi-static",
+        Selection("quasi-static|dynamic"),
+        "The velocity subscale of SUPG and PSPG. quasi-static: u' = -tau_m R / rho with "
+        "Tezduyar's tau_m, which holds the time step (paper 002); its pressure "
+        "stabilization fades as the step falls below the flow's own (an odd-even pressure "
+        "mode in a porous solid at the grains' steps). dynamic: u' is integrated in time at "
+        "the quadrature points, rho du'/dt + rho u' / tau_s = -R with tau_s free of the step "
+        "(Codina et al. 2007): the same steady state whatever the step.");
       prm.leave_subsection();
 
       prm.enter_subsection("Linear solver");
@@ -435,7 +445,8 @@ namespace slidewave
       prm.leave_subsection();
 
       prm.enter_subsection("Stabilization");
-      grad_div = prm.get_bool("Grad-div");
+      grad_div          = prm.get_bool("Grad-div");
+      dynamic_subscales = prm.get("Subscales") == "dynamic";
       prm.leave_subsection();
 
       prm.enter_subsection("Linear solver");

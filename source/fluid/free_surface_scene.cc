@@ -7,6 +7,7 @@
 #include <slidewave/core/run_bounds.h>
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
+#include <slidewave/fluid/velocity_subscales.h>
 #include <slidewave/fluid/free_surface_diagnostics.h>
 #include <slidewave/fluid/free_surface_scene.h>
 #include <slidewave/fluid/martin_moyce.h>
@@ -85,6 +86,12 @@ namespace slidewave
                    core::MemoryEstimate::bytes_per_dof,
                    section + "/Grid/Cell size",
                    to_string(parameters.cell_size));
+      if (parameters.dynamic_subscales)
+        estimate.add("velocity subscales at the grid cells' Gauss points",
+                     nx * ny,
+                     fluid::VelocitySubscales::bytes_per_cell(parameters.element_degree),
+                     section + "/Stabilization/Subscales",
+                     "dynamic");
       // Where each cell's entries and values sit in the flow's and the phase field's
       // matrices and vectors (linear_algebra::CellScatter, CellGather): 12^2 + 4^2
       // positions of 2 bytes and 12 + 4 rows, right-hand side and vector positions of
@@ -445,6 +452,9 @@ namespace slidewave
           << ", cell size " << parameters.cell_size << ", adaptive levels "
           << (parameters.adaptive ? parameters.adaptive_levels : 0) << "; fluids "
           << parameters.fluid.water_density << ' ' << parameters.fluid.air_density;
+      // (dynamic subscales are a field of their own in the checkpoint)
+      if (parameters.dynamic_subscales)
+        out << "; dynamic subscales";
       return out.str();
     }
 

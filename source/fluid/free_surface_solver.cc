@@ -361,7 +361,10 @@ namespace slidewave
       if (!solid_flux)
         grid.change_if_due(n_steps);
       FluidStepReport   report;
-      const StepLengths lengths{dt, last_dt};
+      // (the flow's own step, when a coupled physics sets shorter ones: the time scale of
+      // dynamic subscales, VelocitySubscales)
+      const StepLengths lengths{
+        dt, last_dt, parameters.dynamic_subscales ? std::max(dt, stable_time_step()) : dt};
       report.gamma = profile_velocity();
       report.phase = phase_system.step(lengths, report.gamma);
       report.flow  = flow_system.step(phase_system.previous(), lengths, time + dt);

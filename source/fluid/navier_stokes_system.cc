@@ -36,6 +36,8 @@ namespace slidewave
       , parameters(parameters)
     {
       grid.attach(*this);
+      if (parameters.dynamic_subscales)
+        subscales = std::make_unique<VelocitySubscales>(grid, parameters.element_degree);
     }
 
 
@@ -153,6 +155,7 @@ namespace slidewave
       const dealii::FEValuesExtractors::Scalar pressure(2);
 
       const double theta = parameters.theta, dt = lengths.dt;
+      const double own_dt = std::max(lengths.own_dt, dt);
       const double w     = extrapolation_weight(lengths, theta);
       const auto  &fluid = parameters.fluid;
 
@@ -174,6 +177,9 @@ namespace slidewave
         porous_values
           = std::make_unique<PorousMediumValues>(grid, porous, quadrature, face_quadrature);
       std::vector<double> mu_q(n_q);
+      std::vector<dealii::Tensor<1, 2>> subscale_n(n_q);
+      if (subscales)
+        subscales->begin_assembly(grid.triangulation().n_locally_owned_active_cells());
 
       // Where each cell's values and entries sit (after grid changes, once).
       if (scatter.empty())
@@ -215,6 +221,8 @@ namespace slidewave
         if (porous.active())
           porous_values->reinit(cell, dt, mu_q);
         static const PorousCoefficients open_water;
+        if (subscales)
+          subscales->read(cell, subscale_n);
 
         local_matrix = 0.;
         local_rhs    = 0.;
@@ -244,12 +252,18 @@ namespace slidewave
             const dealii::Tensor<1, 2> u_bar = u_n[q] + w * (u_n[q] - u_old[q]);
             const double               speed = u_bar.norm();
             // Tezduyar's parameters (paper 002, Eqs. 28-29): tau_m from the time step,
-            // the advection and the viscosity; tau_cont from the element Reynolds
-            // number.
+            // the advection, the viscosity and the drag; tau_cont from the element
+            // Reynolds number. With dynamic subscales, tau_t from the subscale's own
+            // time scale tau_s (the same without the step) and theta dt
+            // (VelocitySubscales).
+            const double advection_rate = 4. * speed * speed / (h * h);
+            const double viscous_rate   = 16. * nu * nu / (h * h * h * h);
+            const double drag_rate      = drag * drag / (n * n * rho * rho);
             const double tau_m
-              = 1.
-                / std::sqrt(4. / (dt * dt) + 4. * speed * speed / (h * h)
-                            + 16. * nu * nu / (h * h * h * h) + drag * drag / (n * n * rho * rho));
+              = subscales ? 1. / (1. / (theta * dt)
+                                  + std::sqrt(4. / (own_dt * own_dt) + advection_rate
+                                              + viscous_rate + drag_rate)) :
+                            1. / std::sqrt(4. / (dt * dt) + advection_rate + viscous_rate + drag_rate);
             const double reynolds = speed * h / (2. * nu);
             const double tau_cont
               = parameters.grad_div ? 0.5 * h * speed * std::min(reynolds / 3., 1.) : 0.;
@@ -276,6 +290,20 @@ namespace slidewave
             // The implicit momentum residual of a velocity shape function (along its
             // component): (rho / dt + drag / n) N_j + theta rho u_bar . G_j.
             const double mass = rho / dt + drag / n;
+            // The stabilization's known residual: with dynamic subscales, the old
+            // subscale's share rho u'^n / (theta dt) as well.
+            dealii::Tensor<1, 2> stabilized_known = explicit_residual;
+            if (subscales)
+              {
+                stabilized_known += rho / (theta * dt) * subscale_n[q];
+                subscales->record(cell_number,
+                                  q,
+                                  {mass,
+                                   pressure_factor,
+                                   tau_m / rho,
+                                   theta * rho * u_bar,
+                                   stabilized_known});
+              }
 
             for (unsigned int i = 0; i < n_dofs; ++i)
               {
@@ -313,7 +341,7 @@ namespace slidewave
                       }
                     local_rhs(i) += (n * Ni * explicit_residual[a]
                                      - n * (1. - theta) * 2. * mu * (Gi * sym_grad_n[a])
-                                     + supg * explicit_residual[a])
+                                     + supg * stabilized_known[a])
                                     * JxW;
                   }
                 else
@@ -336,7 +364,7 @@ namespace slidewave
                     local_rhs(i)
                       += (-Ni * medium.solid_divergence
                           + Gi * (medium.correction_flux + medium.pressure_diffusion * grad_p_n)
-                          + pspg * (Gi * explicit_residual))
+                          + pspg * (Gi * stabilized_known))
                          * JxW;
                   }
               }
@@ -567,6 +595,8 @@ namespace slidewave
       flow.values_changed(1);
       flow.locally_owned_values(0) = solution;
       flow.values_changed(0);
+      if (subscales)
+        subscales->update(flow, flow_gather);
       return report;
     }
 

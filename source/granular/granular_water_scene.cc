@@ -6,6 +6,7 @@
 #include <slidewave/core/run_bounds.h>
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
+#include <slidewave/fluid/velocity_subscales.h>
 #include <slidewave/granular/granular_water_scene.h>
 #include <slidewave/soil/particle_properties.h>
 #include <sstream>
@@ -79,6 +80,12 @@ namespace slidewave
                    core::MemoryEstimate::bytes_per_dof,
                    fluid_section + "/Grid/Cell size",
                    to_string(fluid_parameters.cell_size));
+      if (fluid_parameters.dynamic_subscales)
+        estimate.add("velocity subscales at the grid cells' Gauss points",
+                     nx * ny,
+                     fluid::VelocitySubscales::bytes_per_cell(fluid_parameters.element_degree),
+                     fluid_section + "/Stabilization/Subscales",
+                     "dynamic");
       return estimate;
     }
 
@@ -466,7 +473,8 @@ namespace slidewave
           << fluid_parameters.upper_right << ", cell size " << fluid_parameters.cell_size
           << "; grains " << parameters.grain_density << "; drag "
           << (parameters.forchheimer ? "Forchheimer" : "Darcy") << " coupled "
-          << (parameters.implicit_drag ? "semi-implicitly" : "explicitly") << "; materials";
+          << (parameters.implicit_drag ? "semi-implicitly" : "explicitly")
+          << (fluid_parameters.dynamic_subscales ? "; dynamic subscales" : "") << "; materials";
       // (a material's model decides its points' properties: Hencky's carry b^e)
       for (const auto &material : soil_parameters.materials)
         out << " " << material.signature();

@@ -133,6 +133,9 @@ namespace slidewave
       double       courant_number          = 0.5;
       double       maximum_time_step       = 0.01;
       bool         grad_div                = true;
+      /** The subscales of SUPG and PSPG: false, quasi-static (tau_m with the step);
+       *  true, dynamic (they are integrated in time at the quadrature points). */
+      bool dynamic_subscales = false;
       std::string  preconditioner          = "ilu";
       double       linear_tolerance        = 1e-8;
       unsigned int max_iterations          = 1000;

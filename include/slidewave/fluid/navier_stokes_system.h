@@ -13,6 +13,7 @@
 #include <memory>
 #include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/fluid/porous_medium.h>
+#include <slidewave/fluid/velocity_subscales.h>
 #include <slidewave/grid/finite_element_field.h>
 #include <slidewave/grid/grid_follower.h>
 #include <slidewave/linear_algebra/cell_gather.h>
@@ -29,6 +30,8 @@ namespace slidewave
     {
       /** This step and the one before it (0 at the first step: no extrapolation). */
       double dt = 0., dt_old = 0.;
+      /** The flow's own stable step, at least dt (dynamic subscales' time scale; 0: dt). */
+      double own_dt = 0.;
     };
 
     /**
@@ -102,6 +105,13 @@ namespace slidewave
       void
       impose_boundary_values(unsigned int state, double time);
 
+      /** The dynamic subscales (null with quasi-static ones). */
+      const VelocitySubscales *
+      dynamic_subscales() const
+      {
+        return subscales.get();
+      }
+
       /** The largest nodal speed of the newest state (collective). */
       double
       max_speed() const;
@@ -161,6 +171,8 @@ namespace slidewave
       const grid::FiniteElementField        &phase;
       const FreeSurfaceParameters           &parameters;
       PorousMedium                           porous;
+      /** The dynamic subscales ('Subscales = dynamic'; null: quasi-static). */
+      std::unique_ptr<VelocitySubscales> subscales;
       dealii::AffineConstraints<double>      flow_constraints;
       dealii::TrilinosWrappers::SparseMatrix matrix;
       VectorType                             rhs, solution;

@@ -7,11 +7,11 @@
 #include <slidewave/core/run_bounds.h>
 #include <slidewave/core/run_control.h>
 #include <slidewave/core/timed_run.h>
-#include <slidewave/fluid/velocity_subscales.h>
 #include <slidewave/fluid/free_surface_diagnostics.h>
 #include <slidewave/fluid/free_surface_scene.h>
 #include <slidewave/fluid/martin_moyce.h>
 #include <slidewave/fluid/standing_wave.h>
+#include <slidewave/fluid/velocity_subscales.h>
 #include <sstream>
 
 namespace slidewave

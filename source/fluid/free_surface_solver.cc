@@ -360,7 +360,7 @@ namespace slidewave
       // A moving solid's physics drives the grid's changes (between its steps).
       if (!solid_flux)
         grid.change_if_due(n_steps);
-      FluidStepReport   report;
+      FluidStepReport report;
       // (the flow's own step, when a coupled physics sets shorter ones: the time scale of
       // dynamic subscales, VelocitySubscales)
       const StepLengths lengths{

@@ -156,8 +156,8 @@ namespace slidewave
 
       const double theta = parameters.theta, dt = lengths.dt;
       const double own_dt = std::max(lengths.own_dt, dt);
-      const double w     = extrapolation_weight(lengths, theta);
-      const auto  &fluid = parameters.fluid;
+      const double w      = extrapolation_weight(lengths, theta);
+      const auto  &fluid  = parameters.fluid;
 
       std::vector<dealii::Tensor<1, 2>> u_n(n_q), u_old(n_q);
       std::vector<dealii::Tensor<2, 2>> grad_u_n(n_q);
@@ -176,7 +176,7 @@ namespace slidewave
       if (porous.active())
         porous_values
           = std::make_unique<PorousMediumValues>(grid, porous, quadrature, face_quadrature);
-      std::vector<double> mu_q(n_q);
+      std::vector<double>               mu_q(n_q);
       std::vector<dealii::Tensor<1, 2>> subscale_n(n_q);
       if (subscales)
         subscales->begin_assembly(grid.triangulation().n_locally_owned_active_cells());
@@ -260,10 +260,12 @@ namespace slidewave
             const double viscous_rate   = 16. * nu * nu / (h * h * h * h);
             const double drag_rate      = drag * drag / (n * n * rho * rho);
             const double tau_m
-              = subscales ? 1. / (1. / (theta * dt)
-                                  + std::sqrt(4. / (own_dt * own_dt) + advection_rate
-                                              + viscous_rate + drag_rate)) :
-                            1. / std::sqrt(4. / (dt * dt) + advection_rate + viscous_rate + drag_rate);
+              = subscales ?
+                  1.
+                    / (1. / (theta * dt)
+                       + std::sqrt(4. / (own_dt * own_dt) + advection_rate + viscous_rate
+                                   + drag_rate)) :
+                  1. / std::sqrt(4. / (dt * dt) + advection_rate + viscous_rate + drag_rate);
             const double reynolds = speed * h / (2. * nu);
             const double tau_cont
               = parameters.grad_div ? 0.5 * h * speed * std::min(reynolds / 3., 1.) : 0.;
@@ -296,13 +298,10 @@ namespace slidewave
             if (subscales)
               {
                 stabilized_known += rho / (theta * dt) * subscale_n[q];
-                subscales->record(cell_number,
-                                  q,
-                                  {mass,
-                                   pressure_factor,
-                                   tau_m / rho,
-                                   theta * rho * u_bar,
-                                   stabilized_known});
+                subscales->record(
+                  cell_number,
+                  q,
+                  {mass, pressure_factor, tau_m / rho, theta * rho * u_bar, stabilized_known});
               }
 
             for (unsigned int i = 0; i < n_dofs; ++i)

@@ -128,14 +128,14 @@ namespace slidewave
       double          mobility_factor    = 1.;
 
       /** Of the velocity and the pressure (Q1-Q1 or Q2-Q2); the phase field is Q1. */
-      unsigned int element_degree          = 1;
-      double       theta                   = 0.5;
-      double       courant_number          = 0.5;
-      double       maximum_time_step       = 0.01;
-      bool         grad_div                = true;
+      unsigned int element_degree    = 1;
+      double       theta             = 0.5;
+      double       courant_number    = 0.5;
+      double       maximum_time_step = 0.01;
+      bool         grad_div          = true;
       /** The subscales of SUPG and PSPG: false, quasi-static (tau_m with the step);
        *  true, dynamic (they are integrated in time at the quadrature points). */
-      bool dynamic_subscales = false;
+      bool         dynamic_subscales       = false;
       std::string  preconditioner          = "ilu";
       double       linear_tolerance        = 1e-8;
       unsigned int max_iterations          = 1000;

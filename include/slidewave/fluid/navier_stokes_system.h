@@ -166,13 +166,13 @@ namespace slidewave
       void
       assemble(const VectorType &phase_old, const StepLengths &lengths);
 
-      grid::BackgroundGrid                  &grid;
-      grid::FiniteElementField              &flow;
-      const grid::FiniteElementField        &phase;
-      const FreeSurfaceParameters           &parameters;
-      PorousMedium                           porous;
+      grid::BackgroundGrid           &grid;
+      grid::FiniteElementField       &flow;
+      const grid::FiniteElementField &phase;
+      const FreeSurfaceParameters    &parameters;
+      PorousMedium                    porous;
       /** The dynamic subscales ('Subscales = dynamic'; null: quasi-static). */
-      std::unique_ptr<VelocitySubscales> subscales;
+      std::unique_ptr<VelocitySubscales>     subscales;
       dealii::AffineConstraints<double>      flow_constraints;
       dealii::TrilinosWrappers::SparseMatrix matrix;
       VectorType                             rhs, solution;

@@ -60,10 +60,8 @@ namespace slidewave
       void
       read(const Cell &cell, std::vector<dealii::Tensor<1, 2>> &values) const
       {
-        read_cell(dealii::DoFHandler<2>::active_cell_iterator(&grid.triangulation(),
-                                                              cell->level(),
-                                                              cell->index(),
-                                                              &field.dof_handler()),
+        read_cell(dealii::DoFHandler<2>::active_cell_iterator(
+                    &grid.triangulation(), cell->level(), cell->index(), &field.dof_handler()),
                   values);
       }
 

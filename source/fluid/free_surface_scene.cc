@@ -86,12 +86,7 @@ namespace slidewave
                    core::MemoryEstimate::bytes_per_dof,
                    section + "/Grid/Cell size",
                    to_string(parameters.cell_size));
-      if (parameters.dynamic_subscales)
-        estimate.add("velocity subscales at the grid cells' Gauss points",
-                     nx * ny,
-                     fluid::VelocitySubscales::bytes_per_cell(parameters.element_degree),
-                     section + "/Stabilization/Subscales",
-                     "dynamic");
+      fluid::VelocitySubscales::add_to_memory_estimate(estimate, parameters, section, nx * ny);
       // Where each cell's entries and values sit in the flow's and the phase field's
       // matrices and vectors (linear_algebra::CellScatter, CellGather): 12^2 + 4^2
       // positions of 2 bytes and 12 + 4 rows, right-hand side and vector positions of

@@ -80,12 +80,10 @@ namespace slidewave
                    core::MemoryEstimate::bytes_per_dof,
                    fluid_section + "/Grid/Cell size",
                    to_string(fluid_parameters.cell_size));
-      if (fluid_parameters.dynamic_subscales)
-        estimate.add("velocity subscales at the grid cells' Gauss points",
-                     nx * ny,
-                     fluid::VelocitySubscales::bytes_per_cell(fluid_parameters.element_degree),
-                     fluid_section + "/Stabilization/Subscales",
-                     "dynamic");
+      fluid::VelocitySubscales::add_to_memory_estimate(estimate,
+                                                       fluid_parameters,
+                                                       fluid_section,
+                                                       nx * ny);
       return estimate;
     }
 

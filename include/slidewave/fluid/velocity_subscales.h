@@ -3,9 +3,12 @@
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/fe/fe_values.h>
+#include <slidewave/core/memory_estimate.h>
+#include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/finite_element_field.h>
 #include <slidewave/linear_algebra/cell_gather.h>
+#include <string>
 #include <vector>
 
 namespace slidewave
@@ -84,14 +87,24 @@ namespace slidewave
       void
       update(const grid::FiniteElementField &flow, const linear_algebra::CellGather &gather);
 
-      /** The memory a cell's subscales take [bytes]: two components per Gauss point,
-       *  each an owned and a ghosted vector entry and a dof index, and the assembly's
-       *  terms there. */
-      static double
-      bytes_per_cell(const unsigned int degree)
+      /** Adds to @p estimate what the subscales of @p n_cells cells take when @p parameters
+       *  (of the subsection @p section) ask for dynamic ones: two components per Gauss
+       *  point, each an owned and a ghosted vector entry and a dof index, and the
+       *  assembly's terms there. */
+      static void
+      add_to_memory_estimate(core::MemoryEstimate        &estimate,
+                             const FreeSurfaceParameters &parameters,
+                             const std::string           &section,
+                             const double                 n_cells)
       {
-        const double points = (degree + 1.) * (degree + 1.);
-        return points * (2. * (8. + 8. + 8.) + sizeof(Terms));
+        if (!parameters.dynamic_subscales)
+          return;
+        const double points = (parameters.element_degree + 1.) * (parameters.element_degree + 1.);
+        estimate.add("velocity subscales at the grid cells' Gauss points",
+                     n_cells,
+                     points * (2. * (8. + 8. + 8.) + sizeof(Terms)),
+                     section + "/Stabilization/Subscales",
+                     "dynamic");
       }
 
       /** The field (two components at the Gauss points), for output and tests. */

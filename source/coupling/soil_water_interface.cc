@@ -341,7 +341,7 @@ namespace slidewave
 
 
     void
-    SoilWaterInterface::apply_water_loads(const PointRange            &soil_points,
+    SoilWaterInterface::apply_water_loads(particles::PointCloud       &soil_points,
                                           const water::ShallowWater1D &water,
                                           const double                 dt)
     {
@@ -467,7 +467,7 @@ namespace slidewave
 
 
     void
-    SoilWaterInterface::count_bearing_points(const PointRange &soil_points)
+    SoilWaterInterface::count_bearing_points(particles::PointCloud &soil_points)
     {
       // The weight and shear of a column are shared equally by its samples that soil
       // covers, and the load of a sample by the points that form the envelope there (their
@@ -476,17 +476,16 @@ namespace slidewave
       // proportion to the part of the point's domain over the column.
       std::fill(sample_count.begin(), sample_count.end(), 0.);
       std::fill(face_weights.begin(), face_weights.end(), 0.);
-      for (const auto &particle : soil_points)
-        {
-          for_each_column_of(particle.get_location()[0],
-                             particle.get_properties()[soil_property.domain_half_x],
-                             [&](const unsigned int c, const double fraction) {
-                               for_each_envelope_sample_of(particle, c, [&](const unsigned int s) {
-                                 sample_count[s] += 1.;
-                               });
-                               face_weights[c] += fraction * face_weight(particle, c);
+      soil_points.for_each_particle([&](const auto &particle) {
+        for_each_column_of(particle.get_location()[0],
+                           particle.get_properties()[soil_property.domain_half_x],
+                           [&](const unsigned int c, const double fraction) {
+                             for_each_envelope_sample_of(particle, c, [&](const unsigned int s) {
+                               sample_count[s] += 1.;
                              });
-        }
+                             face_weights[c] += fraction * face_weight(particle, c);
+                           });
+      });
       dealii::Utilities::MPI::sum(sample_count, MPI_COMM_WORLD, sample_count);
       dealii::Utilities::MPI::sum(face_weights, MPI_COMM_WORLD, face_weights);
       std::fill(covered_samples.begin(), covered_samples.end(), 0.);
@@ -505,29 +504,28 @@ namespace slidewave
 
 
     void
-    SoilWaterInterface::write_point_forces(const PointRange &soil_points)
+    SoilWaterInterface::write_point_forces(particles::PointCloud &soil_points)
     {
       double total_buoyancy = 0.;
-      for (auto &particle : soil_points)
-        {
-          dealii::Tensor<1, 2> force({0., buoyancy(particle)});
-          total_buoyancy += force[1];
-          for_each_column_of(particle.get_location()[0],
-                             particle.get_properties()[soil_property.domain_half_x],
-                             [&](const unsigned int c, const double fraction) {
-                               for_each_envelope_sample_of(particle, c, [&](const unsigned int s) {
-                                 const double share = 1. / (covered_samples[c] * sample_count[s]);
-                                 force[0] += column_load_x[c] * share;
-                                 force[1] += column_load_y[c] * share;
-                               });
-                               const double face = fraction * face_weight(particle, c);
-                               if (face > 0.)
-                                 force[0] += column_thrust[c] * face / face_weights[c];
+      soil_points.for_each_particle([&](auto &particle) {
+        dealii::Tensor<1, 2> force({0., buoyancy(particle)});
+        total_buoyancy += force[1];
+        for_each_column_of(particle.get_location()[0],
+                           particle.get_properties()[soil_property.domain_half_x],
+                           [&](const unsigned int c, const double fraction) {
+                             for_each_envelope_sample_of(particle, c, [&](const unsigned int s) {
+                               const double share = 1. / (covered_samples[c] * sample_count[s]);
+                               force[0] += column_load_x[c] * share;
+                               force[1] += column_load_y[c] * share;
                              });
-          auto p                         = particle.get_properties();
-          p[soil_property.point_force_x] = force[0];
-          p[soil_property.point_force_y] = force[1];
-        }
+                             const double face = fraction * face_weight(particle, c);
+                             if (face > 0.)
+                               force[0] += column_thrust[c] * face / face_weights[c];
+                           });
+        auto p                         = particle.get_properties();
+        p[soil_property.point_force_x] = force[0];
+        p[soil_property.point_force_y] = force[1];
+      });
 
       // What the soil carries: the loads of the columns with soil, and the buoyancy.
       total_load

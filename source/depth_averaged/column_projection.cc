@@ -161,26 +161,26 @@ namespace slidewave
     ColumnProjection::project(const particles::PointCloud &cloud)
     {
       pixels.clear();
-      for (const auto &particle : cloud.particles())
-        {
-          const auto   p = particle.get_properties();
-          const double h = p[property::depth];
-          if (!(h > 0.))
-            continue;
-          // The column's area A_p = V_p / h_p, in the proportions of its GIMP domain
-          // (lx, ly): half-sides s lx, s ly with 4 s^2 lx ly = A_p; at most 2 c each, so
-          // that a column spread thin stays a few pixels wide.
-          const double V  = p[property::volume];
-          const double lx = p[property::domain_half_x], ly = p[property::domain_half_y];
-          const double s = std::sqrt(V / h / (4. * lx * ly));
-          add_column(particle.get_location(),
-                     V,
-                     p[property::mass],
-                     p[property::velocity_x],
-                     p[property::velocity_y],
-                     std::min(s * lx, 2. * c),
-                     std::min(s * ly, 2. * c));
-        }
+      // In the grid's order (for_each_particle()): the same sums in a resumed run.
+      cloud.for_each_particle([&](const auto &particle) {
+        const auto   p = particle.get_properties();
+        const double h = p[property::depth];
+        if (!(h > 0.))
+          return;
+        // The column's area A_p = V_p / h_p, in the proportions of its GIMP domain
+        // (lx, ly): half-sides s lx, s ly with 4 s^2 lx ly = A_p; at most 2 c each, so
+        // that a column spread thin stays a few pixels wide.
+        const double V  = p[property::volume];
+        const double lx = p[property::domain_half_x], ly = p[property::domain_half_y];
+        const double s = std::sqrt(V / h / (4. * lx * ly));
+        add_column(particle.get_location(),
+                   V,
+                   p[property::mass],
+                   p[property::velocity_x],
+                   p[property::velocity_y],
+                   std::min(s * lx, 2. * c),
+                   std::min(s * ly, 2. * c));
+      });
       gather_on_rank_zero();
       // Rank 0 (or the only rank): thickness and velocity of every touched pixel, its
       // sums cleared for the next projection.

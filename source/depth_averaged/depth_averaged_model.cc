@@ -155,37 +155,36 @@ namespace slidewave
       // Maxima: speed, depth, travel, x, -x, y, -y, cells holding points.
       double       maxima[7] = {0., 0., 0., -inf, -inf, -inf, -inf};
       unsigned int covered   = 0;
-      dealii::Triangulation<2>::active_cell_iterator previous;
-      for (const auto &particle : cloud.particles())
-        {
-          const auto              p  = particle.get_properties();
-          const dealii::Point<2> &x  = particle.get_location();
-          const double            m  = p[property::mass];
-          const double            vx = p[property::velocity_x], vy = p[property::velocity_y];
-          const double            h = p[property::depth];
-          sums[0] += m;
-          sums[1] += m * vx;
-          sums[2] += m * vy;
-          sums[3] += 0.5 * m * (vx * vx + vy * vy);
-          // The column's centre of mass is at Z + h / 2.
-          sums[4] += m * g * (elevation.value(x) + 0.5 * h);
-          sums[5] += m * x[0];
-          sums[6] += m * x[1];
-          maxima[0] = std::max(maxima[0], std::sqrt(vx * vx + vy * vy));
-          maxima[1] = std::max(maxima[1], h);
-          maxima[2] = std::max(maxima[2],
-                               x.distance(
-                                 dealii::Point<2>(p[property::initial_x], p[property::initial_y])));
-          maxima[3] = std::max(maxima[3], x[0]);
-          maxima[4] = std::max(maxima[4], -x[0]);
-          maxima[5] = std::max(maxima[5], x[1]);
-          maxima[6] = std::max(maxima[6], -x[1]);
-          // The points are stored cell by cell.
-          const auto cell = particle.get_surrounding_cell();
-          if (covered == 0 || cell != previous)
-            ++covered;
-          previous = cell;
-        }
+      // In the grid's order (for_each_cell_with_particles()): the same sums in a run
+      // resumed from a checkpoint.
+      cloud.for_each_cell_with_particles([&](const auto &, const auto &particles_in_cell) {
+        ++covered;
+        for (const auto &particle : particles_in_cell)
+          {
+            const auto              p  = particle.get_properties();
+            const dealii::Point<2> &x  = particle.get_location();
+            const double            m  = p[property::mass];
+            const double            vx = p[property::velocity_x], vy = p[property::velocity_y];
+            const double            h = p[property::depth];
+            sums[0] += m;
+            sums[1] += m * vx;
+            sums[2] += m * vy;
+            sums[3] += 0.5 * m * (vx * vx + vy * vy);
+            // The column's centre of mass is at Z + h / 2.
+            sums[4] += m * g * (elevation.value(x) + 0.5 * h);
+            sums[5] += m * x[0];
+            sums[6] += m * x[1];
+            maxima[0] = std::max(maxima[0], std::sqrt(vx * vx + vy * vy));
+            maxima[1] = std::max(maxima[1], h);
+            maxima[2] = std::max(maxima[2],
+                                 x.distance(dealii::Point<2>(p[property::initial_x],
+                                                             p[property::initial_y])));
+            maxima[3] = std::max(maxima[3], x[0]);
+            maxima[4] = std::max(maxima[4], -x[0]);
+            maxima[5] = std::max(maxima[5], x[1]);
+            maxima[6] = std::max(maxima[6], -x[1]);
+          }
+      });
       dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 7),
                                   MPI_COMM_WORLD,
                                   dealii::ArrayView<double>(sums, 7));
@@ -222,20 +221,19 @@ namespace slidewave
       const std::function<double(const dealii::Point<2> &)> &exact_depth) const
     {
       StillStateErrors errors;
-      for (const auto &particle : cloud.particles())
-        {
-          const auto   p    = particle.get_properties();
-          const double h    = p[property::depth];
-          const double area = p[property::volume] / h;
-          const double e[3] = {h - exact_depth(particle.get_location()),
-                               h * p[property::velocity_x],
-                               h * p[property::velocity_y]};
-          for (unsigned int i = 0; i < 3; ++i)
-            {
-              errors.l1[i] += std::abs(e[i]) * area;
-              errors.linf[i] = std::max(errors.linf[i], std::abs(e[i]));
-            }
-        }
+      cloud.for_each_particle([&](const auto &particle) {
+        const auto   p    = particle.get_properties();
+        const double h    = p[property::depth];
+        const double area = p[property::volume] / h;
+        const double e[3] = {h - exact_depth(particle.get_location()),
+                             h * p[property::velocity_x],
+                             h * p[property::velocity_y]};
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            errors.l1[i] += std::abs(e[i]) * area;
+            errors.linf[i] = std::max(errors.linf[i], std::abs(e[i]));
+          }
+      });
       dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(errors.l1, 3),
                                   MPI_COMM_WORLD,
                                   dealii::ArrayView<double>(errors.l1, 3));
@@ -256,18 +254,17 @@ namespace slidewave
     {
       // Sums: |h_p - h_p0| A_p0, h_p0 A_p0 = V_p; maxima: relative depth error, distance.
       double sums[2] = {0., 0.}, maxima[2] = {0., 0.};
-      for (const auto &particle : cloud.particles())
-        {
-          const auto             p = particle.get_properties();
-          const dealii::Point<2> x0(p[property::initial_x], p[property::initial_y]);
-          const double           h0    = initial_depth(x0);
-          const dealii::Point<2> exact = x0 + t * initial_velocity(x0);
-          const double           e     = std::abs(p[property::depth] - h0);
-          sums[0] += e * p[property::volume] / h0;
-          sums[1] += p[property::volume];
-          maxima[0] = std::max(maxima[0], e / h0);
-          maxima[1] = std::max(maxima[1], particle.get_location().distance(exact));
-        }
+      cloud.for_each_particle([&](const auto &particle) {
+        const auto             p = particle.get_properties();
+        const dealii::Point<2> x0(p[property::initial_x], p[property::initial_y]);
+        const double           h0    = initial_depth(x0);
+        const dealii::Point<2> exact = x0 + t * initial_velocity(x0);
+        const double           e     = std::abs(p[property::depth] - h0);
+        sums[0] += e * p[property::volume] / h0;
+        sums[1] += p[property::volume];
+        maxima[0] = std::max(maxima[0], e / h0);
+        maxima[1] = std::max(maxima[1], particle.get_location().distance(exact));
+      });
       dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 2),
                                   MPI_COMM_WORLD,
                                   dealii::ArrayView<double>(sums, 2));
@@ -287,28 +284,29 @@ namespace slidewave
     DepthAveragedModel::find_invalid_particle(const particles::PointCloud &cloud) const
     {
       std::string problem;
-      for (const auto &particle : cloud.particles())
-        {
-          const auto p  = particle.get_properties();
-          bool       ok = p[property::depth] > 0.;
-          for (unsigned int i = 0; i < property::n_properties; ++i)
-            ok = ok && std::isfinite(p[i]);
-          for (unsigned int d = 0; d < 2; ++d)
-            ok = ok && std::isfinite(particle.get_location()[d]);
-          if (!ok)
-            {
-              std::ostringstream out;
-              out << "material point " << particle.get_id() << " at (" << particle.get_location()
-                  << ") has "
-                  << (std::isfinite(p[property::depth]) && p[property::depth] <= 0. ?
-                        "a depth that is not positive" :
-                        "non-finite values")
-                  << " (depth " << p[property::depth] << " m, velocity " << p[property::velocity_x]
-                  << ", " << p[property::velocity_y] << " m/s)";
-              problem = out.str();
-              break;
-            }
-        }
+      // The first such point in the grid's order.
+      cloud.for_each_particle([&](const auto &particle) {
+        if (!problem.empty())
+          return;
+        const auto p  = particle.get_properties();
+        bool       ok = p[property::depth] > 0.;
+        for (unsigned int i = 0; i < property::n_properties; ++i)
+          ok = ok && std::isfinite(p[i]);
+        for (unsigned int d = 0; d < 2; ++d)
+          ok = ok && std::isfinite(particle.get_location()[d]);
+        if (!ok)
+          {
+            std::ostringstream out;
+            out << "material point " << particle.get_id() << " at (" << particle.get_location()
+                << ") has "
+                << (std::isfinite(p[property::depth]) && p[property::depth] <= 0. ?
+                      "a depth that is not positive" :
+                      "non-finite values")
+                << " (depth " << p[property::depth] << " m, velocity " << p[property::velocity_x]
+                << ", " << p[property::velocity_y] << " m/s)";
+            problem = out.str();
+          }
+      });
       if (problem.empty())
         problem = cloud.wall_crossing;
       return rank_reports::first_nonempty(problem);
@@ -321,18 +319,17 @@ namespace slidewave
     {
       double             fastest = -1.;
       std::ostringstream out;
-      for (const auto &particle : cloud.particles())
-        {
-          const auto   p     = particle.get_properties();
-          const double speed = std::hypot(p[property::velocity_x], p[property::velocity_y]);
-          if (speed > fastest)
-            {
-              fastest = speed;
-              out.str("");
-              out << "material point " << particle.get_id() << " at (" << particle.get_location()
-                  << ") with speed " << speed << " m/s and depth " << p[property::depth] << " m";
-            }
-        }
+      cloud.for_each_particle([&](const auto &particle) {
+        const auto   p     = particle.get_properties();
+        const double speed = std::hypot(p[property::velocity_x], p[property::velocity_y]);
+        if (speed > fastest)
+          {
+            fastest = speed;
+            out.str("");
+            out << "material point " << particle.get_id() << " at (" << particle.get_location()
+                << ") with speed " << speed << " m/s and depth " << p[property::depth] << " m";
+          }
+      });
       return rank_reports::of_largest(fastest, out.str());
     }
 

@@ -102,21 +102,20 @@ namespace slidewave
       // fixed number of columns per cell.
       double columns = 0.;
       if (with_columns)
-        for (const auto &particle : solver->point_cloud().particles())
-          {
-            const double x = particle.get_location()[0];
-            if (x < from)
-              continue;
-            const auto p = particle.get_properties();
-            if (!(p[property::depth] > 0.))
-              continue; // (the checks stop such a run)
-            double h, u;
-            if (on_slope)
-              slope.dam_break(x, t, h, u);
-            else
-              exact.evaluate(x, t, h, u);
-            columns += std::abs(p[property::depth] - h) * p[property::volume] / p[property::depth];
-          }
+        solver->point_cloud().for_each_particle([&](const auto &particle) {
+          const double x = particle.get_location()[0];
+          if (x < from)
+            return;
+          const auto p = particle.get_properties();
+          if (!(p[property::depth] > 0.))
+            return; // (the checks stop such a run)
+          double h, u;
+          if (on_slope)
+            slope.dam_break(x, t, h, u);
+          else
+            exact.evaluate(x, t, h, u);
+          columns += std::abs(p[property::depth] - h) * p[property::volume] / p[property::depth];
+        });
       double all[5] = {sums[0], sums[1], sums[2], sums[3], columns};
       dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(all, 5),
                                   MPI_COMM_WORLD,

@@ -304,31 +304,33 @@ namespace slidewave
         }
       const auto                                  &dofs = grid.dof_handler();
       std::vector<dealii::types::global_dof_index> indices(4);
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(indices);
-            for (const auto &particle : engine.point_cloud().particles().particles_in_cell(cell))
-              {
-                const dealii::Point<2> r    = particle.get_reference_location();
-                const auto             p    = particle.get_properties();
-                const double           w[4] = {(1. - r[0]) * (1. - r[1]),
-                                               r[0] * (1. - r[1]),
-                                               (1. - r[0]) * r[1],
-                                               r[0] * r[1]};
+      // The cells holding points in the grid's order: the same sums in a resumed run.
+      engine.point_cloud().for_each_cell_with_particles(
+        [&](const auto &cell, const auto &particles_in_cell) {
+          const dealii::DoFHandler<2>::active_cell_iterator dof_cell(&dofs.get_triangulation(),
+                                                                     cell->level(),
+                                                                     cell->index(),
+                                                                     &dofs);
+          dof_cell->get_dof_indices(indices);
+          for (const auto &particle : particles_in_cell)
+            {
+              const dealii::Point<2> r = particle.get_reference_location();
+              const auto             p = particle.get_properties();
+              const double           w[4]
+                = {(1. - r[0]) * (1. - r[1]), r[0] * (1. - r[1]), (1. - r[0]) * r[1], r[0] * r[1]};
+              for (unsigned int k = 0; k < 4; ++k)
+                volume[indices[k]] += w[k] * p[property::volume];
+              if (with_velocity)
                 for (unsigned int k = 0; k < 4; ++k)
-                  volume[indices[k]] += w[k] * p[property::volume];
-                if (with_velocity)
-                  for (unsigned int k = 0; k < 4; ++k)
-                    {
-                      mass[indices[k]] += w[k] * p[property::mass];
-                      state.velocity[0][indices[k]]
-                        += w[k] * p[property::mass] * p[property::velocity_x];
-                      state.velocity[1][indices[k]]
-                        += w[k] * p[property::mass] * p[property::velocity_y];
-                    }
-              }
-          }
+                  {
+                    mass[indices[k]] += w[k] * p[property::mass];
+                    state.velocity[0][indices[k]]
+                      += w[k] * p[property::mass] * p[property::velocity_x];
+                    state.velocity[1][indices[k]]
+                      += w[k] * p[property::mass] * p[property::velocity_y];
+                  }
+            }
+        });
       volume.compress(dealii::VectorOperation::add);
       if (with_velocity)
         for (Vector *v : {&mass, &state.velocity[0], &state.velocity[1]})

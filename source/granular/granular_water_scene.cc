@@ -431,14 +431,13 @@ namespace slidewave
       // The granular mass's extent: its front (rightmost point) and top (highest point);
       // its porosity 1 - sum_p m_p / rho^s / sum_p V_p (where a dilatancy takes it).
       double front = -std::numeric_limits<double>::max(), top = front, volumes[2] = {0., 0.};
-      for (const auto &particle : engine->point_cloud().particles())
-        {
-          front        = std::max(front, particle.get_location()[0]);
-          top          = std::max(top, particle.get_location()[1]);
-          const auto p = particle.get_properties();
-          volumes[0] += p[soil::property::mass] / parameters.grain_density;
-          volumes[1] += p[soil::property::volume];
-        }
+      engine->point_cloud().for_each_particle([&](const auto &particle) {
+        front        = std::max(front, particle.get_location()[0]);
+        top          = std::max(top, particle.get_location()[1]);
+        const auto p = particle.get_properties();
+        volumes[0] += p[soil::property::mass] / parameters.grain_density;
+        volumes[1] += p[soil::property::volume];
+      });
       dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(volumes, 2),
                                   MPI_COMM_WORLD,
                                   dealii::ArrayView<double>(volumes, 2));

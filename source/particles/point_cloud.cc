@@ -3,6 +3,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/mapping_cartesian.h>
 #include <limits>
+#include <slidewave/grid/tree_order.h>
 #include <slidewave/particles/point_cloud.h>
 #include <sstream>
 
@@ -142,6 +143,8 @@ namespace slidewave
       // cell at every sort, a fifth of the step).
       static const dealii::MappingCartesian<2> mapping;
       handler.initialize(grid.triangulation(), mapping, properties.size());
+      grid_outdated  = true;
+      cells_outdated = true;
       handler.signals.particle_lost.connect(
         [this](const dealii::Particles::ParticleIterator<2> &particle,
                const typename dealii::Triangulation<2>::active_cell_iterator &) {
@@ -202,6 +205,7 @@ namespace slidewave
                                    });
         }
       handler.update_cached_numbers();
+      cells_outdated   = true;
       expected_regions = nullptr;
     }
 
@@ -288,10 +292,14 @@ namespace slidewave
       // removed from their old ones back to front (the points were collected cell by cell
       // in increasing order within each cell; a removal moves a cell's last point into
       // the gap, so the iterators of the points still to be removed stay valid).
+      // The cached cells holding points (for_each_cell_with_particles()) change only when a
+      // cell receives its first point or loses its last.
       const unsigned int n_properties = handler.n_properties_per_particle();
       for (unsigned int k = 0; k < moving_particles.size(); ++k)
         {
           const MovingParticle &moving = moving_particles[k];
+          if (handler.n_particles_in_cell(moving.cell) == 0)
+            cells_outdated = true;
           handler.insert_particle(
             moving.location,
             moving.reference,
@@ -300,7 +308,12 @@ namespace slidewave
             dealii::ArrayView<const double>(moving_data.data() + k * n_properties, n_properties));
         }
       for (auto moving = moving_particles.rbegin(); moving != moving_particles.rend(); ++moving)
-        handler.remove_particle(moving->particle);
+        {
+          const auto cell = moving->particle->get_surrounding_cell();
+          handler.remove_particle(moving->particle);
+          if (handler.n_particles_in_cell(cell) == 0)
+            cells_outdated = true;
+        }
       handler.update_cached_numbers();
     }
 
@@ -338,6 +351,8 @@ namespace slidewave
           const auto      place
             = std::lower_bound(all_parents.begin(), all_parents.end(), point.parent_id)
               - all_parents.begin();
+          if (handler.n_particles_in_cell(point.cell) == 0)
+            cells_outdated = true; // (a new point goes to its parent's cell)
           const auto inserted = handler.insert_particle(
             point.location,
             point.reference,
@@ -356,6 +371,7 @@ namespace slidewave
     PointCloud::sort()
     {
       handler.sort_particles_into_subdomains_and_cells();
+      cells_outdated = true;
     }
 
 
@@ -372,6 +388,8 @@ namespace slidewave
     PointCloud::grid_changed()
     {
       handler.unpack_after_coarsening_and_refinement();
+      grid_outdated  = true;
+      cells_outdated = true;
     }
 
 
@@ -388,6 +406,44 @@ namespace slidewave
     PointCloud::checkpoint_loaded()
     {
       handler.deserialize();
+      grid_outdated  = true;
+      cells_outdated = true;
+    }
+
+
+
+    void
+    PointCloud::find_cells_with_points() const
+    {
+      const unsigned int n_cells = grid.triangulation().n_active_cells();
+      if (grid_outdated || tree_position.size() != n_cells)
+        {
+          tree_position.assign(n_cells, dealii::numbers::invalid_unsigned_int);
+          unsigned int place = 0;
+          grid::for_each_owned_cell_in_tree_order(grid.dof_handler(), [&](const auto &cell) {
+            tree_position[cell->active_cell_index()] = place++;
+          });
+          grid_outdated = false;
+        }
+      // The handler's cells, one step each (the points of a cell are contiguous).
+      cells_with_points.clear();
+      for (auto particle = handler.begin(); particle != handler.end();)
+        {
+          const auto cell = particle->get_surrounding_cell();
+          cells_with_points.push_back(cell);
+          particle = handler.particles_in_cell(cell).end();
+        }
+      std::sort(cells_with_points.begin(),
+                cells_with_points.end(),
+                [this](const auto &a, const auto &b) {
+                  return tree_position[a->active_cell_index()]
+                         < tree_position[b->active_cell_index()];
+                });
+      Assert(cells_with_points.empty()
+               || tree_position[cells_with_points.back()->active_cell_index()]
+                    != dealii::numbers::invalid_unsigned_int,
+             dealii::ExcInternalError());
+      cells_outdated = false;
     }
   } // namespace particles
 } // namespace slidewave

@@ -188,14 +188,13 @@ namespace slidewave
     {
       const double g     = std::abs(parameters.gravity[1]);
       double       error = 0., norm = 0.;
-      for (const auto &particle : solver->particles())
-        {
-          const auto   p     = particle.get_properties();
-          const double rho0  = p[property::mass] / p[property::initial_volume];
-          const double exact = -rho0 * g * (column_height - p[property::initial_y]);
-          error += std::abs(p[property::stress_yy] - exact) * p[property::initial_volume];
-          norm += rho0 * g * column_height * p[property::initial_volume];
-        }
+      solver->point_cloud().for_each_particle([&](const auto &particle) {
+        const auto   p     = particle.get_properties();
+        const double rho0  = p[property::mass] / p[property::initial_volume];
+        const double exact = -rho0 * g * (column_height - p[property::initial_y]);
+        error += std::abs(p[property::stress_yy] - exact) * p[property::initial_volume];
+        norm += rho0 * g * column_height * p[property::initial_volume];
+      });
       return dealii::Utilities::MPI::sum(error, MPI_COMM_WORLD)
              / dealii::Utilities::MPI::sum(norm, MPI_COMM_WORLD);
     }

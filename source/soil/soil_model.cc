@@ -221,10 +221,11 @@ namespace slidewave
         return p[property::mass] * (1. - lift)
                - (prm.point_forces && g > 0. ? p[property::point_force_y] / g : 0.);
       };
-      for (const auto &particle : cloud.particles())
+      cloud.for_each_particle([&](const auto &particle) {
         mass[static_cast<std::size_t>(bin(particle.get_location(), 0, n_x)) * n_y
              + bin(particle.get_location(), 1, n_y)]
           += weight(particle);
+      });
       dealii::Utilities::MPI::sum(mass, MPI_COMM_WORLD, mass);
       // Weight above the bottom of each bin.
       for (unsigned int i = 0; i < n_x; ++i)
@@ -295,12 +296,11 @@ namespace slidewave
     {
       dealii::Tensor<1, 2> total;
       if (point_forces)
-        for (const auto &particle : cloud.particles())
-          {
-            const auto p = particle.get_properties();
-            total[0] += p[property::point_force_x];
-            total[1] += p[property::point_force_y];
-          }
+        cloud.for_each_particle([&](const auto &particle) {
+          const auto p = particle.get_properties();
+          total[0] += p[property::point_force_x];
+          total[1] += p[property::point_force_y];
+        });
       return dealii::Utilities::MPI::sum(total, MPI_COMM_WORLD);
     }
 
@@ -311,29 +311,30 @@ namespace slidewave
     {
       std::string problem;
       const auto &layout = property_layout;
-      for (const auto &particle : cloud.particles())
-        {
-          const auto p  = particle.get_properties();
-          bool       ok = p[property::volume] > 0.;
-          for (unsigned int i = 0; i < layout.size(); ++i)
-            ok = ok && (!layout.is_state(i) || std::isfinite(p[i]));
-          for (unsigned int d = 0; d < 2; ++d)
-            ok = ok && std::isfinite(particle.get_location()[d]);
-          if (!ok)
-            {
-              std::ostringstream out;
-              out << "material point " << particle.get_id() << " at (" << particle.get_location()
-                  << ") has "
-                  << (std::isfinite(p[property::volume]) && p[property::volume] <= 0. ?
-                        "a non-positive volume" :
-                        "non-finite values")
-                  << " (velocity " << p[property::velocity_x] << ", " << p[property::velocity_y]
-                  << "; stress " << p[property::stress_xx] << ", " << p[property::stress_yy] << ", "
-                  << p[property::stress_xy] << ")";
-              problem = out.str();
-              break;
-            }
-        }
+      // The first such point in the grid's order.
+      cloud.for_each_particle([&](const auto &particle) {
+        if (!problem.empty())
+          return;
+        const auto p  = particle.get_properties();
+        bool       ok = p[property::volume] > 0.;
+        for (unsigned int i = 0; i < layout.size(); ++i)
+          ok = ok && (!layout.is_state(i) || std::isfinite(p[i]));
+        for (unsigned int d = 0; d < 2; ++d)
+          ok = ok && std::isfinite(particle.get_location()[d]);
+        if (!ok)
+          {
+            std::ostringstream out;
+            out << "material point " << particle.get_id() << " at (" << particle.get_location()
+                << ") has "
+                << (std::isfinite(p[property::volume]) && p[property::volume] <= 0. ?
+                      "a non-positive volume" :
+                      "non-finite values")
+                << " (velocity " << p[property::velocity_x] << ", " << p[property::velocity_y]
+                << "; stress " << p[property::stress_xx] << ", " << p[property::stress_yy] << ", "
+                << p[property::stress_xy] << ")";
+            problem = out.str();
+          }
+      });
       if (problem.empty())
         problem = cloud.wall_crossing;
       // Every rank learns the problem of the lowest rank that has one.
@@ -346,33 +347,32 @@ namespace slidewave
     SoilModel::energy_budget(const particles::PointCloud &cloud) const
     {
       double sums[3] = {0., 0., 0.};
-      for (const auto &particle : cloud.particles())
-        {
-          const auto   p  = particle.get_properties();
-          const double m  = p[property::mass];
-          const double vx = p[property::velocity_x], vy = p[property::velocity_y];
-          sums[0] += 0.5 * m * (vx * vx + vy * vy);
-          const auto &elastic
-            = materials[static_cast<unsigned int>(p[property::material_id])].elasticity();
-          const double sxx = p[property::stress_xx], syy = p[property::stress_yy],
-                       szz = p[property::stress_zz], sxy = p[property::stress_xy];
-          const double mean = (sxx + syy + szz) / 3.;
-          const double dev2 = (sxx - mean) * (sxx - mean) + (syy - mean) * (syy - mean)
-                              + (szz - mean) * (szz - mean) + 2. * sxy * sxy;
-          // Hencky: the energy W(tau) per reference volume V_0 = V / J, tau = J sigma, so
-          // J times the same expression in sigma and V.
-          const double J = finite_strain
-                               && finite_strain->is_finite_strain(
-                                 static_cast<unsigned int>(p[property::material_id])) ?
-                             p[property::volume] / p[property::initial_volume] :
-                             1.;
-          sums[1] += J * p[property::volume]
-                     * (0.5 * mean * mean / elastic.bulk_modulus()
-                        + 0.25 * dev2 / elastic.shear_modulus());
-          sums[2] += m
-                     * (prm.gravity[0] * (particle.get_location()[0] - p[property::initial_x])
-                        + prm.gravity[1] * (particle.get_location()[1] - p[property::initial_y]));
-        }
+      cloud.for_each_particle([&](const auto &particle) {
+        const auto   p  = particle.get_properties();
+        const double m  = p[property::mass];
+        const double vx = p[property::velocity_x], vy = p[property::velocity_y];
+        sums[0] += 0.5 * m * (vx * vx + vy * vy);
+        const auto &elastic
+          = materials[static_cast<unsigned int>(p[property::material_id])].elasticity();
+        const double sxx = p[property::stress_xx], syy = p[property::stress_yy],
+                     szz = p[property::stress_zz], sxy = p[property::stress_xy];
+        const double mean = (sxx + syy + szz) / 3.;
+        const double dev2 = (sxx - mean) * (sxx - mean) + (syy - mean) * (syy - mean)
+                            + (szz - mean) * (szz - mean) + 2. * sxy * sxy;
+        // Hencky: the energy W(tau) per reference volume V_0 = V / J, tau = J sigma, so
+        // J times the same expression in sigma and V.
+        const double J = finite_strain
+                             && finite_strain->is_finite_strain(
+                               static_cast<unsigned int>(p[property::material_id])) ?
+                           p[property::volume] / p[property::initial_volume] :
+                           1.;
+        sums[1]
+          += J * p[property::volume]
+             * (0.5 * mean * mean / elastic.bulk_modulus() + 0.25 * dev2 / elastic.shear_modulus());
+        sums[2] += m
+                   * (prm.gravity[0] * (particle.get_location()[0] - p[property::initial_x])
+                      + prm.gravity[1] * (particle.get_location()[1] - p[property::initial_y]));
+      });
       dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 3),
                                   MPI_COMM_WORLD,
                                   dealii::ArrayView<double>(sums, 3));
@@ -386,19 +386,18 @@ namespace slidewave
     {
       double             fastest = -1.;
       std::ostringstream out;
-      for (const auto &particle : cloud.particles())
-        {
-          const auto   p     = particle.get_properties();
-          const double speed = std::sqrt(p[property::velocity_x] * p[property::velocity_x]
-                                         + p[property::velocity_y] * p[property::velocity_y]);
-          if (speed > fastest)
-            {
-              fastest = speed;
-              out.str("");
-              out << "material point " << particle.get_id() << " at (" << particle.get_location()
-                  << ") with speed " << speed << " m/s";
-            }
-        }
+      cloud.for_each_particle([&](const auto &particle) {
+        const auto   p     = particle.get_properties();
+        const double speed = std::sqrt(p[property::velocity_x] * p[property::velocity_x]
+                                       + p[property::velocity_y] * p[property::velocity_y]);
+        if (speed > fastest)
+          {
+            fastest = speed;
+            out.str("");
+            out << "material point " << particle.get_id() << " at (" << particle.get_location()
+                << ") with speed " << speed << " m/s";
+          }
+      });
       // The rank with the fastest point tells everybody.
       return rank_reports::of_largest(fastest, out.str());
     }
@@ -412,19 +411,18 @@ namespace slidewave
       double    sums[4] = {0., 0., 0., 0.};
       double    maxima[3]
         = {0., -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
-      for (const auto &particle : cloud.particles())
-        {
-          const auto   p  = particle.get_properties();
-          const double m  = p[property::mass];
-          const double vx = p[property::velocity_x], vy = p[property::velocity_y];
-          sums[0] += m;
-          sums[1] += m * vx;
-          sums[2] += m * vy;
-          sums[3] += 0.5 * m * (vx * vx + vy * vy);
-          maxima[0] = std::max(maxima[0], std::sqrt(vx * vx + vy * vy));
-          maxima[1] = std::max(maxima[1], particle.get_location()[0]);
-          maxima[2] = std::max(maxima[2], particle.get_location()[1]);
-        }
+      cloud.for_each_particle([&](const auto &particle) {
+        const auto   p  = particle.get_properties();
+        const double m  = p[property::mass];
+        const double vx = p[property::velocity_x], vy = p[property::velocity_y];
+        sums[0] += m;
+        sums[1] += m * vx;
+        sums[2] += m * vy;
+        sums[3] += 0.5 * m * (vx * vx + vy * vy);
+        maxima[0] = std::max(maxima[0], std::sqrt(vx * vx + vy * vy));
+        maxima[1] = std::max(maxima[1], particle.get_location()[0]);
+        maxima[2] = std::max(maxima[2], particle.get_location()[1]);
+      });
       dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 4),
                                   MPI_COMM_WORLD,
                                   dealii::ArrayView<double>(sums, 4));

@@ -80,7 +80,7 @@ namespace
     set_level(water, bed, initial);
     interface.set_initial_level(water);
     set_level(water, bed, level);
-    interface.apply_water_loads({soil.particles().begin(), soil.particles().end()}, water, 0.);
+    interface.apply_water_loads(soil.points(), water, 0.);
     return interface.load_on_soil();
   }
 

@@ -85,7 +85,7 @@ namespace
     set_level(still);
     interface.set_initial_level(water);
     set_level(level);
-    interface.apply_water_loads({soil.particles().begin(), soil.particles().end()}, water, 0.);
+    interface.apply_water_loads(soil.points(), water, 0.);
 
     const dealii::Tensor<1, 2> total = soil.total_point_force();
     const dealii::Tensor<1, 2> own   = interface.load_on_soil();

@@ -127,10 +127,10 @@ namespace slidewave
 
       /** The soil's local points, for the interface to write their point forces (the
        *  soil's layout declares these as loads set from outside). */
-      SoilWaterInterface::PointRange
+      particles::PointCloud &
       soil_points()
       {
-        return {soil->points().begin(), soil->points().end()};
+        return soil->points();
       }
 
       /** The water on @p mesh and the interface with the soil @p columns (interfaces). */

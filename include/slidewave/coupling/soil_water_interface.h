@@ -5,6 +5,7 @@
 #include <deal.II/particles/particle_handler.h>
 #include <limits>
 #include <slidewave/coupling/monotone_cubic.h>
+#include <slidewave/particles/point_cloud.h>
 #include <slidewave/particles/property_layout.h>
 #include <slidewave/water/shallow_water_1d.h>
 #include <slidewave/water/shallow_water_parameters.h>
@@ -108,9 +109,6 @@ namespace slidewave
     class SoilWaterInterface
     {
     public:
-      /** The soil's material points, with write access to their point forces. */
-      using PointRange = dealii::Particles::ParticleHandler<2>::particle_iterator_range;
-
       /**
        * @p columns: the interfaces of the soil columns (increasing; the water mesh's own
        * interfaces when the water cells are the grid columns). @p terrain_at_columns and
@@ -161,10 +159,12 @@ namespace slidewave
        * Sets the point forces of all the soil's local points @p soil_points from the
        * water's state (zero away from the surface, the faces and the still water); @p dt
        * is the step the water just took (the bed shear never takes more momentum than the
-       * water column has in one step). Collective.
+       * water column has in one step). The points are visited in the grid's order
+       * (particles::PointCloud::for_each_particle()): the same sums in a resumed run.
+       * Collective.
        */
       void
-      apply_water_loads(const PointRange            &soil_points,
+      apply_water_loads(particles::PointCloud       &soil_points,
                         const water::ShallowWater1D &water,
                         double                       dt);
 
@@ -206,12 +206,12 @@ namespace slidewave
        *  the points in each column's wet band (collective); the thrust of a face too low
        *  to hold a point goes to the column's surface points. */
       void
-      count_bearing_points(const PointRange &soil_points);
+      count_bearing_points(particles::PointCloud &soil_points);
 
       /** Step 5: writes the point force of every local point and sums total_load, the
        *  loads of the columns with soil and the buoyancy (collective). */
       void
-      write_point_forces(const PointRange &soil_points);
+      write_point_forces(particles::PointCloud &soil_points);
 
       /** The buoyancy of @p point [N/m]: rho_w g times the part of its volume below the
        *  still level (WaterPressure::hydrostatic; otherwise 0). */

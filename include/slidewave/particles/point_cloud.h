@@ -87,22 +87,36 @@ namespace slidewave
 
       /**
        * Calls @p f(cell, particles) for every locally owned cell that holds points, in the
-       * particle handler's order of cells (after a full sort the points' memory is in this
-       * order): empty cells cost nothing and the points' memory is read front to back.
+       * order of the grid's tree (grid::for_each_owned_cell_in_tree_order()), not in the
+       * particle handler's order of cells: deal.II's handler appends a cell that receives
+       * its first points to its list, while a handler loaded from a checkpoint holds its
+       * cells in the grid's order, so that sums over the points taken in the handler's
+       * order would differ by round-off in a resumed run. The cells are a cached list,
+       * found again (in proportion to the cells holding points, not to the grid) after
+       * anything changed the handler's cells: empty cells cost nothing. Every loop whose
+       * order matters (a sum, the first point found) goes through here or
+       * for_each_particle(); the handler's cells must change only through this class.
        */
       template <typename Function>
       void
-      for_each_cell_with_particles(const Function &f)
+      for_each_cell_with_particles(const Function &f) const
       {
-        auto       particle = handler.begin();
-        const auto end      = handler.end();
-        while (particle != end)
-          {
-            const auto cell  = particle->get_surrounding_cell();
-            const auto range = handler.particles_in_cell(cell);
-            f(cell, range);
-            particle = range.end();
-          }
+        if (cells_outdated)
+          find_cells_with_points();
+        for (const auto &cell : cells_with_points)
+          f(cell, handler.particles_in_cell(cell));
+      }
+
+      /** Calls @p f(particle) for every locally owned point, cell by cell in the order of
+       *  for_each_cell_with_particles(). */
+      template <typename Function>
+      void
+      for_each_particle(const Function &f) const
+      {
+        for_each_cell_with_particles([&f](const auto &, const auto &particles_in_cell) {
+          for (auto &particle : particles_in_cell)
+            f(particle);
+        });
       }
 
       /**
@@ -140,6 +154,14 @@ namespace slidewave
       /** deal.II's full sort of the points into the cells and ranks. */
       void
       sort();
+
+      /** The cells' order in the tree is found again (set-up, resume). */
+      void
+      grid_ready() override
+      {
+        grid_outdated  = true;
+        cells_outdated = true;
+      }
 
       /** The points travel with their cells: attached before the change. */
       void
@@ -226,6 +248,21 @@ namespace slidewave
        *  grown): the moving points and their properties, one row each. */
       std::vector<MovingParticle> moving_particles;
       std::vector<double>         moving_data;
+
+      /** The locally owned cells holding points, in the order of the grid's tree
+       *  (for_each_cell_with_particles()), and whether the handler's cells may have changed
+       *  since they were found. */
+      mutable std::vector<grid::BackgroundGrid::ActiveCellIterator> cells_with_points;
+      mutable bool                                                  cells_outdated = true;
+      /** Each locally owned active cell's place in the tree order, by active cell index,
+       *  and whether the grid changed since it was found. */
+      mutable std::vector<unsigned int> tree_position;
+      mutable bool                      grid_outdated = true;
+
+      /** Finds cells_with_points: the handler's cells (one step per cell), sorted by their
+       *  place in the tree (found first, in proportion to the grid, if it changed). */
+      void
+      find_cells_with_points() const;
 
       /** The end of relocate_within_patches() when some point on some rank changed cell:
        *  inserts this rank's moving points in their new cells, then removes them from their

@@ -191,12 +191,20 @@ namespace slidewave
         return engine.point_cloud().particles();
       }
 
+      /** The points with their cells in the grid's order, for sums over them
+       *  (particles::PointCloud::for_each_particle()). */
+      const particles::PointCloud &
+      point_cloud() const
+      {
+        return engine.point_cloud();
+      }
+
       /** The points, writable: for a physics that loads them from outside (the water of a
        *  coupled scene writes the point forces the layout declares as external loads). */
-      dealii::Particles::ParticleHandler<2> &
+      particles::PointCloud &
       points()
       {
-        return engine.point_cloud().particles();
+        return engine.point_cloud();
       }
 
       const dealii::DoFHandler<2> &

@@ -27,6 +27,7 @@ namespace slidewave
       const auto             &fe = field.finite_element();
       dof_component.resize(fe.n_dofs_per_cell());
       dof_point.resize(fe.n_dofs_per_cell());
+      cell_indices.resize(fe.n_dofs_per_cell());
       const auto &support = fe.base_element(0).get_unit_support_points();
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
         {
@@ -45,11 +46,10 @@ namespace slidewave
     VelocitySubscales::read_cell(const dealii::DoFHandler<2>::active_cell_iterator &cell,
                                  std::vector<dealii::Tensor<1, 2>>                 &values) const
     {
-      std::vector<dealii::types::global_dof_index> indices(dof_point.size());
-      cell->get_dof_indices(indices);
+      cell->get_dof_indices(cell_indices);
       const auto &u = field.values(0);
-      for (unsigned int i = 0; i < indices.size(); ++i)
-        values[dof_point[i]][dof_component[i]] = u[indices[i]];
+      for (unsigned int i = 0; i < cell_indices.size(); ++i)
+        values[dof_point[i]][dof_component[i]] = u[cell_indices[i]];
     }
 
 
@@ -73,12 +73,11 @@ namespace slidewave
       std::vector<unsigned int> component(n_dofs);
       for (unsigned int i = 0; i < n_dofs; ++i)
         component[i] = fe.system_to_component_index(i).first;
-      std::vector<double>                          dofs(n_dofs);
-      std::vector<dealii::Tensor<1, 2>>            u(n_q), grad_p(n_q), subscale(n_q);
-      std::vector<dealii::Tensor<2, 2>>            grad_u(n_q);
-      std::vector<dealii::types::global_dof_index> indices(dof_point.size());
-      auto                                        &owned       = field.locally_owned_values(0);
-      unsigned int                                 cell_number = 0;
+      std::vector<double>               dofs(n_dofs);
+      std::vector<dealii::Tensor<1, 2>> u(n_q), grad_p(n_q), subscale(n_q);
+      std::vector<dealii::Tensor<2, 2>> grad_u(n_q);
+      auto                             &owned       = field.locally_owned_values(0);
+      unsigned int                      cell_number = 0;
       grid::for_each_owned_cell_in_tree_order(flow.dof_handler(), [&](const auto &cell) {
         fv.reinit(cell);
         gather.get(cell_number, flow.values(0), dofs.data());
@@ -99,9 +98,9 @@ namespace slidewave
                                                               cell->level(),
                                                               cell->index(),
                                                               &field.dof_handler());
-        own->get_dof_indices(indices);
-        for (unsigned int i = 0; i < indices.size(); ++i)
-          owned[indices[i]] = subscale[dof_point[i]][dof_component[i]];
+        own->get_dof_indices(cell_indices);
+        for (unsigned int i = 0; i < cell_indices.size(); ++i)
+          owned[cell_indices[i]] = subscale[dof_point[i]][dof_component[i]];
         ++cell_number;
       });
       owned.compress(dealii::VectorOperation::insert);

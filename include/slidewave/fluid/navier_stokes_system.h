@@ -105,13 +105,6 @@ namespace slidewave
       void
       impose_boundary_values(unsigned int state, double time);
 
-      /** The dynamic subscales (null with quasi-static ones). */
-      const VelocitySubscales *
-      dynamic_subscales() const
-      {
-        return subscales.get();
-      }
-
       /** The largest nodal speed of the newest state (collective). */
       double
       max_speed() const;

@@ -107,13 +107,6 @@ namespace slidewave
                      "dynamic");
       }
 
-      /** The field (two components at the Gauss points), for output and tests. */
-      const grid::FiniteElementField &
-      values() const
-      {
-        return field;
-      }
-
     private:
       void
       read_cell(const dealii::DoFHandler<2>::active_cell_iterator &cell,
@@ -124,7 +117,9 @@ namespace slidewave
       unsigned int             degree, n_q;
       /** Each of the field's cell dofs: its component and its quadrature point. */
       std::vector<unsigned int> dof_component, dof_point;
-      std::vector<Terms>        store;
+      /** A cell's dof indices (scratch of read_cell() and update()). */
+      mutable std::vector<dealii::types::global_dof_index> cell_indices;
+      std::vector<Terms>                                   store;
     };
   } // namespace fluid
 } // namespace slidewave

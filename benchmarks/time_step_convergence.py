@@ -11,11 +11,17 @@ time (the speed-accuracy trade of a shorter step):
 - ``granular``: the loose underwater collapse of tests/granular/underwater_collapse_short.prm
   (10 mm cells, 0.25 s) with 'Time step multiplier' 0.5 (the default), 0.25, 0.125.
 
-Each at the shipped 'FLIP fraction' (0.99) and at 1 (pure FLIP). Found with it (doc/
-granular-water.md, Not done yet): the FLIP blend's PIC share per step is a damping rate
-(1 - FLIP)/Δt, so the dry column's energy falls as the step shrinks unless FLIP = 1, and the
-semi-implicit drag smooths the grains' velocity once per step, so the underwater column's
-energy halves with each halving. A fix shows here as changes per halving that shrink.
+- ``depth``: Ritter's dam break of tests/depth_averaged/dam_break_ritter.prm (0.25 m cells,
+  4 s) with 'Courant number' 0.5 (the default), 0.25, 0.125, with its L1 depth error against
+  the exact solution.
+
+Each at the shipped 'FLIP fraction' (0.99 for the material points, 0.8 for the
+depth-averaged columns) and at 1 (pure FLIP). Found with it (doc/granular-water.md, Not done
+yet): a FLIP blend fixed per step is a damping rate (1 - FLIP)/Δt, so the dry column's
+energy fell as the step shrank unless FLIP = 1 (now the blend is a rate, FLIP^(Δt/Δt_ref):
+doc/mpm.md, "The FLIP blend as a rate"), and the semi-implicit drag smooths the grains'
+velocity once per step, so the underwater column's energy halves with each halving. A
+scheme that converges shows here as changes per halving that shrink.
 Written to ``--csv`` (default benchmarks/results/time_step_convergence.csv).
 
 Single runs on a shared 2-vCPU machine whose speed drifts by +-30 %: read the times as
@@ -33,21 +39,27 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from benchmark_common import write_csv  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# scene: (prm, step entry, its three values, the section of 'FLIP fraction', its shipped
+# value, the statistics column of the front)
 SCENES = {
     "mpm": (os.path.join(ROOT, "tests", "mpm", "column_collapse_short.prm"),
-            "Material points/Fixed time step", ["5e-5", "2.5e-5", "1.25e-5"], "runout"),
+            "Material points/Fixed time step", ["5e-5", "2.5e-5", "1.25e-5"],
+            "Material points", "0.99", "runout"),
     "granular": (os.path.join(ROOT, "tests", "granular", "underwater_collapse_short.prm"),
                  "Material points/Time step multiplier", ["0.5", "0.25", "0.125"],
-                 "skeleton_front"),
+                 "Material points", "0.99", "skeleton_front"),
+    "depth": (os.path.join(ROOT, "tests", "depth_averaged", "dam_break_ritter.prm"),
+              "Depth averaged/Courant number", ["0.5", "0.25", "0.125"],
+              "Depth averaged", "0.8", "x_max"),
 }
 
 
 def run(exe, scene, step_value, flip):
-    prm, step_entry, _, front_key = SCENES[scene]
+    prm, step_entry, _, flip_section, _, front_key = SCENES[scene]
     out_dir = tempfile.mkdtemp(prefix="sw-dt-")
     command = [exe, "--set", f"Output directory={out_dir}", "--set", "Test/Enable=false",
                "--set", "Time/Output interval=1000", "--set", f"{step_entry}={step_value}",
-               "--set", f"Material points/FLIP fraction={flip}", prm]
+               "--set", f"{flip_section}/FLIP fraction={flip}", prm]
     env = dict(os.environ, OPENBLAS_CORETYPE="Haswell")
     start = time.monotonic()
     result = subprocess.run(command, capture_output=True, text=True, env=env)
@@ -61,6 +73,7 @@ def run(exe, scene, step_value, flip):
     row = {"scene": scene, "step_setting": step_value, "flip": flip,
            "steps": int(values["step"]), "time": float(values["time"]),
            "kinetic_energy": float(values[energy_key]), "front": float(values[front_key]),
+           "error": float(values["depth_error_l1"]) if "depth_error_l1" in values else "",
            "wall_s": wall}
     print(" ".join(f"{k}={v:.6g}" if isinstance(v, float) else f"{k}={v}"
                    for k, v in row.items()), flush=True)
@@ -72,24 +85,28 @@ def main():
     parser.add_argument("--exe", default=os.path.join(ROOT, "build", "slidewave"))
     parser.add_argument("--csv", default=os.path.join(ROOT, "benchmarks", "results",
                                                       "time_step_convergence.csv"))
-    parser.add_argument("--scenes", default="mpm,granular")
-    parser.add_argument("--flips", default="0.99,1")
+    parser.add_argument("--scenes", default="mpm,granular,depth")
+    parser.add_argument("--flips", default="shipped,1",
+                        help="FLIP fractions ('shipped': the scene's default)")
     args = parser.parse_args()
     rows = []
     for scene in args.scenes.split(","):
         for flip in args.flips.split(","):
+            flip = SCENES[scene][4] if flip == "shipped" else flip
             rows += [run(args.exe, scene, value, flip) for value in SCENES[scene][2]]
     write_csv(args.csv, rows, list(rows[0].keys()))
     print("\n| scene | FLIP | step setting | steps | kinetic energy | change per halving | "
-          "front [m] | wall [s] |")
-    print("|---|---|---|---|---|---|---|---|")
+          "front [m] | L1 error | wall [s] |")
+    print("|---|---|---|---|---|---|---|---|---|")
     previous = None
     for r in rows:
         same = previous is not None and previous["scene"] == r["scene"] \
             and previous["flip"] == r["flip"]
         change = f"{r['kinetic_energy'] / previous['kinetic_energy'] - 1:+.1%}" if same else "-"
         print(f"| {r['scene']} | {r['flip']} | {r['step_setting']} | {r['steps']} | "
-              f"{r['kinetic_energy']:.4e} | {change} | {r['front']:.5f} | {r['wall_s']:.3g} |")
+              f"{r['kinetic_energy']:.4e} | {change} | {r['front']:.5f} | "
+              f"{r['error'] if r['error'] == '' else format(r['error'], '.4e')} | "
+              f"{r['wall_s']:.3g} |")
         previous = r
 
 

@@ -103,6 +103,23 @@ namespace slidewave
 
 
 
+    double
+    DepthAveragedModel::stability_limit(const double max_speed, const double h) const
+    {
+      // Eq. 22 with the wave speed: h / max_p (|v_p| + sqrt(g h_p)); and the viscous
+      // limit of an explicit step, rho h^2 / (4 eta) with eta = 2 mu + tau_Y m the largest
+      // viscosity of the (regularized) Bingham law: its stress is eta D, and the largest
+      // eigenvalue of div(eta D) on the grid is below 8 eta / (rho h^2).
+      const double eta = 2. * prm.viscosity + prm.yield_stress * prm.regularization;
+      const double advective
+        = max_speed > 0. ? h / max_speed : std::numeric_limits<double>::infinity();
+      const double viscous
+        = eta > 0. ? prm.density * h * h / (4. * eta) : std::numeric_limits<double>::infinity();
+      return std::min(advective, viscous);
+    }
+
+
+
     bool
     DepthAveragedModel::fill_new_point(std::vector<double>        &properties,
                                        const dealii::Point<2>     &position,

@@ -81,10 +81,11 @@ namespace slidewave
       engine_settings(const DepthAveragedParameters &prm)
       {
         engine::ParticleEngine<DepthAveragedModel>::Settings settings;
-        settings.shape_function  = prm.shape_function;
-        settings.flip_fraction   = prm.flip_fraction;
-        settings.particle_weight = prm.balancing.particle_weight;
-        settings.timer_name      = "depth averaged step";
+        settings.shape_function            = prm.shape_function;
+        settings.flip_fraction             = prm.flip_fraction;
+        settings.flip_reference_multiplier = reference_courant_number;
+        settings.particle_weight           = prm.balancing.particle_weight;
+        settings.timer_name                = "depth averaged step";
         return settings;
       }
 
@@ -235,18 +236,7 @@ namespace slidewave
     double
     DepthAveragedSolver::stability_limit() const
     {
-      // Eq. 22 with the wave speed: h / max_p (|v_p| + sqrt(g h_p)); and the viscous
-      // limit of an explicit step, rho h^2 / (4 eta) with eta = 2 mu + tau_Y m the largest
-      // viscosity of the (regularized) Bingham law: its stress is eta D, and the largest
-      // eigenvalue of div(eta D) on the grid is below 8 eta / (rho h^2).
-      const double max_speed = engine.max_signal_speed();
-      const double h         = prm.cell_size;
-      const double eta       = 2. * prm.viscosity + prm.yield_stress * prm.regularization;
-      const double advective
-        = max_speed > 0. ? h / max_speed : std::numeric_limits<double>::infinity();
-      const double viscous
-        = eta > 0. ? prm.density * h * h / (4. * eta) : std::numeric_limits<double>::infinity();
-      return std::min(advective, viscous);
+      return engine.stability_limit();
     }
 
 

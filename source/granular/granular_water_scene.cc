@@ -109,13 +109,14 @@ namespace slidewave
                                                     fluid_parameters.fluid.water_density,
                                                     fluid_parameters.fluid.water_viscosity);
       Engine::Settings settings;
-      settings.shape_function       = soil_parameters.shape_function;
-      settings.flip_fraction        = soil_parameters.flip_fraction;
-      settings.musl                 = soil_parameters.update_scheme != soil::UpdateScheme::usl;
-      settings.full_sort_every_step = soil_parameters.full_sort_every_step;
-      settings.particle_weight      = soil_parameters.adaptivity.particle_weight;
-      settings.timer_name           = "granular: skeleton";
-      engine                        = std::make_unique<Engine>(*grid,
+      settings.shape_function            = soil_parameters.shape_function;
+      settings.flip_fraction             = soil_parameters.flip_fraction;
+      settings.flip_reference_multiplier = soil::reference_time_step_multiplier;
+      settings.musl                      = soil_parameters.update_scheme != soil::UpdateScheme::usl;
+      settings.full_sort_every_step      = soil_parameters.full_sort_every_step;
+      settings.particle_weight           = soil_parameters.adaptivity.particle_weight;
+      settings.timer_name                = "granular: skeleton";
+      engine                             = std::make_unique<Engine>(*grid,
                                         *model,
                                         soil_parameters.boundaries,
                                         soil_parameters.walls,
@@ -268,9 +269,7 @@ namespace slidewave
     GranularWaterScene::skeleton_limit() const
     {
       // The skeleton's P-wave crossing a cell (Eq. 23 with alpha = 1).
-      const double speed = engine->max_signal_speed();
-      return speed > 0. ? soil_parameters.cell_size / speed :
-                          std::numeric_limits<double>::infinity();
+      return engine->stability_limit();
     }
 
 

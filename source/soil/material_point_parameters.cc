@@ -60,7 +60,10 @@ namespace slidewave
                           Double(0., 1.),
                           "Blend of the particle velocity update: 1 is pure FLIP (increments "
                           "of the nodal velocities, no dissipation, noisy), 0 pure PIC (nodal "
-                          "velocities, dissipative).");
+                          "velocities, dissipative). The blend of a step at the default "
+                          "multiplier 0.5 (dt_ref = 0.5 h / max_p (c_p + |v_p|)); a step dt "
+                          "blends FLIP^(dt / dt_ref), so that PIC's damping is a rate and the "
+                          "results converge as the step shrinks (doc/mpm.md).");
         prm.declare_entry("Time step multiplier",
                           "0.5",
                           Double(),

@@ -17,14 +17,15 @@ namespace slidewave
       engine_settings(const MaterialPointParameters &prm)
       {
         engine::ParticleEngine<SoilModel>::Settings settings;
-        settings.shape_function       = prm.shape_function;
-        settings.flip_fraction        = prm.flip_fraction;
-        settings.musl                 = prm.update_scheme != UpdateScheme::usl;
-        settings.full_sort_every_step = prm.full_sort_every_step;
-        settings.with_node_positions  = prm.prescribed_velocity != nullptr;
-        settings.prescribed_velocity  = prm.prescribed_velocity.get();
-        settings.particle_weight      = prm.adaptivity.particle_weight;
-        settings.timer_name           = "mpm step";
+        settings.shape_function            = prm.shape_function;
+        settings.flip_fraction             = prm.flip_fraction;
+        settings.flip_reference_multiplier = reference_time_step_multiplier;
+        settings.musl                      = prm.update_scheme != UpdateScheme::usl;
+        settings.full_sort_every_step      = prm.full_sort_every_step;
+        settings.with_node_positions       = prm.prescribed_velocity != nullptr;
+        settings.prescribed_velocity       = prm.prescribed_velocity.get();
+        settings.particle_weight           = prm.adaptivity.particle_weight;
+        settings.timer_name                = "mpm step";
         return settings;
       }
     } // namespace
@@ -196,8 +197,7 @@ namespace slidewave
     double
     MaterialPointSolver::stability_limit() const
     {
-      const double max_speed = engine.max_signal_speed();
-      return max_speed > 0. ? prm.cell_size / max_speed : std::numeric_limits<double>::infinity();
+      return engine.stability_limit();
     }
 
 

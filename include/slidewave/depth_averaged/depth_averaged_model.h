@@ -391,6 +391,11 @@ namespace slidewave
       double
       empty_node_mass() const;
 
+      /** The stable step: Eq. 22's h / max_speed (max_speed = max_p (|v_p| + sqrt(g h_p)))
+       *  and the viscous limit of an explicit step (the engine's stability_limit()). */
+      double
+      stability_limit(double max_speed, double h) const;
+
       /** The properties of a new point at @p position in a cell hx x hy, of depth @p h
        *  and velocity @p v (the release's there); false where there is no material
        *  (h <= 0). */

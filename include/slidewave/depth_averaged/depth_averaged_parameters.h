@@ -18,6 +18,8 @@ namespace slidewave
 {
   namespace depth_averaged
   {
+    /** The default 'Courant number', whose step the 'FLIP fraction' is the blend of. */
+    constexpr double reference_courant_number = 0.5;
     /** The pressure term of the momentum balance (paper 001, §4.1). */
     enum class HydrostaticTerm
     {
@@ -127,7 +129,9 @@ namespace slidewave
       /** @name Numerics */
       DepthUpdate         depth_update   = DepthUpdate::projection;
       grid::ShapeFunction shape_function = grid::ShapeFunction::gimp;
-      /** 0: PIC (Eq. 33), 1: FLIP (Eq. 34), between: a blend. */
+      /** 0: PIC (Eq. 33), 1: FLIP (Eq. 34), between: the blend of a step at the default
+       *  'Courant number' (reference_courant_number); a step dt blends
+       *  flip_fraction^(dt / dt_ref) (engine::ParticleEngine::Settings). */
       double flip_fraction = 0.8;
       /** A column wider than this many times its initial width splits (0: never). */
       double split_stretch = 1.5;

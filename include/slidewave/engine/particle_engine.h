@@ -51,6 +51,13 @@ namespace slidewave
       {
         grid::ShapeFunction shape_function = grid::ShapeFunction::q1;
         double              flip_fraction  = 0.99;
+        /** > 0: flip_fraction is the blend of a step of this multiple of the model's stable
+         *  step (stability_limit()), and a step of another length dt blends
+         *  flip_fraction^(dt / dt_ref): PIC's damping is then a rate, not a share of every
+         *  step, and the scheme converges as the step shrinks (the same blend at the
+         *  reference step; pure PIC and pure FLIP unchanged). 0: the same blend every
+         *  step. */
+        double flip_reference_multiplier = 0.;
         /** Modified update stress last: re-map the velocities before the update. */
         bool musl = false;
         /** Relocate the points by deal.II's full sort every step. */
@@ -157,6 +164,21 @@ namespace slidewave
       double
       max_signal_speed() const;
 
+      /** The model's stable step (Model::stability_limit) for the fastest point
+       *  (max_signal_speed()) and the grid's finest cells (collective). */
+      double
+      stability_limit() const;
+
+      /** The FLIP fraction of a step of length @p dt (Settings::flip_reference_multiplier),
+       *  between begin_step() and finish_step(). */
+      double
+      flip_fraction_of_step(double dt) const;
+
+      /** Whether the FLIP blend depends on the step (Settings::flip_reference_multiplier,
+       *  a blend strictly between PIC and FLIP). */
+      bool
+      blends_by_rate() const;
+
       /** The points to the grid alone, without a step (no grid change, no walls' update):
        *  the nodal sums of the current state, for a physics coupled at the nodes to read
        *  before the first step (collective). */
@@ -261,10 +283,13 @@ namespace slidewave
       grid::CellPatches         patches;
       TransferKernels<Model>    kernels;
 
-      double               current_time = 0.;
-      unsigned int         n_steps = 0, n_full_sorts = 0;
-      dealii::TimerOutput *timer    = nullptr;
-      core::StepTimeline  *timeline = nullptr;
+      double       current_time = 0.;
+      unsigned int n_steps = 0, n_full_sorts = 0;
+      /** Settings::flip_reference_multiplier times stability_limit() at the start of this
+       *  step (begin_step(), only when the FLIP blend is a rate). */
+      double               reference_step = 0.;
+      dealii::TimerOutput *timer          = nullptr;
+      core::StepTimeline  *timeline       = nullptr;
       /** Scratch of finish_points(), kept between steps (no allocation once grown): the
        *  new points, their properties and positions, and one point's properties. */
       std::vector<particles::PointCloud::NewPoint> new_points;

@@ -1,6 +1,7 @@
 #ifndef slidewave_engine_particle_engine_templates_h
 #define slidewave_engine_particle_engine_templates_h
 
+#include <cmath>
 #include <deal.II/base/mpi.h>
 #include <optional>
 #include <slidewave/engine/particle_engine.h>
@@ -36,10 +37,7 @@ namespace slidewave
                 nodes,
                 patches,
                 constraints,
-                {settings.shape_function,
-                 settings.flip_fraction,
-                 model.empty_node_mass(),
-                 settings.prescribed_velocity})
+                {settings.shape_function, model.empty_node_mass(), settings.prescribed_velocity})
     {
       // The order of the followers is the order of their rebuilding after a grid change:
       // the points first, then the nodes, and what is built on the nodes.
@@ -147,6 +145,11 @@ namespace slidewave
       // A timer section per part of the step when a timer is given.
       if (timeline)
         timeline->begin_step(n_steps + 1);
+      // The reference step of the step's start, before anything moves: the limit the
+      // scene's step came from, so that a step at the reference multiplier blends FLIP
+      // exactly.
+      reference_step
+        = blends_by_rate() ? settings.flip_reference_multiplier * stability_limit() : 0.;
       start_part("grid changes");
       grid.change_if_due(n_steps);
       lap(core::StepTimeline::grid_changes);
@@ -185,7 +188,7 @@ namespace slidewave
       // after a relocation.
       kernels.new_positions().resize(cloud.particles().get_property_pool().n_slots());
       start_part("grid to particles");
-      kernels.grid_to_particles(dt, /*with_stresses=*/!settings.musl);
+      kernels.grid_to_particles(dt, /*with_stresses=*/!settings.musl, flip_fraction_of_step(dt));
       lap(core::StepTimeline::gather);
       if (settings.musl)
         {
@@ -272,6 +275,39 @@ namespace slidewave
     ParticleEngine<Model>::max_signal_speed() const
     {
       return dealii::Utilities::MPI::max(kernels.max_signal_speed(), MPI_COMM_WORLD);
+    }
+
+
+
+    template <class Model>
+    double
+    ParticleEngine<Model>::stability_limit() const
+    {
+      return model.stability_limit(max_signal_speed(), grid.cell_size());
+    }
+
+
+
+    template <class Model>
+    bool
+    ParticleEngine<Model>::blends_by_rate() const
+    {
+      const double flip = settings.flip_fraction;
+      return settings.flip_reference_multiplier > 0. && flip > 0. && flip < 1.;
+    }
+
+
+
+    template <class Model>
+    double
+    ParticleEngine<Model>::flip_fraction_of_step(const double dt) const
+    {
+      const double flip = settings.flip_fraction;
+      if (!blends_by_rate() || !(reference_step > 0.) || !std::isfinite(reference_step))
+        return flip;
+      // At the reference step dt / reference_step is 1 exactly (the scenes' step is the
+      // same expression of the same state) and the blend is flip_fraction itself.
+      return std::pow(flip, dt / reference_step);
     }
 
 

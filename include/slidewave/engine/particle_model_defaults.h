@@ -2,6 +2,7 @@
 #define slidewave_engine_particle_model_defaults_h
 
 #include <deal.II/base/point.h>
+#include <limits>
 #include <slidewave/grid/nodal_workspace.h>
 #include <slidewave/grid/shape_functions.h>
 
@@ -38,6 +39,16 @@ namespace slidewave
       n_used_nodal_fields() const
       {
         return 0;
+      }
+
+      /** The stable step of the explicit scheme for cells of size @p h whose fastest point
+       *  carries signals at @p max_speed (paper 000, Eq. 23 with alpha = 1): h / max_speed,
+       *  unbounded when nothing moves or carries a wave. The scenes' step is a multiplier
+       *  times it, and the FLIP blend is a rate relative to it (ParticleEngine::Settings). */
+      double
+      stability_limit(const double max_speed, const double h) const
+      {
+        return max_speed > 0. ? h / max_speed : std::numeric_limits<double>::infinity();
       }
 
       /** Whether the workspace keeps 1 / the lumped area of each node. */

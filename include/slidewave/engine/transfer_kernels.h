@@ -62,7 +62,6 @@ namespace slidewave
       struct Settings
       {
         grid::ShapeFunction shape_function = grid::ShapeFunction::q1;
-        double              flip_fraction  = 0.99;
         /** Nodes with less mass are empty: their velocity is zero. */
         double empty_node_mass = 0.;
         /** Kinematic mode: the nodal velocities are this field (null: off). */
@@ -92,10 +91,11 @@ namespace slidewave
       void
       update_grid(double dt, double time);
 
-      /** Velocities (PIC/FLIP, Eq. 20) and new positions (Eq. 21, in new_positions());
-       *  with @p with_stresses (USL) also the model's update in the same pass. */
+      /** Velocities (PIC/FLIP, Eq. 20, with the step's FLIP fraction @p flip) and new
+       *  positions (Eq. 21, in new_positions()); with @p with_stresses (USL) also the
+       *  model's update in the same pass. */
       void
-      grid_to_particles(double dt, bool with_stresses);
+      grid_to_particles(double dt, bool with_stresses, double flip);
 
       /** MUSL: nodal velocities from the updated particle momenta (collective). */
       void

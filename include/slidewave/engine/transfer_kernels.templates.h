@@ -302,14 +302,15 @@ namespace slidewave
 
     template <class Model>
     void
-    TransferKernels<Model>::grid_to_particles(const double dt, const bool with_stresses)
+    TransferKernels<Model>::grid_to_particles(const double dt,
+                                              const bool   with_stresses,
+                                              const double flip)
     {
       // Velocities (PIC/FLIP, Eq. 20) and new positions (Eq. 21); the positions are
       // kept aside until the stresses have been updated on the old positions. With USL
       // the velocity gradients come from the same nodal velocities, so the stresses are
       // updated in the same pass.
       grid::NodeWeights w;
-      const double      flip = settings.flip_fraction;
       // The workspace's velocities as a plain pointer, taken once (see particles_to_grid).
       const double *const all_velocities = nodes.velocities(0);
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {

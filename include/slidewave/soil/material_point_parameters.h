@@ -34,6 +34,9 @@ namespace slidewave
      * Measured (doc/stability.md): GIMP runs complete at 0.7071 and blow up at 0.9.
      */
     constexpr double max_time_step_multiplier = 0.70710678118654752;
+    /** The default 'Time step multiplier', whose step the 'FLIP fraction' is the blend of
+     *  (a step of another length blends FLIP^(dt / dt_ref), ParticleEngine::Settings). */
+    constexpr double reference_time_step_multiplier = 0.5;
 
     /** The velocity conditions of the sides of the grid. */
     using GridBoundary = grid::GridBoundary;

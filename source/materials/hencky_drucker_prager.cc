@@ -76,6 +76,22 @@ namespace slidewave
                                 const double                   jacobian,
                                 double                        &equivalent_plastic_strain) const
     {
+      return update(elastic_left_cauchy_green,
+                    deformation_gradient_increment,
+                    jacobian,
+                    equivalent_plastic_strain,
+                    cone.alpha_psi());
+    }
+
+
+
+    HenckyStep
+    HenckyDruckerPrager::update(dealii::SymmetricTensor<2, 3> &elastic_left_cauchy_green,
+                                const dealii::Tensor<2, 3>    &deformation_gradient_increment,
+                                const double                   jacobian,
+                                double                        &equivalent_plastic_strain,
+                                const double                   alpha_psi) const
+    {
       const dealii::Tensor<2, 3> &f = deformation_gradient_increment;
       AssertThrow(dealii::determinant(f) > 0.,
                   dealii::ExcMessage("The incremental deformation gradient must have a positive "
@@ -93,7 +109,7 @@ namespace slidewave
       const double K                     = cone.elasticity().bulk_modulus();
       const double G                     = cone.elasticity().shear_modulus();
       const double friction_coefficient  = cone.alpha_phi();
-      const double dilatancy_coefficient = cone.alpha_psi();
+      const double dilatancy_coefficient = alpha_psi;
       const double cohesion_term         = cone.k_c();
 
       // Principal logarithmic strains and the Hencky stress (Eq. 16).

@@ -68,14 +68,15 @@ namespace slidewave
                         "volume change, the friction angle gives associated "
                         "flow. 'drucker prager' also takes a negative angle down to "
                         "minus the friction angle (compaction under shear: a loose "
-                        "soil), as long as G + 9 K alpha_phi alpha_psi > 0.1 G; "
-                        "'hencky drucker prager' takes [0, friction angle].");
+                        "soil), as long as G + 9 K alpha_phi alpha_psi > 0.1 G, and so "
+                        "does 'hencky drucker prager'.");
       prm.declare_entry("Dilatancy law",
                         "constant",
                         Selection("constant|critical state"),
                         "'constant': the 'Dilatancy angle'. 'critical state' ('drucker "
-                        "prager' in 'Physics = granular water', where each point knows its "
-                        "porosity n): tan psi = K (n_c - n) with the 'Critical porosity' n_c "
+                        "prager' or 'hencky drucker prager' in 'Physics = granular water', "
+                        "where each point knows its porosity n): tan psi = K (n_c - n) with the "
+                        "'Critical porosity' n_c "
                         "and the 'Dilatancy factor' K (Pailha and Pouliquen 2009, in the "
                         "solid fraction 1 - n): a packing denser than the critical one "
                         "dilates under shear, a looser one compacts, and both approach n_c; "
@@ -136,35 +137,35 @@ namespace slidewave
                          "a number in (-1, 0.5), where the bulk and shear moduli "
                          "are positive and finite");
       require_in_range(path + "/Friction angle", friction_angle, 0., true, 90., false);
-      // Small-strain Drucker-Prager takes a negative dilatancy (compaction under shear, a
-      // loose soil) as long as its return stays well posed: G + 9 K alpha_phi alpha_psi > 0
-      // (DruckerPrager::return_to_yield_surface divides by it).
-      const bool   small_strain = model == MaterialModel::drucker_prager;
-      const double lowest       = small_strain ? -friction_angle : 0.;
-      const double K            = youngs_modulus / (3. * (1. - 2. * poisson_ratio));
-      const double G            = youngs_modulus / (2. * (1. + poisson_ratio));
-      const bool   well_posed   = G
+      // Both Drucker-Prager models take a negative dilatancy (compaction under shear, a
+      // loose soil) as long as their return stays well posed: G + 9 K alpha_phi alpha_psi > 0
+      // (DruckerPrager::return_to_yield_surface and HenckyDruckerPrager::update divide by
+      // it).
+      const bool   plastic    = model != MaterialModel::linear_elastic;
+      const double lowest     = plastic ? -friction_angle : 0.;
+      const double K          = youngs_modulus / (3. * (1. - 2. * poisson_ratio));
+      const double G          = youngs_modulus / (2. * (1. + poisson_ratio));
+      const bool   well_posed = G
                                 + 9. * K * DruckerPrager::plane_strain_coefficient(friction_angle)
                                     * DruckerPrager::plane_strain_coefficient(dilatancy_angle)
                               > 0.1 * G;
       if (!(dilatancy_angle >= lowest && dilatancy_angle <= friction_angle) || !well_posed)
         throw InputError(path + "/Dilatancy angle",
                          to_string(dilatancy_angle),
-                         small_strain ?
-                           "a number in [-" + to_string(friction_angle) + ", "
-                             + to_string(friction_angle)
-                             + "] (at most the friction angle; negative: compaction under "
-                               "shear) with G + 9 K alpha_phi alpha_psi > 0.1 G" :
-                           "a number in [0, " + to_string(friction_angle)
-                             + "]: the dilatancy angle may not exceed the friction angle");
+                         plastic ? "a number in [-" + to_string(friction_angle) + ", "
+                                     + to_string(friction_angle)
+                                     + "] (at most the friction angle; negative: compaction under "
+                                       "shear) with G + 9 K alpha_phi alpha_psi > 0.1 G" :
+                                   "a number in [0, " + to_string(friction_angle)
+                                     + "]: the dilatancy angle may not exceed the friction angle");
       if (critical_state_dilatancy)
         {
-          if (model != MaterialModel::drucker_prager)
+          if (!plastic)
             throw InputError(path + "/Dilatancy law",
                              "critical state",
                              "constant with 'Model = " + prm.get("Model")
-                               + "' (a state-dependent dilatancy needs the small-strain "
-                                 "'drucker prager', which takes a negative angle)");
+                               + "' (a state-dependent dilatancy needs a plastic model: "
+                                 "'drucker prager' or 'hencky drucker prager')");
           if (dilatancy_angle != 0.)
             throw InputError(path + "/Dilatancy angle",
                              prm.get("Dilatancy angle"),
@@ -218,18 +219,21 @@ namespace slidewave
       , elastic(parameters.youngs_modulus, parameters.poisson_ratio)
     {
       if (parameters.model == MaterialModel::drucker_prager)
+        plasticity.emplace(parameters.youngs_modulus,
+                           parameters.poisson_ratio,
+                           parameters.friction_angle,
+                           parameters.cohesion,
+                           parameters.dilatancy_angle,
+                           parameters.tension_cutoff);
+      if (parameters.model != MaterialModel::linear_elastic)
         {
-          plasticity.emplace(parameters.youngs_modulus,
-                             parameters.poisson_ratio,
-                             parameters.friction_angle,
-                             parameters.cohesion,
-                             parameters.dilatancy_angle,
-                             parameters.tension_cutoff);
           // A state-dependent alpha_psi stays within [-alpha_phi, alpha_phi] and keeps
-          // G + 9 K alpha_phi alpha_psi >= 0.1 G (MaterialParameters::parse_parameters).
-          const double alpha_phi = plasticity->alpha_phi();
-          highest_alpha_psi      = alpha_phi;
-          lowest_alpha_psi       = -alpha_phi;
+          // G + 9 K alpha_phi alpha_psi >= 0.1 G (MaterialParameters::parse_parameters);
+          // the Hencky model's cone is the small-strain one's (HenckyDruckerPrager).
+          const double alpha_phi
+            = DruckerPrager::plane_strain_coefficient(parameters.friction_angle);
+          highest_alpha_psi = alpha_phi;
+          lowest_alpha_psi  = -alpha_phi;
           if (alpha_phi > 0.)
             lowest_alpha_psi = std::max(lowest_alpha_psi,
                                         -0.9 * elastic.shear_modulus()

@@ -112,7 +112,8 @@ namespace slidewave
     FiniteStrainPoints::update(dealii::ArrayView<double>   p,
                                const dealii::Tensor<2, 2> &L,
                                const double                dt,
-                               const double                volumetric_correction) const
+                               const double                volumetric_correction,
+                               const double                alpha_psi) const
     {
       const auto &model = *models[static_cast<unsigned int>(p[property::material_id])];
 
@@ -144,7 +145,8 @@ namespace slidewave
       materials::HenckyStep step;
       try
         {
-          step = model.update(be, f, J, plastic);
+          step = std::isnan(alpha_psi) ? model.update(be, f, J, plastic) :
+                                         model.update(be, f, J, plastic, alpha_psi);
         }
       catch (const dealii::ExceptionBase &)
         {

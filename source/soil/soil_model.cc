@@ -81,7 +81,11 @@ namespace slidewave
           auto                        p = particle.get_properties();
           if (hencky != nullptr
               && hencky->is_finite_strain(static_cast<unsigned int>(p[property::material_id])))
-            hencky->update(p, L, dt, prm.b_bar ? (mean_volumetric - (L[0][0] + L[1][1])) * dt : 0.);
+            hencky->update(p,
+                           L,
+                           dt,
+                           prm.b_bar ? (mean_volumetric - (L[0][0] + L[1][1])) * dt : 0.,
+                           state_dilatancy_coefficient(p));
           else
             update_small_strain(p, L, dt, mean_volumetric);
           if (follow_stretch)
@@ -118,13 +122,9 @@ namespace slidewave
       double                     plastic = p[property::equivalent_plastic_strain];
       const materials::Material &material
         = materials[static_cast<unsigned int>(p[property::material_id])];
-      if (material.state_dependent_dilatancy())
-        {
-          // The porosity at the start of the step, n = 1 - m_p / (rho^s V_p).
-          const double n = 1. - p[property::mass] / (solid_density * p[property::volume]);
-          material.update_stress(
-            stress, strain_increment, spin_xy, plastic, material.dilatancy_coefficient(n));
-        }
+      const double alpha_psi = state_dilatancy_coefficient(p);
+      if (!std::isnan(alpha_psi))
+        material.update_stress(stress, strain_increment, spin_xy, plastic, alpha_psi);
       else
         material.update_stress(stress, strain_increment, spin_xy, plastic);
       p[property::stress_xx]                 = stress[0][0];
@@ -133,6 +133,20 @@ namespace slidewave
       p[property::stress_zz]                 = stress[2][2];
       p[property::equivalent_plastic_strain] = plastic;
       p[property::volume] *= 1. + strain_increment[0][0] + strain_increment[1][1];
+    }
+
+
+
+    double
+    SoilModel::state_dilatancy_coefficient(const dealii::ArrayView<double> &p) const
+    {
+      const materials::Material &material
+        = materials[static_cast<unsigned int>(p[property::material_id])];
+      if (!material.state_dependent_dilatancy())
+        return std::numeric_limits<double>::quiet_NaN();
+      // The porosity at the start of the step, n = 1 - m_p / (rho^s V_p).
+      const double n = 1. - p[property::mass] / (solid_density * p[property::volume]);
+      return material.dilatancy_coefficient(n);
     }
 
 

@@ -16,7 +16,11 @@
 //     so the porosity follows dn/d gamma = (1 - n) sin psi(n), integrated here by RK4 with
 //     1e-5 steps: both packings approach n_c from their sides, as that ODE says, within
 //     2e-4 at gamma = 0.05, 0.2 and 1 (the element's elastic start and its first-order
-//     steps in gamma); with a fixed psi = 10 deg the measured rate is sin 10 deg to 1e-6.
+//     steps in gamma); with a fixed psi = 10 deg the measured rate is sin 10 deg to 1e-6;
+//  4. the finite-strain model (hencky drucker prager) takes the law too: its material has
+//     the same alpha_psi(n) as the small-strain one, bounds included, and its return with a
+//     point's (negative) alpha_psi is the return of the model made with the matching fixed
+//     angle, to round-off, for a stretch beyond the cone.
 // Exits non-zero on failure.
 #include "unit_check.h"
 
@@ -24,6 +28,7 @@
 #include <cstdio>
 #include <deal.II/base/symmetric_tensor.h>
 #include <slidewave/materials/drucker_prager.h>
+#include <slidewave/materials/hencky_drucker_prager.h>
 #include <slidewave/materials/material.h>
 
 using namespace slidewave::materials;
@@ -219,6 +224,48 @@ main()
                 std::sin(10. * M_PI / 180.));
     check(std::abs(shear.rate - std::sin(10. * M_PI / 180.)) < 1e-6,
           "a fixed angle dilates at sin psi (the plane-strain match)");
+  }
+
+  // 4.
+  {
+    MaterialParameters hencky = parameters;
+    hencky.model              = MaterialModel::hencky_drucker_prager;
+    hencky.tension_cutoff     = 0.;
+    const Material hencky_material(hencky);
+    bool           same = true;
+    for (const double n : {0., 0.38, 0.42, 0.46, 0.99})
+      same = same && hencky_material.dilatancy_coefficient(n) == material.dilatancy_coefficient(n);
+    check(same, "the Hencky material's alpha_psi(n) is the small-strain one's, bounds included");
+
+    const double              psi = -std::atan(t) * 180. / M_PI; // the loose packing's
+    const HenckyDruckerPrager with_angle(
+      hencky.youngs_modulus, hencky.poisson_ratio, hencky.friction_angle, hencky.cohesion, psi);
+    const HenckyDruckerPrager without_angle(
+      hencky.youngs_modulus, hencky.poisson_ratio, hencky.friction_angle, hencky.cohesion, 0.);
+    // A stretch beyond the cone: shortening along y, shear in x-y.
+    dealii::Tensor<2, 3> f;
+    f[0][0]                            = 1.;
+    f[1][1]                            = 0.99;
+    f[2][2]                            = 1.;
+    f[0][1]                            = 0.02;
+    dealii::SymmetricTensor<2, 3> be_a = dealii::unit_symmetric_tensor<3>(), be_b = be_a;
+    double                        ea = 0., eb = 0.;
+    const HenckyStep a      = without_angle.update(be_a, f, dealii::determinant(f), ea, loose);
+    const HenckyStep b      = with_angle.update(be_b, f, dealii::determinant(f), eb);
+    const double difference = (a.cauchy_stress - b.cauchy_stress).norm() / b.cauchy_stress.norm();
+    const double volumetric = dealii::trace(a.plastic_strain_increment);
+    std::printf("Hencky: update with alpha_psi(0.46) against the model of psi = %.6f deg: "
+                "relative difference %.1e, b^e %.1e, plastic strain %.6e and %.6e, plastic "
+                "volumetric log strain %.6e (3 alpha_psi dgamma < 0: compaction)\n",
+                psi,
+                difference,
+                (be_a - be_b).norm(),
+                ea,
+                eb,
+                volumetric);
+    check(difference < 1e-14 && (be_a - be_b).norm() < 1e-14 && std::abs(ea - eb) < 1e-15 && ea > 0.
+            && a.region == HenckyReturn::cone && volumetric < 0.,
+          "the Hencky return with a point's alpha_psi is the fixed angle's, and compacts");
   }
   return unit_check::finish();
 }

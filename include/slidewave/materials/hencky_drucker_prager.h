@@ -167,6 +167,19 @@ namespace slidewave
              double                         jacobian,
              double                        &equivalent_plastic_strain) const;
 
+      /**
+       * The same step with the dilatancy coefficient @p alpha_psi of the point's state
+       * (materials::Material::dilatancy_coefficient(), 'Dilatancy law = critical state')
+       * instead of the dilatancy angle's; G + 9 K α_φ α_ψ > 0 (the material keeps it at
+       * least 0.1 G).
+       */
+      HenckyStep
+      update(dealii::SymmetricTensor<2, 3> &elastic_left_cauchy_green,
+             const dealii::Tensor<2, 3>    &deformation_gradient_increment,
+             double                         jacobian,
+             double                        &equivalent_plastic_strain,
+             double                         alpha_psi) const;
+
       /** The Kirchhoff stress τ of the elastic state @p elastic_left_cauchy_green (Eq. 16). */
       dealii::SymmetricTensor<2, 3>
       kirchhoff_stress(const dealii::SymmetricTensor<2, 3> &elastic_left_cauchy_green) const;

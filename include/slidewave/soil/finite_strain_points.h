@@ -71,13 +71,16 @@ namespace slidewave
       /**
        * One step of a finite-strain point @p p: b^e, the stress properties, the
        * equivalent plastic strain and the volume, from the velocity gradient @p L over
-       * @p dt; @p volumetric_correction is ε̄_v − tr L Δt (B-bar; 0 without).
+       * @p dt; @p volumetric_correction is ε̄_v − tr L Δt (B-bar; 0 without);
+       * @p alpha_psi the point's dilatancy coefficient ('Dilatancy law = critical
+       * state'), NaN for the material's own.
        */
       void
       update(dealii::ArrayView<double>   p,
              const dealii::Tensor<2, 2> &L,
              double                      dt,
-             double                      volumetric_correction) const;
+             double                      volumetric_correction,
+             double                      alpha_psi) const;
 
       /**
        * b^e of a finite-strain point from its stress properties (an initial stress):

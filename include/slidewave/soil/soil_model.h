@@ -230,6 +230,12 @@ namespace slidewave
                           double                      dt,
                           double                      mean_volumetric) const;
 
+      /** The dilatancy coefficient of point @p p's porosity at the start of the step
+       *  ('Dilatancy law = critical state'; Material::dilatancy_coefficient), NaN when
+       *  its material's dilatancy is the fixed angle's. */
+      double
+      state_dilatancy_coefficient(const dealii::ArrayView<double> &p) const;
+
       const MaterialPointParameters   &prm;
       std::vector<materials::Material> materials;
       /** rho^s of the grains (0: unknown; the constructor's @p grain_density). */

@@ -95,7 +95,14 @@ main()
   try_values({{"Name", "clay"}, {"Friction angle", "25"}, {"Dilatancy angle", "30"}}, false);
   try_values({{"Name", "clay"}, {"Dilatancy angle", "-10"}}, true);
   try_values({{"Name", "clay"}, {"Dilatancy angle", "-31"}}, false);
-  try_values({{"Name", "clay"}, {"Model", "hencky drucker prager"}, {"Dilatancy angle", "-1"}},
+  // The Hencky model takes a negative dilatancy as the small-strain one does, and refuses
+  // an ill-posed one (nu = 0.45: G + 9 K alpha_phi alpha_psi = -1.2 G at psi = -30).
+  try_values({{"Name", "clay"}, {"Model", "hencky drucker prager"}, {"Dilatancy angle", "-10"}},
+             true);
+  try_values({{"Name", "clay"},
+              {"Model", "hencky drucker prager"},
+              {"Poisson ratio", "0.45"},
+              {"Dilatancy angle", "-30"}},
              false);
   try_values({{"Name", "clay"}, {"Cohesion", "-10"}}, false);
   try_values({{"Name", "clay"}, {"Tension cutoff", "-1"}}, false);

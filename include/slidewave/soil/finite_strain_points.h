@@ -4,6 +4,7 @@
 #include <array>
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/tensor.h>
+#include <limits>
 #include <optional>
 #include <slidewave/materials/hencky_drucker_prager.h>
 #include <slidewave/materials/material.h>
@@ -73,14 +74,14 @@ namespace slidewave
        * equivalent plastic strain and the volume, from the velocity gradient @p L over
        * @p dt; @p volumetric_correction is ε̄_v − tr L Δt (B-bar; 0 without);
        * @p alpha_psi the point's dilatancy coefficient ('Dilatancy law = critical
-       * state'), NaN for the material's own.
+       * state'), NaN (the default) for the material's own.
        */
       void
       update(dealii::ArrayView<double>   p,
              const dealii::Tensor<2, 2> &L,
              double                      dt,
              double                      volumetric_correction,
-             double                      alpha_psi) const;
+             double alpha_psi = std::numeric_limits<double>::quiet_NaN()) const;
 
       /**
        * b^e of a finite-strain point from its stress properties (an initial stress):

@@ -342,10 +342,17 @@ namespace slidewave
     double
     FreeSurfaceSolver::stable_time_step() const
     {
+      return stable_time_step(max_speed()); // one pass over the cells
+    }
+
+
+
+    double
+    FreeSurfaceSolver::stable_time_step(const double fastest) const
+    {
       // The advection velocity and the sharpening are explicit: a Courant number on
       // the finest cells with the faster of the two speeds.
-      const double fastest = max_speed(); // one pass over the cells
-      const double speed   = std::max(fastest, profile_velocity(fastest));
+      const double speed = std::max(fastest, profile_velocity(fastest));
       // (the cell's size whatever the flow's element degree: the explicit parts are the
       // phase field's, which is Q1)
       const double dt = parameters.courant_number * grid.cell_size() / speed;
@@ -361,11 +368,13 @@ namespace slidewave
       if (!solid_flux)
         grid.change_if_due(n_steps);
       FluidStepReport report;
-      // (the flow's own step, when a coupled physics sets shorter ones: the time scale of
-      // dynamic subscales, VelocitySubscales)
+      // One pass over the cells for the fastest speed, which the sharpening's velocity and
+      // the flow's own step (when a coupled physics sets shorter ones: the time scale of
+      // dynamic subscales, VelocitySubscales) both take.
+      const double      fastest = max_speed();
       const StepLengths lengths{
-        dt, last_dt, parameters.dynamic_subscales ? std::max(dt, stable_time_step()) : dt};
-      report.gamma = profile_velocity();
+        dt, last_dt, parameters.dynamic_subscales ? std::max(dt, stable_time_step(fastest)) : dt};
+      report.gamma = profile_velocity(fastest);
       report.phase = phase_system.step(lengths, report.gamma);
       report.flow  = flow_system.step(phase_system.previous(), lengths, time + dt);
       water_outflow += phase_system.last_outflow();

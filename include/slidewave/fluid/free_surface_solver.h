@@ -174,6 +174,10 @@ namespace slidewave
       double
       profile_velocity(double fastest) const;
 
+      /** stable_time_step() for the largest speed @p fastest (max_speed()). */
+      double
+      stable_time_step(double fastest) const;
+
       /** phi of the initial water. */
       void
       set_initial_state();

@@ -110,9 +110,8 @@ namespace slidewave
       // limit of an explicit step, rho h^2 / (4 eta) with eta = 2 mu + tau_Y m the largest
       // viscosity of the (regularized) Bingham law: its stress is eta D, and the largest
       // eigenvalue of div(eta D) on the grid is below 8 eta / (rho h^2).
-      const double eta = 2. * prm.viscosity + prm.yield_stress * prm.regularization;
-      const double advective
-        = max_speed > 0. ? h / max_speed : std::numeric_limits<double>::infinity();
+      const double eta       = 2. * prm.viscosity + prm.yield_stress * prm.regularization;
+      const double advective = ParticleModelDefaults::stability_limit(max_speed, h);
       const double viscous
         = eta > 0. ? prm.density * h * h / (4. * eta) : std::numeric_limits<double>::infinity();
       return std::min(advective, viscous);

@@ -302,8 +302,9 @@ namespace slidewave
     double
     ParticleEngine<Model>::flip_fraction_of_step(const double dt) const
     {
+      // (reference_step is 0 unless the blend is a rate: begin_step())
       const double flip = settings.flip_fraction;
-      if (!blends_by_rate() || !(reference_step > 0.) || !std::isfinite(reference_step))
+      if (!(reference_step > 0.) || !std::isfinite(reference_step))
         return flip;
       // At the reference step dt / reference_step is 1 exactly (the scenes' step is the
       // same expression of the same state) and the blend is flip_fraction itself.

@@ -42,20 +42,28 @@ namespace slidewave
                         "(the limit of slow seepage, Re_p << 10).");
       prm.declare_entry("Drag coupling",
                         "semi-implicit",
-                        Selection("semi-implicit|explicit"),
+                        Selection("semi-implicit|semi-implicit projected|explicit"),
                         "How the water's pressure and drag of the new step act on the "
                         "skeleton. 'semi-implicit': the skeleton's nodal velocity of the new "
                         "step, with the drag and the pressure gradient implicit, is "
                         "eliminated from the water's equations (the drag against the "
                         "skeleton's predicted velocity, the Darcy flow through the grains as "
-                        "a pressure diffusion), then the skeleton takes the same implicit "
-                        "step at its nodes: stable at any ratio of the step to "
+                        "a pressure diffusion), then the skeleton's nodes take the drag "
+                        "implicitly, lumped: v_I = (m_I v_I^trial + dt integral of N_I C u) / "
+                        "(m_I + dt integral of N_I C). Stable at any ratio of the step to "
                         "rho^s (1 - n) k / mu, so low permeabilities and fine grains do not "
-                        "limit the step (doc/granular-water.md). 'explicit': the water sees "
-                        "the skeleton's velocity of the old step and the skeleton the "
-                        "water's force of the new one (paper 002, §3.5); stable only for "
-                        "steps below about rho^s (1 - n) k / mu, which then limits the "
-                        "step.");
+                        "limit the step; where the drag is stiff it smooths the grains' "
+                        "velocity once per step, so a flow's results depend on the step "
+                        "(doc/granular-water.md). 'semi-implicit projected': the same water; "
+                        "the skeleton's nodes take the projection, on a weighted mass matrix "
+                        "(conjugate gradients), of the increment the water's elimination "
+                        "assumed: converged in the step where the drag is stiff but not "
+                        "locked (k = 1e-8 m^2 in the loose collapse); not the default: at "
+                        "the mass's edge single points dilate over long runs. 'explicit': "
+                        "the water sees the skeleton's velocity of the old step and the "
+                        "skeleton the water's force of the new one (paper 002, §3.5); stable "
+                        "only for steps below about rho^s (1 - n) k / mu, which then limits "
+                        "the step.");
       prm.declare_entry("Top load",
                         "0",
                         Double(0.),
@@ -129,7 +137,9 @@ namespace slidewave
       top_load         = prm.get_double("Top load");
       forchheimer      = prm.get("Drag law") == "Forchheimer";
       sub_cycling      = prm.get_bool("Sub-cycling");
-      implicit_drag    = prm.get("Drag coupling") == "semi-implicit";
+      const std::string coupling = prm.get("Drag coupling");
+      implicit_drag              = coupling != "explicit";
+      projected_drag             = coupling == "semi-implicit projected";
       for (const auto &[name, value] :
            {std::pair<std::string, double>{"Grain density", grain_density},
             {"Permeability", permeability},

@@ -74,9 +74,12 @@ namespace slidewave
                         / fluid_parameters.cell_size);
       // Flow (Q1^2-Q1), phase field and the skeleton's fields (fluid fraction, inverse
       // permeability, flux; semi-implicit: the flux of the step's start too): eight or ten
-      // unknowns per node.
+      // unknowns per node; the semi-implicit coupling's projection (DragProjection) seven
+      // vectors per node and a 4 x 4 matrix per cell, about 25 per node at most.
+      const bool projected = parameters.implicit_drag && parameters.projected_drag;
       estimate.add("water unknowns",
-                   (parameters.implicit_drag ? 10. : 8.) * (nx + 1.) * (ny + 1.),
+                   (parameters.implicit_drag ? (projected ? 35. : 10.) : 8.) * (nx + 1.)
+                     * (ny + 1.),
                    core::MemoryEstimate::bytes_per_dof,
                    fluid_section + "/Grid/Cell size",
                    to_string(fluid_parameters.cell_size));
@@ -123,6 +126,9 @@ namespace slidewave
                                         soil_parameters.solids,
                                         settings);
       exchange = std::make_unique<SkeletonFluidExchange>(*grid, fluid_parameters);
+      if (parameters.implicit_drag && parameters.projected_drag && !parameters.sub_cycling)
+        projection
+          = std::make_unique<DragProjection>(*grid, fluid_parameters, parameters.grain_density);
     }
 
 
@@ -349,14 +355,17 @@ namespace slidewave
             if (water_force[0].get_partitioner() != nodes.nodal_mass.get_partitioner())
               for (auto *f : {&water_force[0], &water_force[1], &water_drag})
                 f->reinit(nodes.nodal_mass);
-            exchange->to_skeleton(fluid_solver->flow_field(),
-                                  fluid_solver->phase_field(),
-                                  fields,
-                                  nodes,
-                                  water_force,
-                                  parameters.implicit_drag ? &water_drag : nullptr);
+            if (projection)
+              project_water_force(dt);
+            else
+              exchange->to_skeleton(fluid_solver->flow_field(),
+                                    fluid_solver->phase_field(),
+                                    fields,
+                                    nodes,
+                                    water_force,
+                                    parameters.implicit_drag ? &water_drag : nullptr);
             engine->add_nodal_forces(water_force);
-            if (parameters.implicit_drag)
+            if (parameters.implicit_drag && !projection)
               {
                 // The owned nodes of this step's points (the others stay as the scatter
                 // leaves them).
@@ -376,6 +385,34 @@ namespace slidewave
           engine->finish_step(dt);
           if (parameters.forchheimer)
             engine->model_field(PorousSkeletonModel::relative_speed).zero_out_ghost_values();
+        }
+    }
+
+
+
+    void
+    GranularWaterScene::project_water_force(const double dt)
+    {
+      // The grains' velocity of the new step is v* + dv (DragProjection): the force that
+      // takes the grid update from momentum / m there is the old pressure's, which v* holds
+      // (SkeletonFluidExchange::to_fluid), and m dv / dt.
+      const grid::NodalWorkspace &nodes = engine->nodal_workspace();
+      projection->increment(fluid_solver->flow_field(),
+                            fluid_solver->phase_field(),
+                            skeleton_fields(),
+                            nodes,
+                            engine->velocity_constraints(),
+                            dt,
+                            water_force);
+      const auto        &pressure = exchange->predictor_pressure_force();
+      const unsigned int n_owned  = nodes.nodal_mass.locally_owned_size();
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          for (unsigned int i = 0; i < n_owned; ++i)
+            water_force[d].local_element(i)
+              = pressure[d].local_element(i)
+                + nodes.nodal_mass.local_element(i) * water_force[d].local_element(i) / dt;
+          water_force[d].zero_out_ghost_values();
         }
     }
 

@@ -54,6 +54,10 @@ namespace slidewave
        *  momentum eliminated from the water's equations (fluid::PorousMedium); false:
        *  explicit (the water sees the skeleton's old velocity). */
       bool implicit_drag = true;
+      /** With implicit_drag: the grains take the projection of the increment the water's
+       *  elimination assumed (DragProjection, 'semi-implicit projected'); false: the
+       *  lumped nodal drag W_I ('semi-implicit'). */
+      bool projected_drag = false;
       /** A pressure [Pa] on the top row of points (Terzaghi's load; 0: none). */
       double top_load = 0.;
       /** Several skeleton steps inside one water step (the water's step limited by its

@@ -12,6 +12,7 @@
 #include <slidewave/fluid/free_surface_output.h>
 #include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/fluid/free_surface_solver.h>
+#include <slidewave/granular/drag_projection.h>
 #include <slidewave/granular/granular_verification.h>
 #include <slidewave/granular/granular_water_parameters.h>
 #include <slidewave/granular/porous_skeleton_model.h>
@@ -124,6 +125,11 @@ namespace slidewave
       void
       apply_top_load();
 
+      /** The water's force on the grains of the semi-implicit coupling (projected) into
+       *  water_force, after the water's step of length @p dt. */
+      void
+      project_water_force(double dt);
+
       /** The water's fields the skeleton hands over (SkeletonFluidExchange::to_fluid()). */
       SkeletonFields
       skeleton_fields();
@@ -157,6 +163,8 @@ namespace slidewave
       std::unique_ptr<PorousSkeletonModel>      model;
       std::unique_ptr<Engine>                   engine;
       std::unique_ptr<SkeletonFluidExchange>    exchange;
+      /** The grains' increment of the semi-implicit coupling (projected; null otherwise). */
+      std::unique_ptr<DragProjection> projection;
       /** The water's force on the grains at the nodes (reused every step). */
       std::array<grid::NodalWorkspace::Vector, 2> water_force;
       /** The water's nodal drag W_I of the semi-implicit coupling. */

@@ -99,6 +99,14 @@ namespace slidewave
                      const grid::NodalWorkspace     &nodes,
                      grid::NodalWorkspace::Vector   &speed) const;
 
+      /** The old pressure's force on the grains that to_fluid() put in the predicted
+       *  velocity (semi-implicit; owned values; valid until to_skeleton()). */
+      const std::array<grid::NodalWorkspace::Vector, 2> &
+      predictor_pressure_force() const
+      {
+        return pressure_work;
+      }
+
     private:
       /** The pressure's force on the grains of each node, lumped: -(1 - n_I) times the
        *  integral of N_I grad p, with the pressure of @p flow's state 0 and the nodes' fluid

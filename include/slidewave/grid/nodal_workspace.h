@@ -100,6 +100,13 @@ namespace slidewave
       void
       interpolate_hanging_nodes(Vector &v) const;
 
+      /** The local indices of the hanging nodes (owned and ghost). */
+      const std::vector<unsigned int> &
+      hanging_nodes() const
+      {
+        return hanging_node;
+      }
+
       /** The scatter's sums of local node @p i (n_sums() of them). */
       double *
       sums(const unsigned int i)

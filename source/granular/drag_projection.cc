@@ -1,0 +1,277 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <limits>
+#include <slidewave/core/input_error.h>
+#include <slidewave/granular/drag_projection.h>
+
+namespace slidewave
+{
+  namespace granular
+  {
+    namespace
+    {
+      /** The cell of @p field on the same cell as @p cell. */
+      template <class Cell>
+      dealii::DoFHandler<2>::active_cell_iterator
+      on(const Cell &cell, const grid::FiniteElementField &field)
+      {
+        return dealii::DoFHandler<2>::active_cell_iterator(&cell->get_triangulation(),
+                                                           cell->level(),
+                                                           cell->index(),
+                                                           &field.dof_handler());
+      }
+
+      /** One component's operator, as the conjugate gradients call it. */
+      struct ComponentOperator
+      {
+        const DragProjection &projection;
+        unsigned int          d;
+        void
+        vmult(DragProjection::Vector &y, const DragProjection::Vector &x) const
+        {
+          projection.vmult(d, y, x);
+        }
+      };
+
+      /** Jacobi: the inverse row sums. */
+      struct InverseDiagonal
+      {
+        const DragProjection::Vector &inverse;
+        void
+        vmult(DragProjection::Vector &y, const DragProjection::Vector &x) const
+        {
+          for (unsigned int i = 0; i < y.locally_owned_size(); ++i)
+            y.local_element(i) = inverse.local_element(i) * x.local_element(i);
+        }
+      };
+    } // namespace
+
+
+
+    DragProjection::DragProjection(const grid::BackgroundGrid         &grid,
+                                   const fluid::FreeSurfaceParameters &parameters,
+                                   const double                        grain_density)
+      : grid(grid)
+      , parameters(parameters)
+      , grain_density(grain_density)
+    {
+    }
+
+
+
+    void
+    DragProjection::assemble(const grid::FiniteElementField &flow,
+                             const grid::FiniteElementField &phase,
+                             const SkeletonFields           &fields,
+                             const grid::NodalWorkspace     &nodes,
+                             const double                    dt)
+    {
+      // The water's quadrature (Q1: 2 x 2 Gauss points), fields and coefficients
+      // (fluid::PorousMediumValues, SkeletonFluidExchange::to_skeleton).
+      const dealii::QGauss<2>                  quadrature(flow.finite_element().degree + 1);
+      const unsigned int                       n_q = quadrature.size();
+      const dealii::FEValuesExtractors::Vector velocity(0);
+      const dealii::FEValuesExtractors::Scalar pressure(2);
+      dealii::FEValues<2>                      fv_flow(flow.finite_element(),
+                                  quadrature,
+                                  dealii::update_values | dealii::update_gradients);
+      dealii::FEValues<2> fv_scalar(phase.finite_element(), quadrature, dealii::update_values);
+      dealii::FEValues<2> fv_solid(fields.solid_flux->finite_element(),
+                                   quadrature,
+                                   dealii::update_values);
+      dealii::FEValues<2> fv_grid(grid.dof_handler().get_fe(),
+                                  quadrature,
+                                  dealii::update_values | dealii::update_JxW_values);
+      std::vector<dealii::Tensor<1, 2>>            grad_p(n_q), grad_p_n(n_q), u(n_q), flux(n_q);
+      std::vector<double>                          n(n_q), inverse_permeability(n_q), phi(n_q);
+      std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
+      AssertDimension(indices.size(), 4);
+      const auto &fluid = parameters.fluid;
+      cells.clear();
+      for (unsigned int d = 0; d < 2; ++d)
+        rhs[d] = 0.;
+      for (const auto &cell : grid.dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fv_scalar.reinit(on(cell, *fields.fluid_fraction));
+            fv_scalar.get_function_values(fields.fluid_fraction->values(0), n);
+            if (*std::min_element(n.begin(), n.end()) >= 1.)
+              continue; // no grains in the cell
+            fv_scalar.get_function_values(fields.inverse_permeability->values(0),
+                                          inverse_permeability);
+            fv_scalar.reinit(on(cell, phase));
+            fv_scalar.get_function_values(phase.values(0), phi);
+            fv_flow.reinit(on(cell, flow));
+            fv_flow[pressure].get_function_gradients(flow.values(0), grad_p);
+            fv_flow[pressure].get_function_gradients(flow.values(1), grad_p_n);
+            fv_flow[velocity].get_function_values(flow.values(0), u);
+            fv_solid.reinit(on(cell, *fields.solid_flux));
+            fv_solid[velocity].get_function_values(fields.solid_flux->values(0), flux);
+            fv_grid.reinit(cell);
+            cell->get_dof_indices(indices);
+            CellMatrix block;
+            for (unsigned int i = 0; i < 4; ++i)
+              block.nodes[i] = nodes.local_index(indices[i]);
+            block.matrix.fill(0.);
+            double w_min = std::numeric_limits<double>::max(), w_max = 0.;
+            for (unsigned int q = 0; q < n_q; ++q)
+              {
+                const double solid = 1. - n[q];
+                const double C = n[q] * n[q] * fluid.viscosity(phi[q]) * inverse_permeability[q];
+                const double weight = (grain_density * solid / dt + C) * fv_grid.JxW(q);
+                w_min               = std::min(w_min, weight);
+                w_max               = std::max(w_max, weight);
+                // The predicted velocity from its flux, as the water read it.
+                const dealii::Tensor<1, 2> v_star
+                  = solid > 1e-12 ? flux[q] / solid : dealii::Tensor<1, 2>();
+                const dealii::Tensor<1, 2> load
+                  = (C * (u[q] - v_star) - solid * (grad_p[q] - grad_p_n[q])) * fv_grid.JxW(q);
+                for (unsigned int i = 0; i < 4; ++i)
+                  {
+                    const double Ni = fv_grid.shape_value(i, q);
+                    for (unsigned int d = 0; d < 2; ++d)
+                      rhs[d].local_element(block.nodes[i]) += load[d] * Ni;
+                    for (unsigned int j = 0; j < 4; ++j)
+                      block.matrix[4 * i + j] += weight * Ni * fv_grid.shape_value(j, q);
+                  }
+              }
+            // Where the weight varies across the cell (the mass's edge, where the grains
+            // thin out) the consistent matrix extrapolates: a node of the cell's light
+            // corner takes many times its heavy neighbour's increment, of opposite sign.
+            // There the cell's matrix is lumped in proportion to the weight's variation,
+            // 1 - w_min / w_max (its row sums, and so the momentum, unchanged); a cell
+            // of uniform weight (inside the mass) keeps the consistent one.
+            const double lumping = w_max > 0. ? 1. - w_min / w_max : 0.;
+            if (lumping > 0.)
+              for (unsigned int i = 0; i < 4; ++i)
+                {
+                  double row = 0.;
+                  for (unsigned int j = 0; j < 4; ++j)
+                    {
+                      row += block.matrix[4 * i + j];
+                      block.matrix[4 * i + j] *= 1. - lumping;
+                    }
+                  block.matrix[4 * i + i] += lumping * row;
+                }
+            cells.push_back(block);
+          }
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          nodes.condense_hanging_nodes(rhs[d]);
+          rhs[d].compress(dealii::VectorOperation::add);
+        }
+    }
+
+
+
+    void
+    DragProjection::vmult(const unsigned int d, Vector &y, const Vector &x) const
+    {
+      const grid::NodalWorkspace &nodes   = *workspace;
+      const unsigned int          n_owned = x.locally_owned_size();
+      // x on the free nodes, the hanging ones from their parents.
+      for (unsigned int i = 0; i < n_owned; ++i)
+        work.local_element(i) = free[d].local_element(i) * x.local_element(i);
+      work.update_ghost_values();
+      nodes.interpolate_hanging_nodes(work);
+      product = 0.;
+      for (const CellMatrix &cell : cells)
+        for (unsigned int i = 0; i < 4; ++i)
+          {
+            double sum = 0.;
+            for (unsigned int j = 0; j < 4; ++j)
+              sum += cell.matrix[4 * i + j] * work.local_element(cell.nodes[j]);
+            product.local_element(cell.nodes[i]) += sum;
+          }
+      nodes.condense_hanging_nodes(product);
+      product.compress(dealii::VectorOperation::add);
+      work.zero_out_ghost_values();
+      // The identity on the held, hanging and empty nodes: symmetric, positive definite.
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          const double f     = free[d].local_element(i);
+          y.local_element(i) = f * product.local_element(i) + (1. - f) * x.local_element(i);
+        }
+    }
+
+
+
+    unsigned int
+    DragProjection::increment(const grid::FiniteElementField  &flow,
+                              const grid::FiniteElementField  &phase,
+                              const SkeletonFields            &fields,
+                              const grid::NodalWorkspace      &nodes,
+                              const grid::VelocityConstraints &constraints,
+                              const double                     dt,
+                              std::array<Vector, 2>           &increment)
+    {
+      workspace = &nodes;
+      if (work.get_partitioner() != nodes.nodal_mass.get_partitioner())
+        for (Vector *v : {&free[0], &free[1], &inverse_diagonal, &rhs[0], &rhs[1], &work, &product})
+          v->reinit(nodes.nodal_mass);
+      assemble(flow, phase, fields, nodes, dt);
+
+      // The row sums (the lumped weighted mass): the preconditioner, and which nodes the
+      // cells with grains reach.
+      product = 0.;
+      for (const CellMatrix &cell : cells)
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int j = 0; j < 4; ++j)
+            product.local_element(cell.nodes[i]) += cell.matrix[4 * i + j];
+      nodes.condense_hanging_nodes(product);
+      product.compress(dealii::VectorOperation::add);
+      const unsigned int n_owned = product.locally_owned_size();
+      for (unsigned int i = 0; i < n_owned; ++i)
+        free[0].local_element(i) = free[1].local_element(i) = 1.;
+      constraints.apply(free[0], free[1]); // the held components
+      for (const unsigned int i : nodes.hanging_nodes())
+        if (i < n_owned)
+          free[0].local_element(i) = free[1].local_element(i) = 0.;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          const double sum = product.local_element(i);
+          if (!(sum > 0.))
+            free[0].local_element(i) = free[1].local_element(i) = 0.;
+          inverse_diagonal.local_element(i) = sum > 0. ? 1. / sum : 1.;
+        }
+
+      unsigned int iterations = 0;
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          Vector &b = rhs[d];
+          for (unsigned int i = 0; i < n_owned; ++i)
+            b.local_element(i) *= free[d].local_element(i);
+          Vector &x = increment[d];
+          if (x.get_partitioner() != nodes.nodal_mass.get_partitioner())
+            x.reinit(nodes.nodal_mass);
+          x                 = 0.;
+          const double norm = b.l2_norm();
+          if (norm > 0.)
+            {
+              dealii::SolverControl    control(200, 1e-10 * norm);
+              dealii::SolverCG<Vector> cg(control);
+              try
+                {
+                  cg.solve(ComponentOperator{*this, d}, x, b, InverseDiagonal{inverse_diagonal});
+                }
+              catch (const dealii::SolverControl::NoConvergence &failure)
+                {
+                  throw RunFailure("the skeleton's drag increment (conjugate gradients) did "
+                                   "not converge: residual "
+                                   + to_string(failure.last_residual) + " after "
+                                   + std::to_string(failure.last_step)
+                                   + " iterations (reduce the time step)");
+                }
+              iterations = std::max(iterations, control.last_step());
+            }
+          x.update_ghost_values();
+          nodes.interpolate_hanging_nodes(x);
+        }
+      return iterations;
+    }
+  } // namespace granular
+} // namespace slidewave

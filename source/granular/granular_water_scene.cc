@@ -126,7 +126,7 @@ namespace slidewave
                                         soil_parameters.solids,
                                         settings);
       exchange = std::make_unique<SkeletonFluidExchange>(*grid, fluid_parameters);
-      if (parameters.implicit_drag && parameters.projected_drag && !parameters.sub_cycling)
+      if (parameters.implicit_drag && parameters.projected_drag)
         projection
           = std::make_unique<DragProjection>(*grid, fluid_parameters, parameters.grain_density);
     }

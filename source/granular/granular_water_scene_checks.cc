@@ -94,6 +94,12 @@ namespace slidewave
         throw InputError(soil_section + "/Prescribed velocity",
                          "(set)",
                          "none with Physics = granular water");
+      // The projection takes the water's step as the grains' (DragProjection).
+      if (parameters.implicit_drag && parameters.projected_drag && parameters.sub_cycling)
+        throw InputError(section + "/Drag coupling",
+                         "semi-implicit projected",
+                         "semi-implicit or explicit with 'Sub-cycling = true' (the projected "
+                         "grains take the water's step, one skeleton step per water step)");
       // The grains are denser than the skeleton: 0 < n_0 <= 0.99.
       for (const auto &material : soil_parameters.materials)
         {

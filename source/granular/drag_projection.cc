@@ -6,6 +6,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <limits>
 #include <slidewave/core/input_error.h>
+#include <slidewave/granular/coupling_point_values.h>
 #include <slidewave/granular/drag_projection.h>
 
 namespace slidewave
@@ -14,17 +15,6 @@ namespace slidewave
   {
     namespace
     {
-      /** The cell of @p field on the same cell as @p cell. */
-      template <class Cell>
-      dealii::DoFHandler<2>::active_cell_iterator
-      on(const Cell &cell, const grid::FiniteElementField &field)
-      {
-        return dealii::DoFHandler<2>::active_cell_iterator(&cell->get_triangulation(),
-                                                           cell->level(),
-                                                           cell->index(),
-                                                           &field.dof_handler());
-      }
-
       /** One component's operator, as the conjugate gradients call it. */
       struct ComponentOperator
       {
@@ -70,66 +60,35 @@ namespace slidewave
                              const grid::NodalWorkspace     &nodes,
                              const double                    dt)
     {
-      // The water's quadrature (Q1: 2 x 2 Gauss points), fields and coefficients
-      // (fluid::PorousMediumValues, SkeletonFluidExchange::to_skeleton).
-      const dealii::QGauss<2>                  quadrature(flow.finite_element().degree + 1);
-      const unsigned int                       n_q = quadrature.size();
-      const dealii::FEValuesExtractors::Vector velocity(0);
-      const dealii::FEValuesExtractors::Scalar pressure(2);
-      dealii::FEValues<2>                      fv_flow(flow.finite_element(),
-                                  quadrature,
-                                  dealii::update_values | dealii::update_gradients);
-      dealii::FEValues<2> fv_scalar(phase.finite_element(), quadrature, dealii::update_values);
-      dealii::FEValues<2> fv_solid(fields.solid_flux->finite_element(),
-                                   quadrature,
-                                   dealii::update_values);
-      dealii::FEValues<2> fv_grid(grid.dof_handler().get_fe(),
-                                  quadrature,
-                                  dealii::update_values | dealii::update_JxW_values);
-      std::vector<dealii::Tensor<1, 2>>            grad_p(n_q), grad_p_n(n_q), u(n_q), flux(n_q);
-      std::vector<double>                          n(n_q), inverse_permeability(n_q), phi(n_q);
+      // The water's quadrature (Q1: 2 x 2 Gauss points), fields and coefficients.
+      CouplingPointValues        values(grid, parameters, flow, phase, fields, true);
+      const dealii::FEValues<2> &fv_grid = values.grid_values();
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
       AssertDimension(indices.size(), 4);
-      const auto &fluid = parameters.fluid;
       cells.clear();
       for (unsigned int d = 0; d < 2; ++d)
         rhs[d] = 0.;
       for (const auto &cell : grid.dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned())
+        if (cell->is_locally_owned() && values.reinit(cell))
           {
-            fv_scalar.reinit(on(cell, *fields.fluid_fraction));
-            fv_scalar.get_function_values(fields.fluid_fraction->values(0), n);
-            if (*std::min_element(n.begin(), n.end()) >= 1.)
-              continue; // no grains in the cell
-            fv_scalar.get_function_values(fields.inverse_permeability->values(0),
-                                          inverse_permeability);
-            fv_scalar.reinit(on(cell, phase));
-            fv_scalar.get_function_values(phase.values(0), phi);
-            fv_flow.reinit(on(cell, flow));
-            fv_flow[pressure].get_function_gradients(flow.values(0), grad_p);
-            fv_flow[pressure].get_function_gradients(flow.values(1), grad_p_n);
-            fv_flow[velocity].get_function_values(flow.values(0), u);
-            fv_solid.reinit(on(cell, *fields.solid_flux));
-            fv_solid[velocity].get_function_values(fields.solid_flux->values(0), flux);
-            fv_grid.reinit(cell);
             cell->get_dof_indices(indices);
             CellMatrix block;
             for (unsigned int i = 0; i < 4; ++i)
               block.nodes[i] = nodes.local_index(indices[i]);
             block.matrix.fill(0.);
             double w_min = std::numeric_limits<double>::max(), w_max = 0.;
-            for (unsigned int q = 0; q < n_q; ++q)
+            for (unsigned int q = 0; q < values.n_points(); ++q)
               {
-                const double solid = 1. - n[q];
-                const double C = n[q] * n[q] * fluid.viscosity(phi[q]) * inverse_permeability[q];
+                const double solid  = 1. - values.n[q];
+                const double C      = values.drag[q];
                 const double weight = (grain_density * solid / dt + C) * fv_grid.JxW(q);
                 w_min               = std::min(w_min, weight);
                 w_max               = std::max(w_max, weight);
-                // The predicted velocity from its flux, as the water read it.
-                const dealii::Tensor<1, 2> v_star
-                  = solid > 1e-12 ? flux[q] / solid : dealii::Tensor<1, 2>();
+                // The predicted velocity, from its flux as the water read it.
                 const dealii::Tensor<1, 2> load
-                  = (C * (u[q] - v_star) - solid * (grad_p[q] - grad_p_n[q])) * fv_grid.JxW(q);
+                  = (C * (values.u[q] - values.v_s[q])
+                     - solid * (values.grad_p[q] - values.grad_p_old[q]))
+                    * fv_grid.JxW(q);
                 for (unsigned int i = 0; i < 4; ++i)
                   {
                     const double Ni = fv_grid.shape_value(i, q);

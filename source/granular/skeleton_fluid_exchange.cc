@@ -2,6 +2,7 @@
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <slidewave/granular/coupling_point_values.h>
 #include <slidewave/granular/skeleton_fluid_exchange.h>
 #include <vector>
 
@@ -193,23 +194,9 @@ namespace slidewave
                                        std::array<grid::NodalWorkspace::Vector, 2> &force,
                                        grid::NodalWorkspace::Vector                *water_drag)
     {
-      // The same quadrature as the water's assembly (Q1: 2 x 2 Gauss points).
-      const dealii::QGauss<2>                  quadrature(flow.finite_element().degree + 1);
-      const unsigned int                       n_q = quadrature.size();
-      const dealii::FEValuesExtractors::Vector velocity(0);
-      const dealii::FEValuesExtractors::Scalar pressure(2);
-      dealii::FEValues<2>                      fv_flow(flow.finite_element(),
-                                  quadrature,
-                                  dealii::update_values | dealii::update_gradients);
-      dealii::FEValues<2> fv_scalar(phase.finite_element(), quadrature, dealii::update_values);
-      dealii::FEValues<2> fv_solid(fields.solid_flux->finite_element(),
-                                   quadrature,
-                                   dealii::update_values);
-      dealii::FEValues<2> fv_grid(grid.dof_handler().get_fe(),
-                                  quadrature,
-                                  dealii::update_values | dealii::update_JxW_values);
-      std::vector<dealii::Tensor<1, 2>>            grad_p(n_q), u(n_q), v_s(n_q);
-      std::vector<double>                          n(n_q), inverse_permeability(n_q), phi(n_q);
+      // The same quadrature, fields and coefficients as the water's assembly.
+      CouplingPointValues                          values(grid, parameters, flow, phase, fields);
+      const dealii::FEValues<2>                   &fv_grid = values.grid_values();
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
       for (unsigned int d = 0; d < 2; ++d)
         force[d] = pressure_work[d] = 0.;
@@ -218,34 +205,17 @@ namespace slidewave
       // Semi-implicit: the drag on the grains' side is - C v_s of the new step, which the
       // nodes take implicitly with W_I (PorousSkeletonModel::update_nodal_velocity).
       const double explicit_drag = water_drag != nullptr ? 0. : 1.;
-      const auto  &fluid         = parameters.fluid;
       for (const auto &cell : grid.dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned())
+        if (cell->is_locally_owned() && values.reinit(cell))
           {
-            fv_scalar.reinit(on(cell, *fields.fluid_fraction));
-            fv_scalar.get_function_values(fields.fluid_fraction->values(0), n);
-            if (*std::min_element(n.begin(), n.end()) >= 1.)
-              continue; // no grains in the cell
-            fv_scalar.get_function_values(fields.inverse_permeability->values(0),
-                                          inverse_permeability);
-            fv_scalar.reinit(on(cell, phase));
-            fv_scalar.get_function_values(phase.values(0), phi);
-            fv_flow.reinit(on(cell, flow));
-            fv_flow[pressure].get_function_gradients(flow.values(0), grad_p);
-            fv_flow[velocity].get_function_values(flow.values(0), u);
-            fv_solid.reinit(on(cell, *fields.solid_flux));
-            fv_solid[velocity].get_function_values(fields.solid_flux->values(0), v_s);
-            for (unsigned int q = 0; q < n_q; ++q) // the velocity from the flux
-              v_s[q] = n[q] < 1. ? v_s[q] / (1. - n[q]) : dealii::Tensor<1, 2>();
-            fv_grid.reinit(cell);
             cell->get_dof_indices(indices);
-            for (unsigned int q = 0; q < n_q; ++q)
+            for (unsigned int q = 0; q < values.n_points(); ++q)
               {
-                const double C = n[q] * n[q] * fluid.viscosity(phi[q]) * inverse_permeability[q];
+                const double               C = values.drag[q];
                 const dealii::Tensor<1, 2> traction
-                  = C * (u[q] - explicit_drag * v_s[q]) * fv_grid.JxW(q);
+                  = C * (values.u[q] - explicit_drag * values.v_s[q]) * fv_grid.JxW(q);
                 // (the pressure's share, -integral N_I grad p, lumped on the grains below)
-                const dealii::Tensor<1, 2> pressure_traction = -grad_p[q] * fv_grid.JxW(q);
+                const dealii::Tensor<1, 2> pressure_traction = -values.grad_p[q] * fv_grid.JxW(q);
                 for (unsigned int i = 0; i < indices.size(); ++i)
                   for (unsigned int d = 0; d < 2; ++d)
                     {

@@ -5,22 +5,6 @@ namespace slidewave
 {
   namespace granular
   {
-    namespace
-    {
-      /** The cell of @p field on the same cell as @p cell. */
-      dealii::DoFHandler<2>::active_cell_iterator
-      on(const dealii::DoFHandler<2>::active_cell_iterator &cell,
-         const grid::FiniteElementField                    &field)
-      {
-        return dealii::DoFHandler<2>::active_cell_iterator(&cell->get_triangulation(),
-                                                           cell->level(),
-                                                           cell->index(),
-                                                           &field.dof_handler());
-      }
-    } // namespace
-
-
-
     CouplingPointValues::CouplingPointValues(const grid::BackgroundGrid         &grid,
                                              const fluid::FreeSurfaceParameters &parameters,
                                              const grid::FiniteElementField     &flow,
@@ -54,19 +38,19 @@ namespace slidewave
     {
       const dealii::FEValuesExtractors::Vector velocity(0);
       const dealii::FEValuesExtractors::Scalar pressure(2);
-      fv_scalar.reinit(on(cell, *fields.fluid_fraction));
+      fv_scalar.reinit(fields.fluid_fraction->cell_on(cell));
       fv_scalar.get_function_values(fields.fluid_fraction->values(0), n);
       if (*std::min_element(n.begin(), n.end()) >= 1.)
         return false; // no grains in the cell
       fv_scalar.get_function_values(fields.inverse_permeability->values(0), inverse_permeability);
-      fv_scalar.reinit(on(cell, phase));
+      fv_scalar.reinit(phase.cell_on(cell));
       fv_scalar.get_function_values(phase.values(0), phi);
-      fv_flow.reinit(on(cell, flow));
+      fv_flow.reinit(flow.cell_on(cell));
       fv_flow[pressure].get_function_gradients(flow.values(0), grad_p);
       if (with_old_pressure)
         fv_flow[pressure].get_function_gradients(flow.values(1), grad_p_old);
       fv_flow[velocity].get_function_values(flow.values(0), u);
-      fv_solid.reinit(on(cell, *fields.solid_flux));
+      fv_solid.reinit(fields.solid_flux->cell_on(cell));
       fv_solid[velocity].get_function_values(fields.solid_flux->values(0), v_s);
       fv_grid.reinit(cell);
       for (unsigned int q = 0; q < n.size(); ++q)

@@ -159,7 +159,7 @@ namespace slidewave
 
 
 
-    unsigned int
+    void
     DragProjection::increment(const grid::FiniteElementField  &flow,
                               const grid::FiniteElementField  &phase,
                               const SkeletonFields            &fields,
@@ -198,7 +198,6 @@ namespace slidewave
           inverse_diagonal.local_element(i) = sum > 0. ? 1. / sum : 1.;
         }
 
-      unsigned int iterations = 0;
       for (unsigned int d = 0; d < 2; ++d)
         {
           Vector &b = rhs[d];
@@ -225,12 +224,10 @@ namespace slidewave
                                    + std::to_string(failure.last_step)
                                    + " iterations (reduce the time step)");
                 }
-              iterations = std::max(iterations, control.last_step());
             }
           x.update_ghost_values();
           nodes.interpolate_hanging_nodes(x);
         }
-      return iterations;
     }
   } // namespace granular
 } // namespace slidewave

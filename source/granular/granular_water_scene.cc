@@ -76,7 +76,7 @@ namespace slidewave
       // permeability, flux; semi-implicit: the flux of the step's start too): eight or ten
       // unknowns per node; the semi-implicit coupling's projection (DragProjection) seven
       // vectors per node and a 4 x 4 matrix per cell, about 25 per node at most.
-      const bool projected = parameters.implicit_drag && parameters.projected_drag;
+      const bool projected = parameters.projected_drag;
       estimate.add("water unknowns",
                    (parameters.implicit_drag ? (projected ? 35. : 10.) : 8.) * (nx + 1.)
                      * (ny + 1.),
@@ -126,7 +126,7 @@ namespace slidewave
                                         soil_parameters.solids,
                                         settings);
       exchange = std::make_unique<SkeletonFluidExchange>(*grid, fluid_parameters);
-      if (parameters.implicit_drag && parameters.projected_drag)
+      if (parameters.projected_drag)
         projection
           = std::make_unique<DragProjection>(*grid, fluid_parameters, parameters.grain_density);
     }
@@ -353,10 +353,14 @@ namespace slidewave
           {
             dealii::TimerOutput::Scope scope(*timer, "granular: exchange");
             if (water_force[0].get_partitioner() != nodes.nodal_mass.get_partitioner())
-              for (auto *f : {&water_force[0], &water_force[1], &water_drag})
-                f->reinit(nodes.nodal_mass);
+              {
+                for (auto *f : {&water_force[0], &water_force[1]})
+                  f->reinit(nodes.nodal_mass);
+                if (!projection) // the lumped drag's W_I
+                  water_drag.reinit(nodes.nodal_mass);
+              }
             if (projection)
-              project_water_force(dt);
+              project_water_force(fields, dt);
             else
               exchange->to_skeleton(fluid_solver->flow_field(),
                                     fluid_solver->phase_field(),
@@ -391,7 +395,7 @@ namespace slidewave
 
 
     void
-    GranularWaterScene::project_water_force(const double dt)
+    GranularWaterScene::project_water_force(const SkeletonFields &fields, const double dt)
     {
       // The grains' velocity of the new step is v* + dv (DragProjection): the force that
       // takes the grid update from momentum / m there is the old pressure's, which v* holds
@@ -399,7 +403,7 @@ namespace slidewave
       const grid::NodalWorkspace &nodes = engine->nodal_workspace();
       projection->increment(fluid_solver->flow_field(),
                             fluid_solver->phase_field(),
-                            skeleton_fields(),
+                            fields,
                             nodes,
                             engine->velocity_constraints(),
                             dt,

@@ -95,7 +95,7 @@ namespace slidewave
                          "(set)",
                          "none with Physics = granular water");
       // The projection takes the water's step as the grains' (DragProjection).
-      if (parameters.implicit_drag && parameters.projected_drag && parameters.sub_cycling)
+      if (parameters.projected_drag && parameters.sub_cycling)
         throw InputError(section + "/Drag coupling",
                          "semi-implicit projected",
                          "semi-implicit or explicit with 'Sub-cycling = true' (the projected "

@@ -15,16 +15,6 @@ namespace slidewave
       /** The smallest fluid fraction handed to the water (grains packed past 99 %). */
       constexpr double min_fluid_fraction = 0.01;
 
-      /** The cell of @p field on the same cell as @p cell. */
-      template <class Cell>
-      dealii::DoFHandler<2>::active_cell_iterator
-      on(const Cell &cell, const grid::FiniteElementField &field)
-      {
-        return dealii::DoFHandler<2>::active_cell_iterator(&cell->get_triangulation(),
-                                                           cell->level(),
-                                                           cell->index(),
-                                                           &field.dof_handler());
-      }
     } // namespace
 
 
@@ -146,11 +136,11 @@ namespace slidewave
       for (const auto &cell : grid.dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            fv_scalar.reinit(on(cell, *fields.fluid_fraction));
+            fv_scalar.reinit(fields.fluid_fraction->cell_on(cell));
             fv_scalar.get_function_values(fields.fluid_fraction->values(0), n);
             if (*std::min_element(n.begin(), n.end()) >= 1.)
               continue; // no grains in the cell
-            fv_flow.reinit(on(cell, flow));
+            fv_flow.reinit(flow.cell_on(cell));
             fv_flow[pressure].get_function_gradients(flow.values(0), grad_p);
             fv_grid.reinit(cell);
             cell->get_dof_indices(indices);
@@ -260,8 +250,8 @@ namespace slidewave
       for (const auto &cell : grid.dof_handler().active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            const auto flow_cell  = on(cell, flow);
-            const auto solid_cell = on(cell, *fields.solid_flux);
+            const auto flow_cell  = flow.cell_on(cell);
+            const auto solid_cell = fields.solid_flux->cell_on(cell);
             for (const unsigned int v : cell->vertex_indices())
               {
                 const auto node = cell->vertex_dof_index(v, 0);

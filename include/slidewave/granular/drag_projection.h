@@ -59,8 +59,8 @@ namespace slidewave
       /** The increment dv_h into @p increment (the nodal workspace's layout, owned values,
        *  ghosts updated), from the water's state 0 (new) and 1 (old pressure) of
        *  @p flow, the phase field's state 0 and the skeleton's fields of this step, for a
-       *  step @p dt (collective). Returns the largest number of CG iterations. */
-      unsigned int
+       *  step @p dt (collective). */
+      void
       increment(const grid::FiniteElementField  &flow,
                 const grid::FiniteElementField  &phase,
                 const SkeletonFields            &fields,

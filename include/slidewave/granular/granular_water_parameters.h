@@ -54,9 +54,9 @@ namespace slidewave
        *  momentum eliminated from the water's equations (fluid::PorousMedium); false:
        *  explicit (the water sees the skeleton's old velocity). */
       bool implicit_drag = true;
-      /** With implicit_drag: the grains take the projection of the increment the water's
-       *  elimination assumed (DragProjection, 'semi-implicit projected'); false: the
-       *  lumped nodal drag W_I ('semi-implicit'). */
+      /** The grains take the projection of the increment the water's elimination assumed
+       *  (DragProjection, 'semi-implicit projected'; implies implicit_drag); false: the
+       *  lumped nodal drag W_I ('semi-implicit') or the explicit coupling. */
       bool projected_drag = false;
       /** A pressure [Pa] on the top row of points (Terzaghi's load; 0: none). */
       double top_load = 0.;

@@ -126,9 +126,10 @@ namespace slidewave
       apply_top_load();
 
       /** The water's force on the grains of the semi-implicit coupling (projected) into
-       *  water_force, after the water's step of length @p dt. */
+       *  water_force, after the water's step of length @p dt, with the skeleton's fields
+       *  @p fields of this step. */
       void
-      project_water_force(double dt);
+      project_water_force(const SkeletonFields &fields, double dt);
 
       /** The water's fields the skeleton hands over (SkeletonFluidExchange::to_fluid()). */
       SkeletonFields

@@ -120,6 +120,18 @@ namespace slidewave
         return dofs;
       }
 
+      /** This field's cell on the grid cell of @p cell, an iterator of another field (or of
+       *  the grid) on the same triangulation. */
+      template <class Cell>
+      dealii::DoFHandler<2>::active_cell_iterator
+      cell_on(const Cell &cell) const
+      {
+        return dealii::DoFHandler<2>::active_cell_iterator(&cell->get_triangulation(),
+                                                           cell->level(),
+                                                           cell->index(),
+                                                           &dofs);
+      }
+
       const dealii::FiniteElement<2> &
       finite_element() const
       {

@@ -115,6 +115,8 @@ namespace slidewave
       flow_gather.clear();
       vertex_velocity.clear();
       phase_gather.clear();
+      for (linear_algebra::CellGather &gather : porous_gathers)
+        gather.clear();
       flow.reinit_matrix(matrix, flow_constraints);
       rhs.reinit(flow.locally_owned_dofs(), grid.communicator());
       solution.reinit(flow.locally_owned_dofs(), grid.communicator());

@@ -63,8 +63,8 @@ namespace slidewave
       // The porous solid's coefficients at the quadrature points (only when there is one).
       std::unique_ptr<PorousMediumValues> porous_values;
       if (porous.active())
-        porous_values
-          = std::make_unique<PorousMediumValues>(grid, porous, quadrature, face_quadrature);
+        porous_values = std::make_unique<PorousMediumValues>(
+          grid, porous, quadrature, face_quadrature, &porous_gathers);
       std::vector<double>               mu_q(n_q);
       std::vector<dealii::Tensor<1, 2>> subscale_n(n_q);
       if (subscales)
@@ -108,7 +108,7 @@ namespace slidewave
         for (unsigned int q = 0; q < n_q; ++q)
           mu_q[q] = fluid.viscosity(theta * phi_new[q] + (1. - theta) * phi_old[q]);
         if (porous.active())
-          porous_values->reinit(cell, dt, mu_q);
+          porous_values->reinit(cell, cell_number, dt, mu_q);
         static const PorousCoefficients open_water;
         if (subscales)
           subscales->read(cell, subscale_n);

@@ -1,5 +1,6 @@
 #include <deal.II/fe/fe_values_extractors.h>
 #include <slidewave/fluid/porous_medium.h>
+#include <slidewave/linear_algebra/cell_evaluation.h>
 
 namespace slidewave
 {
@@ -8,12 +9,33 @@ namespace slidewave
     PorousMediumValues::PorousMediumValues(const grid::BackgroundGrid  &grid,
                                            const PorousMedium          &medium,
                                            const dealii::Quadrature<2> &quadrature,
-                                           const dealii::Quadrature<1> &face_quadrature)
+                                           const dealii::Quadrature<1> &face_quadrature,
+                                           PorousMediumGathers         *gathers)
       : grid(grid)
       , medium(medium)
       , coefficients(quadrature.size())
       , face_coefficients(face_quadrature.size())
+      , gathers(gathers)
     {
+      if (gathers != nullptr)
+        {
+          const grid::FiniteElementField *fields[3]
+            = {medium.fluid_fraction, medium.inverse_permeability, medium.solid_flux};
+          std::vector<double> *dofs[3] = {&dofs_fraction, &dofs_permeability, &dofs_flux};
+          for (unsigned int f = 0; f < 3; ++f)
+            if (fields[f] != nullptr)
+              {
+                linear_algebra::CellGather &gather = (*gathers)[f];
+                // (again when the field's layout changed: the grid adapted)
+                if (gather.empty() || !gather.matches(fields[f]->values(0)))
+                  gather.reinit(fields[f]->dof_handler(), fields[f]->values(0));
+                dofs[f]->resize(fields[f]->finite_element().n_dofs_per_cell());
+              }
+          if (medium.solid_flux != nullptr)
+            for (unsigned int i = 0; i < dofs_flux.size(); ++i)
+              flux_component.push_back(
+                medium.solid_flux->finite_element().system_to_component_index(i).first);
+        }
       const grid::FiniteElementField *scalar
         = medium.fluid_fraction != nullptr ? medium.fluid_fraction : medium.inverse_permeability;
       const auto flags = dealii::update_values | dealii::update_gradients;
@@ -43,7 +65,8 @@ namespace slidewave
                                  const int                  index,
                                  const int                  face,
                                  const double               dt,
-                                 const std::vector<double> &mu)
+                                 const std::vector<double> &mu,
+                                 const int                  cell_number)
     {
       auto              &result = face < 0 ? coefficients : face_coefficients;
       const unsigned int n_q    = result.size();
@@ -70,20 +93,52 @@ namespace slidewave
         return ff;
       };
       const dealii::FEValuesExtractors::Vector velocity(0);
-      if (medium.fluid_fraction != nullptr)
+      if (face < 0 && cell_number >= 0 && gathers != nullptr)
         {
-          auto &fv = values_on(*medium.fluid_fraction, false);
-          fv.get_function_values(medium.fluid_fraction->values(0), n);
-          fv.get_function_gradients(medium.fluid_fraction->values(0), grad_n);
+          // The fields read by the gathers, summed as FEValues sums them (bit for bit the
+          // same); the scalar fields share one element and so one set of shape functions.
+          const unsigned int number = static_cast<unsigned int>(cell_number);
+          if (fv_scalar != nullptr)
+            values_on(medium.fluid_fraction != nullptr ? *medium.fluid_fraction :
+                                                         *medium.inverse_permeability,
+                      false);
+          if (medium.fluid_fraction != nullptr)
+            {
+              (*gathers)[0].get(number, medium.fluid_fraction->values(0), dofs_fraction.data());
+              linear_algebra::evaluate_scalar(*fv_scalar, dofs_fraction, &n, &grad_n);
+            }
+          if (medium.inverse_permeability != nullptr)
+            {
+              (*gathers)[1].get(number,
+                                medium.inverse_permeability->values(0),
+                                dofs_permeability.data());
+              linear_algebra::evaluate_scalar(*fv_scalar, dofs_permeability, &inverse_permeability);
+            }
+          if (medium.solid_flux != nullptr)
+            {
+              values_on(*medium.solid_flux, true);
+              (*gathers)[2].get(number, medium.solid_flux->values(0), dofs_flux.data());
+              linear_algebra::evaluate_velocity(
+                *fv_solid, flux_component, dofs_flux, &flux, nullptr, &div_flux);
+            }
         }
-      if (medium.inverse_permeability != nullptr)
-        values_on(*medium.inverse_permeability, false)
-          .get_function_values(medium.inverse_permeability->values(0), inverse_permeability);
-      if (medium.solid_flux != nullptr)
+      else
         {
-          auto &fv = values_on(*medium.solid_flux, true);
-          fv[velocity].get_function_values(medium.solid_flux->values(0), flux);
-          fv[velocity].get_function_divergences(medium.solid_flux->values(0), div_flux);
+          if (medium.fluid_fraction != nullptr)
+            {
+              auto &fv = values_on(*medium.fluid_fraction, false);
+              fv.get_function_values(medium.fluid_fraction->values(0), n);
+              fv.get_function_gradients(medium.fluid_fraction->values(0), grad_n);
+            }
+          if (medium.inverse_permeability != nullptr)
+            values_on(*medium.inverse_permeability, false)
+              .get_function_values(medium.inverse_permeability->values(0), inverse_permeability);
+          if (medium.solid_flux != nullptr)
+            {
+              auto &fv = values_on(*medium.solid_flux, true);
+              fv[velocity].get_function_values(medium.solid_flux->values(0), flux);
+              fv[velocity].get_function_divergences(medium.solid_flux->values(0), div_flux);
+            }
         }
       const double rho_s = medium.grain_density;
       for (unsigned int q = 0; q < n_q; ++q)

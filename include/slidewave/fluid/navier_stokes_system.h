@@ -97,6 +97,8 @@ namespace slidewave
       set_porous_medium(const PorousMedium &medium)
       {
         porous = medium;
+        for (linear_algebra::CellGather &gather : porous_gathers)
+          gather.clear();
       }
 
       /** Sets the walls', the inflow sides' (at @p time) and the hanging nodes' values in
@@ -181,6 +183,7 @@ namespace slidewave
        *  rebuilt by the next assembly). */
       linear_algebra::CellScatter scatter;
       linear_algebra::CellGather  flow_gather, phase_gather;
+      PorousMediumGathers         porous_gathers;
       /** The positions of u_x and u_y of the vertices this rank owns in the owned flow
        *  vector (max_speed(); cleared on grid changes, rebuilt by the next call). */
       mutable std::vector<std::array<int, 2>> vertex_velocity;

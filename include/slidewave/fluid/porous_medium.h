@@ -1,6 +1,7 @@
 #ifndef slidewave_fluid_porous_medium_h
 #define slidewave_fluid_porous_medium_h
 
+#include <array>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -10,6 +11,7 @@
 #include <memory>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/finite_element_field.h>
+#include <slidewave/linear_algebra/cell_gather.h>
 #include <vector>
 
 namespace slidewave
@@ -85,6 +87,12 @@ namespace slidewave
 
 
 
+    /** Where the owned cells' values of a PorousMedium's fields (fluid fraction, inverse
+     *  permeability, solid flux) sit in their vectors (linear_algebra::CellGather). */
+    using PorousMediumGathers = std::array<linear_algebra::CellGather, 3>;
+
+
+
     /** The coefficients of a porous medium at one quadrature point (PorousMedium). */
     struct PorousCoefficients
     {
@@ -115,10 +123,14 @@ namespace slidewave
     class PorousMediumValues
     {
     public:
+      /** The gathers, if given, read the medium's fields on the owned cells in tree order
+       *  (reinit() with a cell number); the caller keeps them between steps (built here
+       *  when empty, rebuilt when a field's layout changed). */
       PorousMediumValues(const grid::BackgroundGrid  &grid,
                          const PorousMedium          &medium,
                          const dealii::Quadrature<2> &quadrature,
-                         const dealii::Quadrature<1> &face_quadrature);
+                         const dealii::Quadrature<1> &face_quadrature,
+                         PorousMediumGathers         *gathers = nullptr);
 
       /** The coefficients on @p cell (any DoFHandler on the grid's triangulation) at a
        *  step of length @p dt, with the viscosity mu(q) of each quadrature point. */
@@ -127,6 +139,19 @@ namespace slidewave
       reinit(const Cell &cell, const double dt, const std::vector<double> &mu)
       {
         evaluate(cell->level(), cell->index(), -1, dt, mu);
+      }
+
+      /** The same on the owned cell @p cell numbered @p cell_number in tree order
+       *  (grid::for_each_owned_cell_in_tree_order), its fields read by the gathers: the
+       *  same numbers, bit for bit, without a lookup per degree of freedom. */
+      template <class Cell>
+      void
+      reinit(const Cell                &cell,
+             const unsigned int         cell_number,
+             const double               dt,
+             const std::vector<double> &mu)
+      {
+        evaluate(cell->level(), cell->index(), -1, dt, mu, static_cast<int>(cell_number));
       }
 
       /** The same on the face @p face of @p cell (face quadrature), into face(q). */
@@ -165,9 +190,15 @@ namespace slidewave
                          dealii::Vector<double>                  &local_rhs) const;
 
     private:
-      /** On the cell (@p face < 0) or one of its faces. */
+      /** On the cell (@p face < 0) or one of its faces; by the gathers with a
+       *  @p cell_number (>= 0). */
       void
-      evaluate(int level, int index, int face, double dt, const std::vector<double> &mu);
+      evaluate(int                        level,
+               int                        index,
+               int                        face,
+               double                     dt,
+               const std::vector<double> &mu,
+               int                        cell_number = -1);
 
       const grid::BackgroundGrid              &grid;
       const PorousMedium                      &medium;
@@ -176,6 +207,10 @@ namespace slidewave
       std::vector<double>                      n, inverse_permeability, div_flux;
       std::vector<dealii::Tensor<1, 2>>        grad_n, flux;
       std::vector<PorousCoefficients>          coefficients, face_coefficients;
+      PorousMediumGathers                     *gathers;
+      /** A cell's values of the fields, and the solid flux's shape functions' components. */
+      std::vector<double>       dofs_fraction, dofs_permeability, dofs_flux;
+      std::vector<unsigned int> flux_component;
     };
   } // namespace fluid
 } // namespace slidewave

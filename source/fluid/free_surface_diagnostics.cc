@@ -170,8 +170,7 @@ namespace slidewave
         double                                   energy = 0.;
         grid::for_each_owned_cell_in_tree_order(flow.dof_handler(), [&](const auto &cell) {
           fv.reinit(cell);
-          fv_phase.reinit(dealii::DoFHandler<2>::active_cell_iterator(
-            &cell->get_triangulation(), cell->level(), cell->index(), &phase.dof_handler()));
+          fv_phase.reinit(phase.cell_on(cell));
           fv[velocity].get_function_values(flow.values(0), u);
           fv_phase.get_function_values(phase.values(0), phi);
           for (unsigned int q = 0; q < quadrature.size(); ++q)

@@ -88,10 +88,7 @@ namespace slidewave
       unsigned int cell_number = 0;
       grid::for_each_owned_cell_in_tree_order(flow.dof_handler(), [&](const auto &cell) {
         fv.reinit(cell);
-        const dealii::DoFHandler<2>::active_cell_iterator phase_cell(&grid.triangulation(),
-                                                                     cell->level(),
-                                                                     cell->index(),
-                                                                     &phase.dof_handler());
+        const auto phase_cell = phase.cell_on(cell);
         fv_phase.reinit(phase_cell);
         // The fields at the quadrature points, summed over the shape functions in the
         // order FEValues::get_function_values() sums them (the same numbers, bit for bit).

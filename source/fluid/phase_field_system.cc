@@ -43,6 +43,8 @@ namespace slidewave
       porous                      = medium;
       porous.inverse_permeability = nullptr;
       porous.grain_density        = 0.;
+      for (linear_algebra::CellGather &gather : porous_gathers)
+        gather.clear();
     }
 
 
@@ -83,6 +85,8 @@ namespace slidewave
       scatter.clear(); // rebuilt by the next assembly, when every field is current
       phase_gather.clear();
       flow_gather.clear();
+      for (linear_algebra::CellGather &gather : porous_gathers)
+        gather.clear();
       rhs.reinit(phase.locally_owned_dofs(), communicator);
       solution.reinit(phase.locally_owned_dofs(), communicator);
       phase_old.reinit(phase.locally_owned_dofs(), phase.locally_relevant_dofs(), communicator);
@@ -120,8 +124,8 @@ namespace slidewave
       // The porous solid's fluid fraction and flux (only when there is one).
       std::unique_ptr<PorousMediumValues> porous_values;
       if (porous.active())
-        porous_values
-          = std::make_unique<PorousMediumValues>(grid, porous, quadrature, face_quadrature);
+        porous_values = std::make_unique<PorousMediumValues>(
+          grid, porous, quadrature, face_quadrature, &porous_gathers);
       const std::vector<double> no_viscosity(std::max(quadrature.size(), face_quadrature.size()),
                                              0.);
       static const PorousCoefficients open_water;
@@ -161,10 +165,7 @@ namespace slidewave
       unsigned int cell_number = 0;
       grid::for_each_owned_cell_in_tree_order(phase.dof_handler(), [&](const auto &cell) {
         fv.reinit(cell);
-        const dealii::DoFHandler<2>::active_cell_iterator flow_cell(&grid.triangulation(),
-                                                                    cell->level(),
-                                                                    cell->index(),
-                                                                    &flow.dof_handler());
+        const auto flow_cell = flow.cell_on(cell);
         fv_flow.reinit(flow_cell);
         // The fields at the quadrature points, summed over the shape functions in the
         // order FEValues::get_function_values() sums them (the same numbers, bit for bit).
@@ -178,7 +179,7 @@ namespace slidewave
         linear_algebra::evaluate_scalar(fv, phase_dofs, &phi_n, &grad_phi_n);
         const double h = cell->extent_in_direction(0);
         if (porous_values)
-          porous_values->reinit(cell, dt, no_viscosity);
+          porous_values->reinit(cell, cell_number, dt, no_viscosity);
 
         local_matrix = 0.;
         local_rhs    = 0.;
@@ -351,10 +352,7 @@ namespace slidewave
       grid::for_each_owned_cell_in_tree_order(phase.dof_handler(), [&](const auto &cell) {
         if (!cell->at_boundary())
           return;
-        const dealii::DoFHandler<2>::active_cell_iterator flow_cell(&grid.triangulation(),
-                                                                    cell->level(),
-                                                                    cell->index(),
-                                                                    &flow.dof_handler());
+        const auto flow_cell = flow.cell_on(cell);
         for (const unsigned int f : cell->face_indices())
           {
             if (!cell->at_boundary(f))

@@ -61,13 +61,14 @@ namespace slidewave
 
 
     void
-    PorousMediumValues::evaluate(const int                  level,
-                                 const int                  index,
-                                 const int                  face,
-                                 const double               dt,
-                                 const std::vector<double> &mu,
-                                 const int                  cell_number)
+    PorousMediumValues::evaluate(const dealii::Triangulation<2>::active_cell_iterator &cell,
+                                 const int                                             face,
+                                 const double                                          dt,
+                                 const std::vector<double>                            &mu,
+                                 const int                                             cell_number)
     {
+      Assert(&cell->get_triangulation() == &grid.triangulation(),
+             dealii::ExcMessage("PorousMediumValues: a cell of another triangulation"));
       auto              &result = face < 0 ? coefficients : face_coefficients;
       const unsigned int n_q    = result.size();
       n.assign(n_q, 1.);
@@ -78,18 +79,14 @@ namespace slidewave
       // The cell's (or face's) values of a field.
       const auto values_on = [&](const grid::FiniteElementField &field,
                                  const bool vector) -> dealii::FEValuesBase<2> & {
-        const dealii::DoFHandler<2>::active_cell_iterator cell(&grid.triangulation(),
-                                                               level,
-                                                               index,
-                                                               &field.dof_handler());
         if (face < 0)
           {
             auto &fv = vector ? *fv_solid : *fv_scalar;
-            fv.reinit(cell);
+            fv.reinit(field.cell_on(cell));
             return fv;
           }
         auto &ff = vector ? *ff_solid : *ff_scalar;
-        ff.reinit(cell, static_cast<unsigned int>(face));
+        ff.reinit(field.cell_on(cell), static_cast<unsigned int>(face));
         return ff;
       };
       const dealii::FEValuesExtractors::Vector velocity(0);

@@ -94,11 +94,7 @@ namespace slidewave
               = t.mass * u[q] + grad_u[q] * t.advection + t.pressure_factor * grad_p[q] - t.known;
             subscale[q] = -t.tau_over_rho * residual;
           }
-        const dealii::DoFHandler<2>::active_cell_iterator own(&grid.triangulation(),
-                                                              cell->level(),
-                                                              cell->index(),
-                                                              &field.dof_handler());
-        own->get_dof_indices(cell_indices);
+        field.cell_on(cell)->get_dof_indices(cell_indices);
         for (unsigned int i = 0; i < cell_indices.size(); ++i)
           owned[cell_indices[i]] = subscale[dof_point[i]][dof_component[i]];
         ++cell_number;

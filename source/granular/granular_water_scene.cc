@@ -76,10 +76,9 @@ namespace slidewave
       // permeability, flux; semi-implicit: the flux of the step's start too): eight or ten
       // unknowns per node; the semi-implicit coupling's projection (DragProjection) seven
       // vectors per node and a 4 x 4 matrix per cell, about 25 per node at most.
-      const bool projected = parameters.projected_drag;
       estimate.add("water unknowns",
-                   (parameters.implicit_drag ? (projected ? 35. : 10.) : 8.) * (nx + 1.)
-                     * (ny + 1.),
+                   (parameters.implicit_drag ? (parameters.projected_drag ? 35. : 10.) : 8.)
+                     * (nx + 1.) * (ny + 1.),
                    core::MemoryEstimate::bytes_per_dof,
                    fluid_section + "/Grid/Cell size",
                    to_string(fluid_parameters.cell_size));

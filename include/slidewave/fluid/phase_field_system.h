@@ -147,10 +147,11 @@ namespace slidewave
       /** ILU(0), its symbolic part kept until the next grid change. */
       std::unique_ptr<linear_algebra::IncompleteLU> ilu;
       /** Where the owned cells' entries and values sit in the matrix, the right-hand
-       *  side and the phase field's and flow's ghosted vectors (cleared on grid changes,
-       *  rebuilt by the next assembly). */
+       *  side and the phase field's, flow's and porous solid's ghosted vectors (cleared on
+       *  grid changes and with a new porous solid, rebuilt by the next assembly). */
       linear_algebra::CellScatter scatter;
       linear_algebra::CellGather  phase_gather, flow_gather;
+      PorousMediumGathers         porous_gathers;
       VectorType                  rhs, solution, phase_old;
       double                      outflow = 0.;
     };

@@ -6,6 +6,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/tria.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <memory>
@@ -138,7 +139,7 @@ namespace slidewave
       void
       reinit(const Cell &cell, const double dt, const std::vector<double> &mu)
       {
-        evaluate(cell->level(), cell->index(), -1, dt, mu);
+        evaluate(cell, -1, dt, mu);
       }
 
       /** The same on the owned cell @p cell numbered @p cell_number in tree order
@@ -151,7 +152,7 @@ namespace slidewave
              const double               dt,
              const std::vector<double> &mu)
       {
-        evaluate(cell->level(), cell->index(), -1, dt, mu, static_cast<int>(cell_number));
+        evaluate(cell, -1, dt, mu, static_cast<int>(cell_number));
       }
 
       /** The same on the face @p face of @p cell (face quadrature), into face(q). */
@@ -162,7 +163,7 @@ namespace slidewave
                   const double               dt,
                   const std::vector<double> &mu)
       {
-        evaluate(cell->level(), cell->index(), static_cast<int>(face), dt, mu);
+        evaluate(cell, static_cast<int>(face), dt, mu);
       }
 
       const PorousCoefficients &
@@ -190,15 +191,14 @@ namespace slidewave
                          dealii::Vector<double>                  &local_rhs) const;
 
     private:
-      /** On the cell (@p face < 0) or one of its faces; by the gathers with a
-       *  @p cell_number (>= 0). */
+      /** On @p cell of the grid (any DoFHandler's iterator on its triangulation converts)
+       *  or one of its faces (@p face >= 0); by the gathers with a @p cell_number (>= 0). */
       void
-      evaluate(int                        level,
-               int                        index,
-               int                        face,
-               double                     dt,
-               const std::vector<double> &mu,
-               int                        cell_number = -1);
+      evaluate(const dealii::Triangulation<2>::active_cell_iterator &cell,
+               int                                                   face,
+               double                                                dt,
+               const std::vector<double>                            &mu,
+               int                                                   cell_number = -1);
 
       const grid::BackgroundGrid              &grid;
       const PorousMedium                      &medium;

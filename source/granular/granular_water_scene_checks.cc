@@ -110,6 +110,23 @@ namespace slidewave
                              "a dry density (1 - n_0) rho^s between 0.01 and 1 times '" + section
                                + "/Grain density' = " + to_string(parameters.grain_density)
                                + " (an initial porosity in (0, 0.99])");
+          // A rate-dependent friction's grains and liquid are this scene's.
+          const std::string path = material.path.empty() ? soil_section : material.path;
+          if (material.friction_law == materials::FrictionLaw::inertial
+              && !same(material.grain_density, parameters.grain_density, parameters.grain_density))
+            throw InputError(path + "/Grain density",
+                             to_string(material.grain_density),
+                             "the same as '" + section
+                               + "/Grain density' = " + to_string(parameters.grain_density)
+                               + " ('Friction law = inertial': the grains are the skeleton's)");
+          const double water = fluid_parameters.fluid.water_viscosity;
+          if (material.friction_law == materials::FrictionLaw::viscous
+              && !same(material.fluid_viscosity, water, water))
+            throw InputError(path + "/Fluid viscosity",
+                             to_string(material.fluid_viscosity),
+                             "the same as '" + fluid_section
+                               + "/Fluids/Water viscosity' = " + to_string(water)
+                               + " ('Friction law = viscous': the pore liquid is the water)");
         }
       if (parameters.exact_solution != GranularExactSolution::none)
         {

@@ -74,10 +74,39 @@ namespace slidewave
                                  double                              &equivalent_plastic_strain,
                                  const double                         alpha_psi) const
     {
+      return update_stress(stress, strain_increment, equivalent_plastic_strain, cone(), alpha_psi);
+    }
+
+
+
+    PlasticCorrection
+    DruckerPrager::update_stress(dealii::SymmetricTensor<2, 3>       &stress,
+                                 const dealii::SymmetricTensor<2, 3> &strain_increment,
+                                 double                              &equivalent_plastic_strain,
+                                 const Cone                          &cone,
+                                 const double                         alpha_psi) const
+    {
       stress += elastic.stress_increment(strain_increment);
-      const PlasticCorrection correction = return_to_yield_surface(stress, alpha_psi);
+      const PlasticCorrection correction = return_to_yield_surface(stress, cone, alpha_psi);
       equivalent_plastic_strain += correction.equivalent_plastic_strain_increment;
       return correction;
+    }
+
+
+
+    Cone
+    DruckerPrager::cone() const
+    {
+      return {friction_coefficient, cohesion_term};
+    }
+
+
+
+    Cone
+    DruckerPrager::cone_of_tangent(const double tangent, const double cohesion)
+    {
+      const double root = std::sqrt(9. + 12. * tangent * tangent);
+      return {tangent / root, 3. * cohesion / root};
     }
 
 
@@ -94,19 +123,30 @@ namespace slidewave
     DruckerPrager::return_to_yield_surface(dealii::SymmetricTensor<2, 3> &stress,
                                            const double                   alpha_psi) const
     {
-      const double K = elastic.bulk_modulus();
-      const double G = elastic.shear_modulus();
+      return return_to_yield_surface(stress, cone(), alpha_psi);
+    }
+
+
+
+    PlasticCorrection
+    DruckerPrager::return_to_yield_surface(dealii::SymmetricTensor<2, 3> &stress,
+                                           const Cone                    &cone,
+                                           const double                   alpha_psi) const
+    {
+      const double a_phi  = cone.alpha_phi;
+      const double k_cone = cone.k_c;
+      const double K      = elastic.bulk_modulus();
+      const double G      = elastic.shear_modulus();
 
       const dealii::SymmetricTensor<2, 3> trial   = stress;
       const double                        p_trial = dealii::trace(trial) / 3.;
       const dealii::SymmetricTensor<2, 3> s_trial = dealii::deviator(trial);
       const double                        q_trial = root_j2(s_trial);
-      const double f_trial = 3. * friction_coefficient * p_trial + q_trial - cohesion_term;
+      const double                        f_trial = 3. * a_phi * p_trial + q_trial - k_cone;
 
-      const double cone_scale
-        = cohesion_term + std::abs(3. * friction_coefficient * p_trial) + q_trial;
-      const bool outside_cone = f_trial > relative_tolerance * cone_scale;
-      const bool beyond_cutoff
+      const double cone_scale   = k_cone + std::abs(3. * a_phi * p_trial) + q_trial;
+      const bool   outside_cone = f_trial > relative_tolerance * cone_scale;
+      const bool   beyond_cutoff
         = p_trial > cutoff + relative_tolerance * (cutoff + std::abs(p_trial) + q_trial);
 
       PlasticCorrection correction;
@@ -121,12 +161,12 @@ namespace slidewave
 
       if (outside_cone)
         {
-          const double dlambda = f_trial / (G + 9. * K * friction_coefficient * alpha_psi);
+          const double dlambda = f_trial / (G + 9. * K * a_phi * alpha_psi);
           const double q_cone  = q_trial - G * dlambda;
           const double p_cone  = p_trial - 3. * K * alpha_psi * dlambda;
           // Without friction the cone is a cylinder: q_cone = k_c >= 0 up to
           // rounding, and there is no apex to fall back on.
-          const bool has_apex = friction_coefficient > 0.;
+          const bool has_apex = a_phi > 0.;
           if ((q_cone >= 0. || !has_apex) && p_cone <= cutoff)
             {
               correction.region = ReturnRegion::cone;
@@ -138,7 +178,7 @@ namespace slidewave
 
       if (!found && p_trial > cutoff)
         {
-          const double f_at_cutoff = 3. * friction_coefficient * cutoff + q_trial - cohesion_term;
+          const double f_at_cutoff = 3. * a_phi * cutoff + q_trial - k_cone;
           if (f_at_cutoff <= relative_tolerance * cone_scale)
             {
               correction.region = ReturnRegion::tension_cutoff;
@@ -150,8 +190,10 @@ namespace slidewave
       if (!found)
         {
           correction.region = ReturnRegion::corner;
-          p                 = std::min(cutoff, apex_mean_stress());
-          q = std::min(q_trial, std::max(cohesion_term - 3. * friction_coefficient * p, 0.));
+          p                 = std::min(cutoff,
+                       a_phi > 0. ? k_cone / (3. * a_phi) :
+                                                    std::numeric_limits<double>::infinity());
+          q                 = std::min(q_trial, std::max(k_cone - 3. * a_phi * p, 0.));
         }
 
       stress = p * dealii::unit_symmetric_tensor<3>();

@@ -93,6 +93,50 @@ namespace slidewave
                         Double(),
                         "K in tan psi = K (n_c - n), >= 0 ('Dilatancy law = critical "
                         "state'; 4.09 for glass beads, Pailha and Pouliquen 2009).");
+      prm.declare_entry("Friction law",
+                        "constant",
+                        Selection("constant|inertial|viscous"),
+                        "'constant': the 'Friction angle' at every rate (rate-independent "
+                        "plasticity, whose flowing states have no length scale: a granular "
+                        "collapse does not converge under grid refinement). 'inertial' (mu(I), "
+                        "dry grains, Jop, Forterre and Pouliquen 2006) and 'viscous' (mu(J), "
+                        "grains in a liquid, Boyer, Guazzelli and Pouliquen 2011): tan phi = "
+                        "mu_s + (mu_2 - mu_s) X / (X + X_0) with mu_s = tan('Friction angle'), "
+                        "mu_2 = tan('Friction angle at high rate'), X the inertial number "
+                        "I = gamma_dot d sqrt(rho_s / p') or the viscous number J = eta_f "
+                        "gamma_dot / p' of the point's shear rate gamma_dot and mean effective "
+                        "pressure p', X_0 its reference value. 'drucker prager' only.");
+      prm.declare_entry("Friction angle at high rate",
+                        "40",
+                        Double(),
+                        "phi_2 [degrees], the friction angle as the rate number goes to "
+                        "infinity ('Friction law' inertial or viscous), in ['Friction angle', "
+                        "90). Glass beads: 32.8 (Jop et al. 2006).");
+      prm.declare_entry("Reference inertial number",
+                        "0.279",
+                        Double(),
+                        "I_0 ('Friction law = inertial'), > 0: the inertial number at which "
+                        "tan phi is halfway between mu_s and mu_2 (0.279: glass beads, Jop et "
+                        "al. 2006).");
+      prm.declare_entry("Reference viscous number",
+                        "0.005",
+                        Double(),
+                        "J_0 ('Friction law = viscous'), > 0: the viscous number at which tan "
+                        "phi is halfway between mu_s and mu_2 (0.005: Boyer et al. 2011).");
+      prm.declare_entry("Grain diameter",
+                        "0.5e-3",
+                        Double(),
+                        "d [m] of the inertial number ('Friction law = inertial'), > 0.");
+      prm.declare_entry("Grain density",
+                        "2500",
+                        Double(),
+                        "rho_s [kg/m^3] of the inertial number ('Friction law = inertial'), "
+                        "> 0: the grains' own density, not the bulk 'Density'.");
+      prm.declare_entry("Fluid viscosity",
+                        "1e-3",
+                        Double(),
+                        "eta_f [Pa s] of the viscous number ('Friction law = viscous'), > 0: "
+                        "the pore liquid's viscosity.");
       prm.declare_entry("Tension cutoff",
                         "0",
                         Double(),
@@ -110,19 +154,29 @@ namespace slidewave
       this->path                   = path;
       name                         = dealii::Utilities::trim(prm.get("Name"));
       const std::string model_name = prm.get("Model");
-      model                    = model_name == "linear elastic" ? MaterialModel::linear_elastic :
-                                 model_name == "hencky drucker prager" ? MaterialModel::hencky_drucker_prager :
-                                                                         MaterialModel::drucker_prager;
-      density                  = prm.get_double("Density");
-      youngs_modulus           = prm.get_double("Young's modulus");
-      poisson_ratio            = prm.get_double("Poisson ratio");
-      friction_angle           = prm.get_double("Friction angle");
-      cohesion                 = prm.get_double("Cohesion");
-      dilatancy_angle          = prm.get_double("Dilatancy angle");
-      tension_cutoff           = prm.get_double("Tension cutoff");
-      critical_state_dilatancy = prm.get("Dilatancy law") == "critical state";
-      critical_porosity        = prm.get_double("Critical porosity");
-      dilatancy_factor         = prm.get_double("Dilatancy factor");
+      model                     = model_name == "linear elastic" ? MaterialModel::linear_elastic :
+                                  model_name == "hencky drucker prager" ? MaterialModel::hencky_drucker_prager :
+                                                                          MaterialModel::drucker_prager;
+      density                   = prm.get_double("Density");
+      youngs_modulus            = prm.get_double("Young's modulus");
+      poisson_ratio             = prm.get_double("Poisson ratio");
+      friction_angle            = prm.get_double("Friction angle");
+      cohesion                  = prm.get_double("Cohesion");
+      dilatancy_angle           = prm.get_double("Dilatancy angle");
+      tension_cutoff            = prm.get_double("Tension cutoff");
+      critical_state_dilatancy  = prm.get("Dilatancy law") == "critical state";
+      critical_porosity         = prm.get_double("Critical porosity");
+      dilatancy_factor          = prm.get_double("Dilatancy factor");
+      const std::string law     = prm.get("Friction law");
+      friction_law              = law == "inertial" ? FrictionLaw::inertial :
+                                  law == "viscous"  ? FrictionLaw::viscous :
+                                                      FrictionLaw::constant;
+      high_rate_friction_angle  = prm.get_double("Friction angle at high rate");
+      reference_inertial_number = prm.get_double("Reference inertial number");
+      reference_viscous_number  = prm.get_double("Reference viscous number");
+      grain_diameter            = prm.get_double("Grain diameter");
+      grain_density             = prm.get_double("Grain density");
+      fluid_viscosity           = prm.get_double("Fluid viscosity");
 
       if (name.empty())
         throw InputError(path + "/Name",
@@ -141,23 +195,57 @@ namespace slidewave
       // loose soil) as long as their return stays well posed: G + 9 K alpha_phi alpha_psi > 0
       // (DruckerPrager::return_to_yield_surface and HenckyDruckerPrager::update divide by
       // it).
-      const bool   plastic    = model != MaterialModel::linear_elastic;
-      const double lowest     = plastic ? -friction_angle : 0.;
-      const double K          = youngs_modulus / (3. * (1. - 2. * poisson_ratio));
-      const double G          = youngs_modulus / (2. * (1. + poisson_ratio));
-      const bool   well_posed = G
-                                + 9. * K * DruckerPrager::plane_strain_coefficient(friction_angle)
-                                    * DruckerPrager::plane_strain_coefficient(dilatancy_angle)
-                              > 0.1 * G;
+      // With a friction that rises with the rate, up to phi_2: the return's bound holds at
+      // the largest friction.
+      const bool rate_law = friction_law != FrictionLaw::constant;
+      if (rate_law)
+        {
+          if (model != MaterialModel::drucker_prager)
+            throw InputError(path + "/Friction law",
+                             law,
+                             "constant with 'Model = " + prm.get("Model")
+                               + "' (a rate-dependent friction is a law of 'drucker prager')");
+          require_in_range(path + "/Friction angle at high rate",
+                           high_rate_friction_angle,
+                           friction_angle,
+                           true,
+                           90.,
+                           false);
+          if (friction_law == FrictionLaw::inertial)
+            {
+              require_positive(path + "/Reference inertial number", reference_inertial_number);
+              require_positive(path + "/Grain diameter", grain_diameter);
+              require_positive(path + "/Grain density", grain_density);
+            }
+          else
+            {
+              require_positive(path + "/Reference viscous number", reference_viscous_number);
+              require_positive(path + "/Fluid viscosity", fluid_viscosity);
+            }
+        }
+      const double largest_friction = rate_law ? high_rate_friction_angle : friction_angle;
+      const bool   plastic          = model != MaterialModel::linear_elastic;
+      const double lowest           = plastic ? -friction_angle : 0.;
+      const double K                = youngs_modulus / (3. * (1. - 2. * poisson_ratio));
+      const double G                = youngs_modulus / (2. * (1. + poisson_ratio));
+      const bool   well_posed
+        = G
+            + 9. * K * DruckerPrager::plane_strain_coefficient(largest_friction)
+                * DruckerPrager::plane_strain_coefficient(std::min(dilatancy_angle, 0.))
+          > 0.1 * G;
       if (!(dilatancy_angle >= lowest && dilatancy_angle <= friction_angle) || !well_posed)
         throw InputError(path + "/Dilatancy angle",
                          to_string(dilatancy_angle),
-                         plastic ? "a number in [-" + to_string(friction_angle) + ", "
-                                     + to_string(friction_angle)
-                                     + "] (at most the friction angle; negative: compaction under "
-                                       "shear) with G + 9 K alpha_phi alpha_psi > 0.1 G" :
-                                   "a number in [0, " + to_string(friction_angle)
-                                     + "]: the dilatancy angle may not exceed the friction angle");
+                         plastic ?
+                           "a number in [-" + to_string(friction_angle) + ", "
+                             + to_string(friction_angle)
+                             + "] (at most the friction angle; negative: compaction under "
+                               "shear) with G + 9 K alpha_phi alpha_psi > 0.1 G"
+                             + std::string(rate_law ? " (alpha_phi of the 'Friction angle at "
+                                                      "high rate')" :
+                                                      "") :
+                           "a number in [0, " + to_string(friction_angle)
+                             + "]: the dilatancy angle may not exceed the friction angle");
       if (critical_state_dilatancy)
         {
           if (!plastic)
@@ -230,14 +318,19 @@ namespace slidewave
           // A state-dependent alpha_psi stays within [-alpha_phi, alpha_phi] and keeps
           // G + 9 K alpha_phi alpha_psi >= 0.1 G (MaterialParameters::parse_parameters);
           // the Hencky model's cone is the small-strain one's (HenckyDruckerPrager).
+          // With a rate-dependent friction the bound holds at its largest, phi_2.
           const double alpha_phi
             = DruckerPrager::plane_strain_coefficient(parameters.friction_angle);
+          const double largest_alpha_phi
+            = rate_dependent_friction() ?
+                DruckerPrager::plane_strain_coefficient(parameters.high_rate_friction_angle) :
+                alpha_phi;
           highest_alpha_psi = alpha_phi;
           lowest_alpha_psi  = -alpha_phi;
-          if (alpha_phi > 0.)
+          if (largest_alpha_phi > 0.)
             lowest_alpha_psi = std::max(lowest_alpha_psi,
                                         -0.9 * elastic.shear_modulus()
-                                          / (9. * elastic.bulk_modulus() * alpha_phi));
+                                          / (9. * elastic.bulk_modulus() * largest_alpha_phi));
         }
     }
 
@@ -248,6 +341,51 @@ namespace slidewave
     {
       const double t = parameters.dilatancy_factor * (parameters.critical_porosity - porosity);
       return std::clamp(t / std::sqrt(9. + 12. * t * t), lowest_alpha_psi, highest_alpha_psi);
+    }
+
+
+
+    double
+    Material::friction_tangent(const double shear_rate, const double pressure) const
+    {
+      const double mu_s = std::tan(parameters.friction_angle * M_PI / 180.);
+      const double mu_2 = std::tan(parameters.high_rate_friction_angle * M_PI / 180.);
+      if (!(shear_rate > 0.))
+        return mu_s;
+      if (!(pressure > 0.))
+        return mu_2;
+      const bool   inertial = parameters.friction_law == FrictionLaw::inertial;
+      const double number   = inertial ? shear_rate * parameters.grain_diameter
+                                         * std::sqrt(parameters.grain_density / pressure) :
+                                         parameters.fluid_viscosity * shear_rate / pressure;
+      const double reference
+        = inertial ? parameters.reference_inertial_number : parameters.reference_viscous_number;
+      return mu_s + (mu_2 - mu_s) * number / (number + reference);
+    }
+
+
+
+    void
+    Material::update_stress_at_rate(dealii::SymmetricTensor<2, 3>       &stress,
+                                    const dealii::SymmetricTensor<2, 3> &strain_increment,
+                                    const double                         spin_increment_xy,
+                                    double                              &equivalent_plastic_strain,
+                                    const double                         alpha_psi,
+                                    const double                         dt) const
+    {
+      Assert(parameters.model == MaterialModel::drucker_prager, dealii::ExcInternalError());
+      apply_jaumann_rotation(stress, spin_increment_xy);
+      const double pressure
+        = -dealii::trace(stress + elastic.stress_increment(strain_increment)) / 3.;
+      const dealii::SymmetricTensor<2, 3> e          = dealii::deviator(strain_increment);
+      const double                        shear_rate = std::sqrt(2. * (e * e)) / dt;
+      const Cone cone = DruckerPrager::cone_of_tangent(friction_tangent(shear_rate, pressure),
+                                                       parameters.cohesion);
+      plasticity->update_stress(stress,
+                                strain_increment,
+                                equivalent_plastic_strain,
+                                cone,
+                                std::isnan(alpha_psi) ? plasticity->alpha_psi() : alpha_psi);
     }
 
 

@@ -123,7 +123,9 @@ namespace slidewave
       const materials::Material &material
         = materials[static_cast<unsigned int>(p[property::material_id])];
       const double alpha_psi = state_dilatancy_coefficient(p);
-      if (!std::isnan(alpha_psi))
+      if (material.rate_dependent_friction())
+        material.update_stress_at_rate(stress, strain_increment, spin_xy, plastic, alpha_psi, dt);
+      else if (!std::isnan(alpha_psi))
         material.update_stress(stress, strain_increment, spin_xy, plastic, alpha_psi);
       else
         material.update_stress(stress, strain_increment, spin_xy, plastic);

@@ -49,6 +49,19 @@ namespace slidewave
 
 
     /**
+     * The cone of one return: the friction coefficient α_φ and the cohesion term k_c of
+     * f = α_φ I1 + sqrt(J2) - k_c. A material's own (DruckerPrager::cone()) or one of a
+     * friction that depends on the point's shear rate (Material::update_stress_at_rate()).
+     */
+    struct Cone
+    {
+      double alpha_phi = 0.;
+      double k_c       = 0.;
+    };
+
+
+
+    /**
      * Linear elasticity with the non-associative Drucker–Prager yield
      * criterion and a tension cutoff on the mean stress, integrated with a
      * closed-form return mapping (paper 000, §2, Eqs. 2–4).
@@ -174,6 +187,31 @@ namespace slidewave
 
       PlasticCorrection
       return_to_yield_surface(dealii::SymmetricTensor<2, 3> &stress, double alpha_psi) const;
+
+      /** update_stress() and return_to_yield_surface() on the cone @p cone (a friction that
+       *  depends on the rate; the tension cutoff is the model's) with the dilatancy
+       *  coefficient @p alpha_psi. With cone() and alpha_psi() they are the plain ones, bit
+       *  for bit. */
+      PlasticCorrection
+      update_stress(dealii::SymmetricTensor<2, 3>       &stress,
+                    const dealii::SymmetricTensor<2, 3> &strain_increment,
+                    double                              &equivalent_plastic_strain,
+                    const Cone                          &cone,
+                    double                               alpha_psi) const;
+
+      PlasticCorrection
+      return_to_yield_surface(dealii::SymmetricTensor<2, 3> &stress,
+                              const Cone                    &cone,
+                              double                         alpha_psi) const;
+
+      /** The model's own cone, α_φ and k_c. */
+      Cone
+      cone() const;
+
+      /** The cone of friction angle tan φ = @p tangent and cohesion @p cohesion [Pa]: the
+       *  plane-strain match α_φ = t / sqrt(9 + 12 t²), k_c = 3 c / sqrt(9 + 12 t²). */
+      static Cone
+      cone_of_tangent(double tangent, double cohesion);
 
       /** f(σ) = α_φ I1 + sqrt(J2) - k_c [Pa] (paper 000, Eq. 3). */
       double

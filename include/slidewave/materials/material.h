@@ -24,6 +24,20 @@ namespace slidewave
 
 
 
+    /** How the friction angle of a Drucker–Prager material depends on the shear rate. */
+    enum class FrictionLaw
+    {
+      /** The 'Friction angle' at every rate. */
+      constant,
+      /** μ(I), I = γ̇ d sqrt(ρ_s / p′) (dry grains; Jop, Forterre and Pouliquen 2006). */
+      inertial,
+      /** μ(J), J = η_f γ̇ / p′ (grains in a viscous liquid; Boyer, Guazzelli and
+       *  Pouliquen 2011, in the same two-angle form). */
+      viscous
+    };
+
+
+
     /**
      * The parameters of one material of the 2D plane-strain material point
      * method: its name, its model, its density, its elasticity and, for the
@@ -65,6 +79,14 @@ namespace slidewave
       std::string path;
       double      critical_porosity = 0.42;
       double      dilatancy_factor  = 4.09;
+      /** 'Friction law' and its constants (Material::friction_tangent()). */
+      FrictionLaw friction_law              = FrictionLaw::constant;
+      double      high_rate_friction_angle  = 40.;
+      double      reference_inertial_number = 0.279;
+      double      reference_viscous_number  = 0.005;
+      double      grain_diameter            = 0.5e-3;
+      double      grain_density             = 2500.;
+      double      fluid_viscosity           = 1e-3;
     };
 
 
@@ -134,6 +156,42 @@ namespace slidewave
                     double                               spin_increment_xy,
                     double                              &equivalent_plastic_strain,
                     double                               alpha_psi) const;
+
+      /** Whether the friction angle follows the point's shear rate ('Friction law'
+       *  inertial or viscous). */
+      bool
+      rate_dependent_friction() const
+      {
+        return parameters.friction_law != FrictionLaw::constant;
+      }
+
+      /**
+       * tan φ at the shear rate @p shear_rate [1/s] and the mean effective pressure
+       * @p pressure [Pa] (compression positive) for 'Friction law' inertial or viscous:
+       *
+       *   tan φ = μ_s + (μ_2 - μ_s) X / (X + X_0),   μ_s = tan φ_s,  μ_2 = tan φ_2,
+       *
+       * φ_s the 'Friction angle', φ_2 the 'Friction angle at high rate', X the inertial
+       * number I = γ̇ d sqrt(ρ_s / p′) or the viscous number J = η_f γ̇ / p′ and X_0 its
+       * reference value. μ_s at rest, μ_2 where p′ <= 0 and the point shears (X infinite).
+       */
+      double
+      friction_tangent(double shear_rate, double pressure) const;
+
+      /**
+       * The update of update_stress() with the friction of the point's rate
+       * (friction_tangent()): the shear rate γ̇ = sqrt(2 e:e)/Δt of the deviator e of
+       * @p strain_increment over the step @p dt, the pressure of the elastic trial stress;
+       * the cone of that angle (and the material's cohesion) for this step's return, with
+       * @p alpha_psi (NaN: the material's own dilatancy). Drucker–Prager only.
+       */
+      void
+      update_stress_at_rate(dealii::SymmetricTensor<2, 3>       &stress,
+                            const dealii::SymmetricTensor<2, 3> &strain_increment,
+                            double                               spin_increment_xy,
+                            double                              &equivalent_plastic_strain,
+                            double                               alpha_psi,
+                            double                               dt) const;
 
       /** Whether the dilatancy follows the point's porosity ('Dilatancy law = critical
        *  state'). */

@@ -28,6 +28,7 @@ parameter to every run, for example ``--set 'Material points/FLIP fraction=1'``.
 import argparse
 import csv
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -135,7 +136,8 @@ def run(exe, case, h, psi, dry_end, extra):
     env = dict(os.environ, OPENBLAS_CORETYPE=os.environ.get("OPENBLAS_CORETYPE", "Haswell"))
     start = time.perf_counter()
     done = subprocess.run(command, cwd=work, capture_output=True, text=True, env=env)
-    row = {"case": case, "dilatancy_deg": psi, "cell_size_m": h, "wall_s": time.perf_counter() - start}
+    row = {"case": case, "dilatancy_deg": psi, "cell_size_m": h, "extra": "; ".join(extra),
+           "wall_s": time.perf_counter() - start}
     if done.returncode != 0:
         row["status"] = "FAILED: " + (done.stderr.strip().splitlines() or ["?"])[-1][:200]
     else:
@@ -145,7 +147,7 @@ def run(exe, case, h, psi, dry_end, extra):
         row["time_s"] = float(stats.get("time", "nan"))
         row["steps"] = int(stats.get("step", "0"))
         row["kinetic_energy"] = float(stats.get("kinetic_energy", stats.get("skeleton_kinetic_energy", "nan")))
-    subprocess.run(["rm", "-rf", work])
+    shutil.rmtree(work, ignore_errors=True)
     return row
 
 
@@ -155,6 +157,8 @@ def plot(rows, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     done = [r for r in rows if r["status"] == "ok"]
+    if not done:
+        return
     series = sorted({(r["case"], r["dilatancy_deg"]) for r in done}, key=lambda k: (k[0], -k[1]))
     sizes = sorted({r["cell_size_m"] for r in done}, reverse=True)
     fig, axes = plt.subplots(len(sizes), len(series), figsize=(5.5 * len(series), 1.6 * len(sizes) + 0.6),
@@ -165,7 +169,9 @@ def plot(rows, path):
             match = [r for r in done if (r["case"], r["dilatancy_deg"]) == key and r["cell_size_m"] == h]
             if match:
                 x, y, eps = match[0]["_points"]
-                art = ax.scatter(1e3 * x, 1e3 * y, c=eps, s=0.3, vmin=0, vmax=4, cmap="viridis", rasterized=True)
+                # Markers of the points' size: (h / 1.25 mm)^2 times the finest grid's.
+                art = ax.scatter(1e3 * x, 1e3 * y, c=eps, s=0.3 * (h / 0.00125) ** 2, vmin=0, vmax=4,
+                                 cmap="viridis", rasterized=True)
                 ax.text(0.98, 0.85, f"h = {1e3 * h:g} mm, t = {match[0]['time_s']:g} s", transform=ax.transAxes,
                         ha="right", fontsize=8)
             if i == 0:
@@ -227,8 +233,8 @@ def main():
                 previous = row
     if args.png:
         plot(rows, args.png)
-    write_csv(args.csv, rows, ["case", "dilatancy_deg", "cell_size_m", "status", "time_s", "steps",
-                               "wall_s"] + METRICS)
+    write_csv(args.csv, rows, ["case", "dilatancy_deg", "cell_size_m", "extra", "status", "time_s",
+                               "steps", "wall_s"] + METRICS)
     print(f"\nwritten: {args.csv}")
 
 

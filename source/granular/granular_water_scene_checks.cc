@@ -111,7 +111,7 @@ namespace slidewave
                                + "/Grain density' = " + to_string(parameters.grain_density)
                                + " (an initial porosity in (0, 0.99])");
           // A rate-dependent friction's grains and liquid are this scene's.
-          const std::string path = material.path.empty() ? soil_section : material.path;
+          const std::string path = soil_section + "/Material '" + material.name + "'";
           if (material.friction_law == materials::FrictionLaw::inertial
               && !same(material.grain_density, parameters.grain_density, parameters.grain_density))
             throw InputError(path + "/Grain density",

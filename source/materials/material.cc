@@ -93,19 +93,21 @@ namespace slidewave
                         Double(),
                         "K in tan psi = K (n_c - n), >= 0 ('Dilatancy law = critical "
                         "state'; 4.09 for glass beads, Pailha and Pouliquen 2009).");
-      prm.declare_entry("Friction law",
-                        "constant",
-                        Selection("constant|inertial|viscous"),
-                        "'constant': the 'Friction angle' at every rate (rate-independent "
-                        "plasticity, whose flowing states have no length scale: a granular "
-                        "collapse does not converge under grid refinement). 'inertial' (mu(I), "
-                        "dry grains, Jop, Forterre and Pouliquen 2006) and 'viscous' (mu(J), "
-                        "grains in a liquid, Boyer, Guazzelli and Pouliquen 2011): tan phi = "
-                        "mu_s + (mu_2 - mu_s) X / (X + X_0) with mu_s = tan('Friction angle'), "
-                        "mu_2 = tan('Friction angle at high rate'), X the inertial number "
-                        "I = gamma_dot d sqrt(rho_s / p') or the viscous number J = eta_f "
-                        "gamma_dot / p' of the point's shear rate gamma_dot and mean effective "
-                        "pressure p', X_0 its reference value. 'drucker prager' only.");
+      prm.declare_entry(
+        "Friction law",
+        "constant",
+        Selection("constant|inertial|viscous"),
+        "'constant': the 'Friction angle' at every rate (rate-independent "
+        "plasticity, whose flowing states have no length scale). 'inertial' (mu(I), "
+        "dry grains, Jop, Forterre and Pouliquen 2006) and 'viscous' (mu(J), "
+        "grains in a liquid, Boyer, Guazzelli and Pouliquen 2011): tan phi = "
+        "mu_s + (mu_2 - mu_s) X / (X + X_0) with mu_s = tan('Friction angle'), "
+        "mu_2 = tan('Friction angle at high rate'), X the inertial number "
+        "I = gamma_dot d sqrt(rho_s / p') or the viscous number J = eta_f "
+        "gamma_dot / p' of the point's shear rate gamma_dot and mean effective "
+        "pressure p', X_0 its reference value; mu_s where p' <= 0. The cohesion "
+        "term stays the static one. 'drucker prager' with a 'Friction angle' "
+        "above 0 only.");
       prm.declare_entry("Friction angle at high rate",
                         "40",
                         Double(),
@@ -205,6 +207,12 @@ namespace slidewave
                              law,
                              "constant with 'Model = " + prm.get("Model")
                                + "' (a rate-dependent friction is a law of 'drucker prager')");
+          if (!(friction_angle > 0.))
+            throw InputError(path + "/Friction angle",
+                             prm.get("Friction angle"),
+                             "a number in (0, 90) with 'Friction law = " + law
+                               + "' (a friction that rises with the rate needs one at rest; "
+                                 "0 is the undrained clay's cylinder)");
           require_in_range(path + "/Friction angle at high rate",
                            high_rate_friction_angle,
                            friction_angle,
@@ -305,6 +313,8 @@ namespace slidewave
     Material::Material(const MaterialParameters &parameters)
       : parameters(parameters)
       , elastic(parameters.youngs_modulus, parameters.poisson_ratio)
+      , static_friction(std::tan(parameters.friction_angle * M_PI / 180.))
+      , high_rate_friction(std::tan(parameters.high_rate_friction_angle * M_PI / 180.))
     {
       if (parameters.model == MaterialModel::drucker_prager)
         plasticity.emplace(parameters.youngs_modulus,
@@ -348,19 +358,18 @@ namespace slidewave
     double
     Material::friction_tangent(const double shear_rate, const double pressure) const
     {
-      const double mu_s = std::tan(parameters.friction_angle * M_PI / 180.);
-      const double mu_2 = std::tan(parameters.high_rate_friction_angle * M_PI / 180.);
-      if (!(shear_rate > 0.))
-        return mu_s;
-      if (!(pressure > 0.))
-        return mu_2;
+      // No rate, or no pressure to carry a friction (at or beyond the apex, where the
+      // cohesion alone holds): the friction at rest.
+      if (!(shear_rate > 0.) || !(pressure > 0.))
+        return static_friction;
       const bool   inertial = parameters.friction_law == FrictionLaw::inertial;
       const double number   = inertial ? shear_rate * parameters.grain_diameter
                                          * std::sqrt(parameters.grain_density / pressure) :
                                          parameters.fluid_viscosity * shear_rate / pressure;
       const double reference
         = inertial ? parameters.reference_inertial_number : parameters.reference_viscous_number;
-      return mu_s + (mu_2 - mu_s) * number / (number + reference);
+      // X_0 / X: zero for an infinite X (a vanishing pressure), so the law stays finite.
+      return static_friction + (high_rate_friction - static_friction) / (1. + reference / number);
     }
 
 
@@ -374,13 +383,17 @@ namespace slidewave
                                     const double                         dt) const
     {
       Assert(parameters.model == MaterialModel::drucker_prager, dealii::ExcInternalError());
+      Assert(dt > 0., dealii::ExcMessage("a rate-dependent friction needs a positive step"));
       apply_jaumann_rotation(stress, spin_increment_xy);
       const double pressure
         = -dealii::trace(stress + elastic.stress_increment(strain_increment)) / 3.;
       const dealii::SymmetricTensor<2, 3> e          = dealii::deviator(strain_increment);
       const double                        shear_rate = std::sqrt(2. * (e * e)) / dt;
-      const Cone cone = DruckerPrager::cone_of_tangent(friction_tangent(shear_rate, pressure),
-                                                       parameters.cohesion);
+      // The rate raises the friction only; the cohesion term stays the static one, so that
+      // the strength at zero pressure (and the apex's tension) does not fall with the rate.
+      const Cone cone{
+        DruckerPrager::cone_of_tangent(friction_tangent(shear_rate, pressure), 0.).alpha_phi,
+        plasticity->k_c()};
       plasticity->update_stress(stress,
                                 strain_increment,
                                 equivalent_plastic_strain,

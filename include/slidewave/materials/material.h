@@ -173,7 +173,8 @@ namespace slidewave
        *
        * φ_s the 'Friction angle', φ_2 the 'Friction angle at high rate', X the inertial
        * number I = γ̇ d sqrt(ρ_s / p′) or the viscous number J = η_f γ̇ / p′ and X_0 its
-       * reference value. μ_s at rest, μ_2 where p′ <= 0 and the point shears (X infinite).
+       * reference value. μ_s at rest and where p′ <= 0 (at or beyond the apex, where the
+       * cohesion alone holds), μ_2 as X grows without bound.
        */
       double
       friction_tangent(double shear_rate, double pressure) const;
@@ -182,7 +183,8 @@ namespace slidewave
        * The update of update_stress() with the friction of the point's rate
        * (friction_tangent()): the shear rate γ̇ = sqrt(2 e:e)/Δt of the deviator e of
        * @p strain_increment over the step @p dt, the pressure of the elastic trial stress;
-       * the cone of that angle (and the material's cohesion) for this step's return, with
+       * the cone of that angle (α_φ; k_c stays the static one, so the strength at zero
+       * pressure does not fall as φ rises) for this step's return, with
        * @p alpha_psi (NaN: the material's own dilatancy). Drucker–Prager only.
        */
       void
@@ -253,6 +255,8 @@ namespace slidewave
       std::optional<DruckerPrager> plasticity;
       /** The range of a state-dependent α_ψ (dilatancy_coefficient()). */
       double lowest_alpha_psi = 0., highest_alpha_psi = 0.;
+      /** tan φ_s and tan φ_2 of a rate-dependent friction (friction_tangent()). */
+      double static_friction, high_rate_friction;
     };
   } // namespace materials
 } // namespace slidewave

@@ -22,6 +22,14 @@ namespace slidewave
       , sides(sides)
       , particle_weight(particle_weight)
     {
+      const double infinity = std::numeric_limits<double>::infinity();
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          closed_low[d]
+            = sides[2 * d] == grid::GridBoundary::free ? -infinity : grid.lower_left()[d];
+          closed_high[d]
+            = sides[2 * d + 1] == grid::GridBoundary::free ? infinity : grid.upper_right()[d];
+        }
     }
 
 
@@ -161,9 +169,8 @@ namespace slidewave
               out << "material point " << particle->get_id() << " left the domain at (" << x
                   << ") through the " << names[side] << " side, which is "
                   << (sides[side] == grid::GridBoundary::fixed ? "fixed" : "a roller")
-                  << " (points may leave only through a free side: the deformation in one "
-                     "step is larger than the point's distance to the boundary; lower 'Time "
-                     "step multiplier' or stiffen the material)";
+                  << " (points may leave only through a free side, and a closed one holds "
+                     "every point with a finite position: this one's position is not finite)";
               wall_crossing = out.str();
             }
         });

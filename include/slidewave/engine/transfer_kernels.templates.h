@@ -346,8 +346,9 @@ namespace slidewave
             const double f       = Model::rests_with_its_nodes && !grid_moves ? 0. : flip;
             p[Model::velocity_x] = f * (p[Model::velocity_x] + dv[0]) + (1. - f) * v_new[0];
             p[Model::velocity_y] = f * (p[Model::velocity_y] + dv[1]) + (1. - f) * v_new[1];
-            positions[particle.get_local_index()]
-              = particle.get_location() + dt * dealii::Tensor<1, 2>({v_new[0], v_new[1]});
+            dealii::Point<2> &x  = positions[particle.get_local_index()];
+            x = particle.get_location() + dt * dealii::Tensor<1, 2>({v_new[0], v_new[1]});
+            cloud.hold_at_closed_sides(x, p[Model::velocity_x], p[Model::velocity_y]);
             if (with_stresses)
               store_gradient(k++, L);
           }

@@ -1,6 +1,7 @@
 #ifndef slidewave_particles_point_cloud_h
 #define slidewave_particles_point_cloud_h
 
+#include <algorithm>
 #include <array>
 #include <deal.II/base/point.h>
 #include <deal.II/particles/particle_handler.h>
@@ -214,10 +215,38 @@ namespace slidewave
         return properties;
       }
 
+      /**
+       * Holds a point that the step carries across a closed side (fixed or roller) of the
+       * grid: @p x, its new position, is put back on that side and the point's velocity
+       * (@p v_x, @p v_y) loses its outward normal component. GIMP
+       * gives a point within half its size of a wall the velocity of interior nodes (its
+       * domain reaches past the wall's nodes, where no node holds it back), so a point
+       * resting on a floor creeps through it by round-off amounts; only free sides let
+       * points out. Inline: four comparisons per point of the gather.
+       */
+      void
+      hold_at_closed_sides(dealii::Point<2> &x, double &v_x, double &v_y) const
+      {
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            double &v = d == 0 ? v_x : v_y;
+            if (x[d] < closed_low[d])
+              {
+                x[d] = closed_low[d];
+                v    = std::max(v, 0.);
+              }
+            else if (x[d] > closed_high[d])
+              {
+                x[d] = closed_high[d];
+                v    = std::min(v, 0.);
+              }
+          }
+      }
+
       /** Mass lost by this rank through the free sides. */
       double lost_mass = 0.;
-      /** The first point of this rank that left through a side that is not free: points may
-       *  only leave through free sides, one crossing a wall is a failed step. */
+      /** The first point of this rank lost through a side that is not free (only a point
+       *  whose position is not finite gets past hold_at_closed_sides()): a failed step. */
       std::string wall_crossing;
 
     private:
@@ -225,8 +254,10 @@ namespace slidewave
       const PropertyLayout                   &properties;
       const unsigned int                      mass;
       const std::array<grid::GridBoundary, 4> sides;
-      const unsigned int                      particle_weight;
-      ParticleHandler                         handler;
+      /** The closed sides' coordinates (x, y), infinite where a side is free. */
+      dealii::Point<2>   closed_low, closed_high;
+      const unsigned int particle_weight;
+      ParticleHandler    handler;
       /** Set-up, until create(): the regions and the points per direction to come. */
       const std::vector<particles::MaterialRegion> *expected_regions       = nullptr;
       unsigned int                                  expected_per_direction = 0;

@@ -13,8 +13,7 @@ namespace slidewave
   namespace fluid
   {
     VelocitySubscales::VelocitySubscales(grid::BackgroundGrid &grid, const unsigned int degree)
-      : grid(grid)
-      , field(grid,
+      : field(grid,
               dealii::FESystem<2>(dealii::FE_DGQArbitraryNodes<2>(dealii::QGauss<1>(degree + 1)),
                                   2),
               1)

@@ -41,29 +41,30 @@ namespace slidewave
                         "its nodes. 'Darcy': C = n^2 mu / k, linear in the relative velocity "
                         "(the limit of slow seepage, Re_p << 10).");
       prm.declare_entry("Drag coupling",
-                        "semi-implicit",
-                        Selection("semi-implicit|semi-implicit projected|explicit"),
+                        "semi-implicit projected",
+                        Selection("semi-implicit projected|semi-implicit|explicit"),
                         "How the water's pressure and drag of the new step act on the "
-                        "skeleton. 'semi-implicit': the skeleton's nodal velocity of the new "
-                        "step, with the drag and the pressure gradient implicit, is "
-                        "eliminated from the water's equations (the drag against the "
-                        "skeleton's predicted velocity, the Darcy flow through the grains as "
-                        "a pressure diffusion), then the skeleton's nodes take the drag "
-                        "implicitly, lumped: v_I = (m_I v_I^trial + dt integral of N_I C u) / "
-                        "(m_I + dt integral of N_I C). Stable at any ratio of the step to "
-                        "rho^s (1 - n) k / mu, so low permeabilities and fine grains do not "
-                        "limit the step; where the drag is stiff it smooths the grains' "
-                        "velocity once per step, so a flow's results depend on the step "
-                        "(doc/granular-water.md). 'semi-implicit projected': the same water; "
-                        "the skeleton's nodes take the projection, on a weighted mass matrix "
-                        "(conjugate gradients), of the increment the water's elimination "
-                        "assumed: converged in the step where the drag is stiff but not "
-                        "locked (k = 1e-8 m^2 in the loose collapse); not the default: at "
-                        "the mass's edge single points dilate over long runs. 'explicit': "
-                        "the water sees the skeleton's velocity of the old step and the "
-                        "skeleton the water's force of the new one (paper 002, §3.5); stable "
-                        "only for steps below about rho^s (1 - n) k / mu, which then limits "
-                        "the step.");
+                        "skeleton. 'semi-implicit projected' (the default): the skeleton's "
+                        "nodal velocity of the new step, with the drag and the pressure "
+                        "gradient implicit, is eliminated from the water's equations (the "
+                        "drag against the skeleton's predicted velocity, the Darcy flow "
+                        "through the grains as a pressure diffusion); the skeleton's nodes "
+                        "then take the projection, on a weighted mass matrix (conjugate "
+                        "gradients), of the increment that elimination assumed. Stable at "
+                        "any ratio of the step to rho^s (1 - n) k / mu, so low "
+                        "permeabilities and fine grains do not limit the step, and "
+                        "converged in the step from the drained to the locked regime "
+                        "(doc/granular-water.md: the undrained vortex, Terzaghi). "
+                        "'semi-implicit': the same water; the skeleton's nodes take the "
+                        "drag implicitly, lumped: v_I = (m_I v_I^trial + dt integral of N_I "
+                        "C u) / (m_I + dt integral of N_I C). Where the drag is stiff this "
+                        "smooths the grains' velocity once per step, a damping that grows "
+                        "as the step shrinks (the undrained vortex loses its energy at a "
+                        "rate that rises as the step falls); needed with 'Sub-cycling'. "
+                        "'explicit': the water sees the skeleton's velocity of the old step "
+                        "and the skeleton the water's force of the new one (paper 002, "
+                        "§3.5); stable only for steps below about rho^s (1 - n) k / mu, "
+                        "which then limits the step.");
       prm.declare_entry("Top load",
                         "0",
                         Double(0.),
@@ -80,7 +81,8 @@ namespace slidewave
                         "speed, not the coupling, limits the step (permeable sands). The "
                         "water sees the skeleton of the start of its step; the skeleton "
                         "feels the water's new pressure and velocity with its own current "
-                        "velocity in the drag at every sub-step. false: one step each.");
+                        "velocity in the drag at every sub-step. With 'Drag coupling' = "
+                        "semi-implicit or explicit. false: one step each.");
       prm.enter_subsection("Verification");
       {
         prm.declare_entry("Exact solution",

@@ -101,7 +101,8 @@ namespace slidewave
         "plasticity, whose flowing states have no length scale). 'inertial' (mu(I), "
         "dry grains, Jop, Forterre and Pouliquen 2006) and 'viscous' (mu(J), "
         "grains in a liquid, Boyer, Guazzelli and Pouliquen 2011): tan phi = "
-        "mu_s + (mu_2 - mu_s) X / (X + X_0) with mu_s = tan('Friction angle'), "
+        "mu_s + (mu_2 - mu_s) / (1 + X_0 / X) (that is, X / (X + X_0), finite as X grows without "
+        "bound) with mu_s = tan('Friction angle'), "
         "mu_2 = tan('Friction angle at high rate'), X the inertial number "
         "I = gamma_dot d sqrt(rho_s / p') or the viscous number J = eta_f "
         "gamma_dot / p' of the point's shear rate gamma_dot and mean effective "
@@ -385,8 +386,10 @@ namespace slidewave
       Assert(parameters.model == MaterialModel::drucker_prager, dealii::ExcInternalError());
       Assert(dt > 0., dealii::ExcMessage("a rate-dependent friction needs a positive step"));
       apply_jaumann_rotation(stress, spin_increment_xy);
+      // The trial stress's pressure: its trace needs only the bulk modulus (the return
+      // builds the trial stress itself).
       const double pressure
-        = -dealii::trace(stress + elastic.stress_increment(strain_increment)) / 3.;
+        = -dealii::trace(stress) / 3. - elastic.bulk_modulus() * dealii::trace(strain_increment);
       const dealii::SymmetricTensor<2, 3> e          = dealii::deviator(strain_increment);
       const double                        shear_rate = std::sqrt(2. * (e * e)) / dt;
       // The rate raises the friction only; the cohesion term stays the static one, so that

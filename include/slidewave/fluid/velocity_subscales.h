@@ -63,9 +63,7 @@ namespace slidewave
       void
       read(const Cell &cell, std::vector<dealii::Tensor<1, 2>> &values) const
       {
-        read_cell(dealii::DoFHandler<2>::active_cell_iterator(
-                    &grid.triangulation(), cell->level(), cell->index(), &field.dof_handler()),
-                  values);
+        read_cell(field.cell_on(cell), values);
       }
 
       /** Sizes the store of the terms for @p n_cells owned cells of the assembly. */
@@ -112,7 +110,6 @@ namespace slidewave
       read_cell(const dealii::DoFHandler<2>::active_cell_iterator &cell,
                 std::vector<dealii::Tensor<1, 2>>                 &values) const;
 
-      grid::BackgroundGrid    &grid;
       grid::FiniteElementField field;
       unsigned int             degree, n_q;
       /** Each of the field's cell dofs: its component and its quadrature point. */

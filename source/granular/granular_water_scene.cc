@@ -509,7 +509,9 @@ namespace slidewave
           << fluid_parameters.upper_right << ", cell size " << fluid_parameters.cell_size
           << "; grains " << parameters.grain_density << "; drag "
           << (parameters.forchheimer ? "Forchheimer" : "Darcy") << " coupled "
-          << (parameters.implicit_drag ? "semi-implicitly" : "explicitly")
+          << (!parameters.implicit_drag ? "explicitly" :
+              parameters.projected_drag ? "semi-implicitly, projected" :
+                                          "semi-implicitly, lumped")
           << (fluid_parameters.dynamic_subscales ? "; dynamic subscales" : "") << "; materials";
       // (a material's model decides its points' properties: Hencky's carry b^e)
       for (const auto &material : soil_parameters.materials)

@@ -98,8 +98,10 @@ namespace slidewave
       if (parameters.projected_drag && parameters.sub_cycling)
         throw InputError(section + "/Drag coupling",
                          "semi-implicit projected",
-                         "semi-implicit or explicit with 'Sub-cycling = true' (the projected "
-                         "grains take the water's step, one skeleton step per water step)");
+                         "'semi-implicit' (the lumped coupling) or 'explicit' with 'Sub-cycling "
+                         "= true': set one of them ('semi-implicit projected', the default, "
+                         "takes the water's step as the grains', one skeleton step per water "
+                         "step)");
       // The grains are denser than the skeleton: 0 < n_0 <= 0.99.
       for (const auto &material : soil_parameters.materials)
         {

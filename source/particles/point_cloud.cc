@@ -20,6 +20,7 @@ namespace slidewave
       , properties(layout)
       , mass(mass_index)
       , sides(sides)
+      , hold_depth(grid.cell_size())
       , particle_weight(particle_weight)
     {
       const double infinity = std::numeric_limits<double>::infinity();
@@ -157,20 +158,32 @@ namespace slidewave
         [this](const dealii::Particles::ParticleIterator<2> &particle,
                const typename dealii::Triangulation<2>::active_cell_iterator &) {
           lost_mass += particle->get_properties()[mass];
-          const dealii::Point<2> x    = particle->get_location();
-          const unsigned int     side = x[0] < grid.lower_left()[0]  ? 0 :
-                                        x[0] > grid.upper_right()[0] ? 1 :
-                                        x[1] < grid.lower_left()[1]  ? 2 :
-                                                                       3;
-          if (sides[side] != grid::GridBoundary::free && wall_crossing.empty())
+          const dealii::Point<2> x = particle->get_location();
+          if (!wall_crossing.empty())
+            return;
+          std::ostringstream out;
+          if (!std::isfinite(x[0]) || !std::isfinite(x[1]))
+            {
+              // (no side: every comparison with a NaN is false)
+              out << "material point " << particle->get_id() << " left the domain at (" << x
+                  << "), a position that is not finite";
+              wall_crossing = out.str();
+              return;
+            }
+          const unsigned int side = x[0] < grid.lower_left()[0]  ? 0 :
+                                    x[0] > grid.upper_right()[0] ? 1 :
+                                    x[1] < grid.lower_left()[1]  ? 2 :
+                                                                   3;
+          if (sides[side] != grid::GridBoundary::free)
             {
               static const char *const names[4] = {"left", "right", "bottom", "top"};
-              std::ostringstream       out;
               out << "material point " << particle->get_id() << " left the domain at (" << x
                   << ") through the " << names[side] << " side, which is "
                   << (sides[side] == grid::GridBoundary::fixed ? "fixed" : "a roller")
-                  << " (points may leave only through a free side, and a closed one holds "
-                     "every point with a finite position: this one's position is not finite)";
+                  << ", more than a cell past it (points may leave only through a free side; "
+                     "a closed one holds a point that crosses it by less: the step carried "
+                     "this one farther than a stable run can; lower 'Time step multiplier' "
+                     "or stiffen the material)";
               wall_crossing = out.str();
             }
         });

@@ -293,16 +293,17 @@ namespace slidewave
                   const dealii::Tensor<2, 2> *L,
                   double                      dt) const;
 
-      /** Every step: the walls and the splitting (finish_point). */
+      /** With 'Split stretch' > 0: the splitting (finish_point). The walls hold the
+       *  columns in the engine's gather (particles::PointCloud::hold_at_closed_sides). */
       bool
       finishes_points() const
       {
-        return true;
+        return split_width > 0.;
       }
 
       /**
        * The end of a column's step (the engine's hook, before the columns move to their
-       * cells): keep_inside(), then split_point() when 'Split stretch' > 0.
+       * cells): split_point() when 'Split stretch' > 0.
        */
       template <typename Properties>
       bool
@@ -311,32 +312,7 @@ namespace slidewave
                    double           *child,
                    dealii::Point<2> &child_x) const
       {
-        keep_inside(x);
         return split_width > 0. && split_point(p, x, child, child_x);
-      }
-
-      /**
-       * A column's centre stops at a side that is not open. With GIMP a column whose
-       * domain touches a wall still takes the velocity of the nodes inside, which may carry
-       * its centre past the wall in one step (most easily with FLIP, which keeps the
-       * columns' own velocities); the wall's normal velocity is zero, so the centre stays
-       * on it. Only a centre less than a cell past the wall: one farther out has left by
-       * more than a step of a stable run can carry it, and the run stops on it (the point
-       * cloud's check of the sides).
-       */
-      void
-      keep_inside(dealii::Point<2> &x) const
-      {
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            const double lower = prm.lower_left[d], upper = prm.upper_right[d];
-            if (prm.sides[2 * d] != grid::GridBoundary::free && x[d] < lower
-                && x[d] > lower - prm.cell_size)
-              x[d] = lower;
-            if (prm.sides[2 * d + 1] != grid::GridBoundary::free && x[d] > upper
-                && x[d] < upper + prm.cell_size)
-              x[d] = upper;
-          }
       }
 
       template <typename Properties>

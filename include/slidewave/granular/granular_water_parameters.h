@@ -57,7 +57,7 @@ namespace slidewave
       /** The grains take the projection of the increment the water's elimination assumed
        *  (DragProjection, 'semi-implicit projected'; implies implicit_drag); false: the
        *  lumped nodal drag W_I ('semi-implicit') or the explicit coupling. */
-      bool projected_drag = false;
+      bool projected_drag = true;
       /** A pressure [Pa] on the top row of points (Terzaghi's load; 0: none). */
       double top_load = 0.;
       /** Several skeleton steps inside one water step (the water's step limited by its

@@ -216,13 +216,16 @@ namespace slidewave
       }
 
       /**
-       * Holds a point that the step carries across a closed side (fixed or roller) of the
-       * grid: @p x, its new position, is put back on that side and the point's velocity
-       * (@p v_x, @p v_y) loses its outward normal component. GIMP
-       * gives a point within half its size of a wall the velocity of interior nodes (its
-       * domain reaches past the wall's nodes, where no node holds it back), so a point
-       * resting on a floor creeps through it by round-off amounts; only free sides let
-       * points out. Inline: four comparisons per point of the gather.
+       * Holds a point that the step carries less than a cell across a closed side (fixed
+       * or roller) of the grid: @p x, its new position, is put back on that side and the
+       * point's velocity (@p v_x, @p v_y) loses its outward normal component. GIMP gives a
+       * point within half its size of a wall the velocity of interior nodes (its domain
+       * reaches past the wall's nodes, where no node holds it back), so a point resting on
+       * a floor creeps through it by round-off amounts, and a column's centre sliding
+       * along a wall crosses it. A point farther out has gone farther than a step of a
+       * stable run carries it: it is not held, leaves the grid and stops the run
+       * (wall_crossing). Only free sides let points out. Inline: four comparisons per
+       * point of the gather.
        */
       void
       hold_at_closed_sides(dealii::Point<2> &x, double &v_x, double &v_y) const
@@ -230,12 +233,12 @@ namespace slidewave
         for (unsigned int d = 0; d < 2; ++d)
           {
             double &v = d == 0 ? v_x : v_y;
-            if (x[d] < closed_low[d])
+            if (x[d] < closed_low[d] && x[d] > closed_low[d] - hold_depth)
               {
                 x[d] = closed_low[d];
                 v    = std::max(v, 0.);
               }
-            else if (x[d] > closed_high[d])
+            else if (x[d] > closed_high[d] && x[d] < closed_high[d] + hold_depth)
               {
                 x[d] = closed_high[d];
                 v    = std::min(v, 0.);
@@ -245,8 +248,8 @@ namespace slidewave
 
       /** Mass lost by this rank through the free sides. */
       double lost_mass = 0.;
-      /** The first point of this rank lost through a side that is not free (only a point
-       *  whose position is not finite gets past hold_at_closed_sides()): a failed step. */
+      /** The first point of this rank lost through a side that is not free (more than a
+       *  cell past it, or at a position that is not finite): a failed step. */
       std::string wall_crossing;
 
     private:
@@ -254,8 +257,10 @@ namespace slidewave
       const PropertyLayout                   &properties;
       const unsigned int                      mass;
       const std::array<grid::GridBoundary, 4> sides;
-      /** The closed sides' coordinates (x, y), infinite where a side is free. */
+      /** The closed sides' coordinates (x, y), infinite where a side is free, and how far
+       *  past them a point is held (the coarse cell size). */
       dealii::Point<2>   closed_low, closed_high;
+      double             hold_depth;
       const unsigned int particle_weight;
       ParticleHandler    handler;
       /** Set-up, until create(): the regions and the points per direction to come. */

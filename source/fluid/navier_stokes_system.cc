@@ -203,7 +203,12 @@ namespace slidewave
             const double true_residual = matrix.residual(residual, solution, rhs);
             if (!(true_residual <= 1e-8 * rhs.l2_norm()))
               throw;
-            return SolveReport{control.last_step(), true_residual};
+            // AztecOO leaves the control unchecked when it stops so: the iterations it took
+            // are unknown (the control's count is numbers::invalid_unsigned_int), and 0 is
+            // reported, as for a guess already at the target.
+            const unsigned int steps = control.last_step();
+            return SolveReport{steps == dealii::numbers::invalid_unsigned_int ? 0u : steps,
+                               true_residual};
           }
         return SolveReport{control.last_step(), control.last_value()};
       };

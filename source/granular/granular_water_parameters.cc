@@ -32,6 +32,21 @@ namespace slidewave
                         "1e-3",
                         Double(0.),
                         "The grains' mean diameter [m] of the Kozeny-Carman law.");
+      prm.declare_entry("Suspension porosity",
+                        "0.6",
+                        Double(0., 1.),
+                        "n_s: a point whose porosity exceeds it has its grains out of "
+                        "contact, a suspension in the water: it carries no effective stress "
+                        "and has no stiffness; compacted below n_s again, it takes stress "
+                        "from zero (the granular stress vanishes below the loosest packing, "
+                        "as in Baumgarten and Kamrin's mixture model, J. Fluid Mech. 2019). "
+                        "The step takes every point's P-wave speed at its density but not "
+                        "below the density of contact (1 - n_s) rho^s, so a suspended point "
+                        "keeps the step of the contact it may make within it. 0.6 is a "
+                        "solid fraction of 0.4, looser than any random packing of grains "
+                        "(spheres: 0.55); raise it for a skeleton that holds at a larger "
+                        "porosity (soft clays). A material looser than n_s starts as a "
+                        "suspension; 1: the grains never lose contact.");
       prm.declare_entry("Drag law",
                         "Forchheimer",
                         Selection("Darcy|Forchheimer"),
@@ -89,7 +104,7 @@ namespace slidewave
       {
         prm.declare_entry("Exact solution",
                           "none",
-                          Selection("none|Terzaghi|at rest|seepage"),
+                          Selection("none|Terzaghi|at rest|seepage|settling"),
                           "'Terzaghi': one-dimensional consolidation of a column of height "
                           "'Column height' with a drained top and an impervious base under "
                           "'Top load' (Material 1 linear elastic, no gravity): the pore "
@@ -110,7 +125,14 @@ namespace slidewave
                           "the pressure gradient in the layer's middle half (nodes' least "
                           "squares) against the steady dp/dy = C(n_0, k, U / n_0) U / n_0^2 "
                           "of the drag law (Darcy's mu U / k plus the Forchheimer term), "
-                          "relative to it.");
+                          "relative to it. 'settling': a uniform suspension (Material 1 "
+                          "looser than 'Suspension porosity', Darcy drag) from the grid's "
+                          "bottom to 'Column height' H in a closed column of water: before "
+                          "the bed reaches it, the fall of the row of points started nearest "
+                          "below 0.7 H against v_inf (t - tau (1 - exp(-t / tau))), v_inf = "
+                          "(1 - n_0) (rho^s - rho^w) g k / mu; after, the bed's height (the "
+                          "points' volume over the width) against H (1 - n_0) / (1 - n_s); "
+                          "relative to the exact value.");
         prm.declare_entry("Column height", "1", Double(0.), "H of the column [m].");
         prm.declare_entry("Time factors",
                           "0.05, 0.1, 0.2, 0.5, 1",
@@ -133,14 +155,19 @@ namespace slidewave
     GranularWaterParameters::parse_parameters(dealii::ParameterHandler &prm,
                                               const std::string        &path)
     {
-      grain_density    = prm.get_double("Grain density");
-      permeability_law = prm.get("Permeability law") == "constant" ? PermeabilityLaw::constant :
-                                                                     PermeabilityLaw::kozeny_carman;
-      permeability     = prm.get_double("Permeability");
-      d50              = prm.get_double("D50");
-      top_load         = prm.get_double("Top load");
-      forchheimer      = prm.get("Drag law") == "Forchheimer";
-      sub_cycling      = prm.get_bool("Sub-cycling");
+      grain_density       = prm.get_double("Grain density");
+      permeability_law    = prm.get("Permeability law") == "constant" ? PermeabilityLaw::constant :
+                                                                        PermeabilityLaw::kozeny_carman;
+      permeability        = prm.get_double("Permeability");
+      d50                 = prm.get_double("D50");
+      top_load            = prm.get_double("Top load");
+      suspension_porosity = prm.get_double("Suspension porosity");
+      if (!(suspension_porosity > 0.))
+        throw InputError(path + "/Suspension porosity",
+                         to_string(suspension_porosity),
+                         "a porosity in (0, 1] (1: the grains never lose contact)");
+      forchheimer                = prm.get("Drag law") == "Forchheimer";
+      sub_cycling                = prm.get_bool("Sub-cycling");
       const std::string coupling = prm.get("Drag coupling");
       implicit_drag              = coupling != "explicit";
       projected_drag             = coupling == "semi-implicit projected";
@@ -156,6 +183,7 @@ namespace slidewave
         exact_solution          = exact == "Terzaghi" ? GranularExactSolution::terzaghi :
                                   exact == "at rest"  ? GranularExactSolution::at_rest :
                                   exact == "seepage"  ? GranularExactSolution::seepage :
+                                  exact == "settling" ? GranularExactSolution::settling :
                                                         GranularExactSolution::none;
         column_height           = prm.get_double("Column height");
         tolerance               = prm.get_double("Tolerance");

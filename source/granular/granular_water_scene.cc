@@ -493,9 +493,9 @@ namespace slidewave
 
 
     bool
-    GranularWaterScene::finish(const StepInfo &)
+    GranularWaterScene::finish(const StepInfo &info)
     {
-      return verification.finish(fluid_solver->flow_field(), engine->point_cloud());
+      return verification.finish(fluid_solver->flow_field(), engine->point_cloud(), info.time);
     }
 
 
@@ -512,6 +512,7 @@ namespace slidewave
           << (!parameters.implicit_drag ? "explicitly" :
               parameters.projected_drag ? "semi-implicitly, projected" :
                                           "semi-implicitly, lumped")
+          << "; suspension above n = " << parameters.suspension_porosity
           << (fluid_parameters.dynamic_subscales ? "; dynamic subscales" : "") << "; materials";
       // (a material's model decides its points' properties: Hencky's carry b^e)
       for (const auto &material : soil_parameters.materials)

@@ -167,6 +167,26 @@ namespace slidewave
                                    + " m) with 'Exact solution = seepage' (its middle half "
                                      "must hold two rows of nodes for the gradient)");
             }
+          if (parameters.exact_solution == GranularExactSolution::settling)
+            {
+              const double n0
+                = 1. - soil_parameters.materials[0].density / parameters.grain_density;
+              if (!(n0 > parameters.suspension_porosity))
+                throw InputError(soil_section + "/Material '" + soil_parameters.materials[0].name
+                                   + "'/Density",
+                                 to_string(soil_parameters.materials[0].density),
+                                 "an initial porosity 1 - Density / '" + section
+                                   + "/Grain density' = " + to_string(n0) + " above '" + section
+                                   + "/Suspension porosity' = "
+                                   + to_string(parameters.suspension_porosity)
+                                   + " with 'Exact solution = settling' (the grains start "
+                                     "out of contact)");
+              if (parameters.forchheimer)
+                throw InputError(section + "/Drag law",
+                                 "Forchheimer",
+                                 "Darcy with 'Exact solution = settling' (its fall is "
+                                 "exponential with the linear drag)");
+            }
           if (parameters.exact_solution == GranularExactSolution::terzaghi
               && parameters.permeability_law != PermeabilityLaw::constant)
             throw InputError(section + "/Permeability law",

@@ -26,6 +26,22 @@ namespace slidewave
 
 
 
+    void
+    PorousSkeletonModel::update_cell(const ParticleRange        &particles_in_cell,
+                                     const dealii::Tensor<2, 2> *L,
+                                     const double                dt) const
+    {
+      soil::SoilModel::update_cell(particles_in_cell, L, dt);
+      for (auto &particle : particles_in_cell)
+        {
+          auto p = particle.get_properties();
+          if (suspended(p))
+            release_stress(p);
+        }
+    }
+
+
+
     double
     PorousSkeletonModel::coupling_time_scale(const particles::PointCloud &cloud) const
     {

@@ -97,6 +97,18 @@ namespace slidewave
 
 
     void
+    SoilModel::release_stress(dealii::ArrayView<double> p) const
+    {
+      for (const unsigned int i :
+           {property::stress_xx, property::stress_yy, property::stress_xy, property::stress_zz})
+        p[i] = 0.;
+      if (finite_strain)
+        finite_strain->set_from_stress(p);
+    }
+
+
+
+    void
     SoilModel::update_small_strain(dealii::ArrayView<double>   p,
                                    const dealii::Tensor<2, 2> &L,
                                    const double                dt,

@@ -32,7 +32,14 @@ namespace slidewave
      * - seepage: at the end, the pressure gradient of the nodes in the middle half of the
      *   layer (least squares, with the odd-even mode between rows of nodes fitted apart)
      *   against the steady gradient C U / n_0^2 of the drag law
-     *   (DragLaw) at the top inflow's superficial velocity U, relative to it.
+     *   (DragLaw) at the top inflow's superficial velocity U, relative to it;
+     * - settling: a uniform suspension (porosity n_0 above 'Suspension porosity' n_s, Darcy
+     *   drag) from the grid's bottom to 'Column height' H in a closed column of water falls
+     *   at v(t) = v_inf (1 - exp(-t / tau)) while the bed it forms at n_s rises from the
+     *   floor; at the end, before the bed reaches them, the displacement of the row of
+     *   points started nearest below 0.7 H against v_inf (t - tau (1 - exp(-t / tau))),
+     *   relative to it; after, the height of the bed, the volume of the points over the
+     *   column's width, against H (1 - n_0) / (1 - n_s), relative to it.
      *
      * Its state (the profiles so far) goes into the checkpoints.
      */
@@ -58,10 +65,12 @@ namespace slidewave
                      double                          time,
                      const grid::FiniteElementField &flow) const;
 
-      /** Prints the comparison (rank 0); returns whether it is within 'Tolerance'
-       *  (collective). */
+      /** Prints the comparison at @p time (rank 0); returns whether it is within
+       *  'Tolerance' (collective). */
       bool
-      finish(const grid::FiniteElementField &flow, const particles::PointCloud &cloud) const;
+      finish(const grid::FiniteElementField &flow,
+             const particles::PointCloud    &cloud,
+             double                          time) const;
 
       /** The files that grow during the run (for the checkpoints). */
       std::vector<std::string>
@@ -100,6 +109,11 @@ namespace slidewave
        *  nodes (collective). */
       std::array<double, 4>
       seepage_gradients(const grid::FiniteElementField &flow) const;
+
+      /** Settling: the measured and the exact value (a row's fall before the bed reaches
+       *  it, the bed's height after) and whether the bed reached it (collective). */
+      std::array<double, 3>
+      settling_values(const particles::PointCloud &cloud, double time) const;
 
       const SceneParameters               &scene;
       const soil::MaterialPointParameters &soil_parameters;

@@ -22,7 +22,8 @@ namespace slidewave
       none,
       terzaghi, ///< one-dimensional consolidation under a top load (paper 002, §4.1)
       at_rest,  ///< a saturated column settled under gravity: hydrostatic and geostatic
-      seepage   ///< steady flow down through a layer at rest: Darcy-Forchheimer's gradient
+      seepage,  ///< steady flow down through a layer at rest: Darcy-Forchheimer's gradient
+      settling  ///< a uniform suspension settling in a closed column: its fall and its bed
     };
 
     /**
@@ -58,6 +59,9 @@ namespace slidewave
        *  (DragProjection, 'semi-implicit projected'; implies implicit_drag); false: the
        *  lumped nodal drag W_I ('semi-implicit') or the explicit coupling. */
       bool projected_drag = true;
+      /** n_s: a point of larger porosity has its grains out of contact, a suspension
+       *  without effective stress or stiffness (PorousSkeletonModel::suspended). */
+      double suspension_porosity = 0.6;
       /** A pressure [Pa] on the top row of points (Terzaghi's load; 0: none). */
       double top_load = 0.;
       /** Several skeleton steps inside one water step (the water's step limited by its

@@ -132,6 +132,12 @@ namespace slidewave
                   const dealii::Tensor<2, 2> *L,
                   double                      dt) const;
 
+      /** A point whose grains have lost contact (granular::PorousSkeletonModel): no
+       *  stress, and a finite-strain point's elastic strain b^e reset to the identity
+       *  with it, so that it takes stress from zero when its grains touch again. */
+      void
+      release_stress(dealii::ArrayView<double> p) const;
+
       /** The P-wave speed sqrt((K + 4G/3) / rho) of the point's material (Eq. 22). */
       template <typename Properties>
       double

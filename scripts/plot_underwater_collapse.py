@@ -48,7 +48,7 @@ def main():
     parser.add_argument("--out", required=True)
     parser.add_argument("--times", type=float, nargs="+", default=[0.25, 1.0, 2.0])
     parser.add_argument("--labels", nargs="+",
-                        default=["loose (n0 = 0.45, psi = 0)", "dense (n0 = 0.40, psi = 5 deg)"])
+                        default=["loose (n0 = 0.45)", "dense (n0 = 0.40)"])
     parser.add_argument("--xlim", type=float, nargs=2, default=[0, 0.2])
     parser.add_argument("--ylim", type=float, nargs=2, default=[0, 0.1])
     parser.add_argument("--vmax", type=float, default=0.05, help="top of the speed colour scale [m/s]")

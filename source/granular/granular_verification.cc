@@ -358,6 +358,11 @@ namespace slidewave
       dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 3),
                                   MPI_COMM_WORLD,
                                   dealii::ArrayView<double>(sums, 3));
+      if (!(sums[1] > 0.))
+        throw InputError("Granular water/Verification/Column height",
+                         to_string(H),
+                         "the height of the suspension, with points below 0.7 of it ('Exact "
+                         "solution = settling' follows the row that started highest there)");
       const double width = fluid_parameters.upper_right[0] - fluid_parameters.lower_left[0];
       if (met)
         return {{sums[2] / width, H * (1. - n0) / (1. - ns), 1.}};

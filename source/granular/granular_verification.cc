@@ -364,8 +364,11 @@ namespace slidewave
                          "the height of the suspension, with points below 0.7 of it ('Exact "
                          "solution = settling' follows the row that started highest there)");
       const double width = fluid_parameters.upper_right[0] - fluid_parameters.lower_left[0];
+      // Once the bed reaches the row: the points' volume over the width, the bed at n_s
+      // under what is left of the suspension at n_0, H - fall, until the top meets the bed
+      // (fall = d*) and the bed alone is left, H (1 - n_0) / (1 - n_s).
       if (met)
-        return {{sums[2] / width, H * (1. - n0) / (1. - ns), 1.}};
+        return {{sums[2] / width, std::max(H - fall, H * (1. - n0) / (1. - ns)), 1.}};
       return {{sums[0] / sums[1], fall, 0.}};
     }
 
@@ -433,7 +436,7 @@ namespace slidewave
           if (is_root())
             std::printf(
               s[2] > 0. ?
-                "Settling suspension: the bed's height %.6e m against "
+                "Settling suspension: the points' height (volume over width) %.6e m against "
                 "%.6e: relative error %.3e" :
                 "Settling suspension: the fall of the row started at 0.7 H %.6e m against "
                 "%.6e: relative error %.3e",

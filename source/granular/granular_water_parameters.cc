@@ -130,9 +130,10 @@ namespace slidewave
                           "bottom to 'Column height' H in a closed column of water: before "
                           "the bed reaches it, the fall of the row of points started nearest "
                           "below 0.7 H against v_inf (t - tau (1 - exp(-t / tau))), v_inf = "
-                          "(1 - n_0) (rho^s - rho^w) g k / mu; after, the bed's height (the "
-                          "points' volume over the width) against H (1 - n_0) / (1 - n_s); "
-                          "relative to the exact value.");
+                          "(1 - n_0) (rho^s - rho^w) g k / mu; after, the points' volume over "
+                          "the width against max(H - fall, H (1 - n_0) / (1 - n_s)) (the bed "
+                          "under the rest of the suspension, then the bed alone); relative "
+                          "to the exact value.");
         prm.declare_entry("Column height", "1", Double(0.), "H of the column [m].");
         prm.declare_entry("Time factors",
                           "0.05, 0.1, 0.2, 0.5, 1",

@@ -38,8 +38,9 @@ namespace slidewave
      *   at v(t) = v_inf (1 - exp(-t / tau)) while the bed it forms at n_s rises from the
      *   floor; at the end, before the bed reaches them, the displacement of the row of
      *   points started nearest below 0.7 H against v_inf (t - tau (1 - exp(-t / tau))),
-     *   relative to it; after, the height of the bed, the volume of the points over the
-     *   column's width, against H (1 - n_0) / (1 - n_s), relative to it.
+     *   relative to it; after, the points' volume over the column's width against
+     *   max(H - fall, H (1 - n_0) / (1 - n_s)) (the bed under what is left of the
+     *   suspension, then the bed alone), relative to it.
      *
      * Its state (the profiles so far) goes into the checkpoints.
      */

@@ -174,7 +174,9 @@ namespace slidewave
       const bool fresh = preconditioner_age == 0;
 
       const double target = parameters.linear_tolerance * rhs.l2_norm();
-      const auto   solve  = [&]() {
+      // False when AztecOO stopped at 'loss of precision' without counting (below).
+      bool       counted = true;
+      const auto solve   = [&]() {
         // The first guess: velocity and pressure extrapolated linearly from the last two
         // steps to t^{n+1} (the last step alone at the first step). GMRES stops at a
         // residual relative to the right-hand side, so a closer guess needs fewer
@@ -205,8 +207,10 @@ namespace slidewave
               throw;
             // AztecOO leaves the control unchecked when it stops so: the iterations it took
             // are unknown (the control's count is numbers::invalid_unsigned_int), and 0 is
-            // reported, as for a guess already at the target.
+            // reported, as for a guess already at the target, and kept out of the
+            // preconditioner's bookkeeping below.
             const unsigned int steps = control.last_step();
+            counted                  = steps != dealii::numbers::invalid_unsigned_int;
             return SolveReport{steps == dealii::numbers::invalid_unsigned_int ? 0u : steps,
                                true_residual};
           }
@@ -245,9 +249,11 @@ namespace slidewave
       report.assembly_time       = assembly_time;
       report.preconditioner_time = preconditioner_time;
       report.solve_time          = timer.wall_time() - assembly_time - preconditioner_time;
-      if (preconditioner_age == 0)
+      // A preconditioner that takes more than twice its first solve's iterations (plus 5)
+      // is rebuilt at the next step; a solve whose count is unknown judges nothing.
+      if (counted && preconditioner_age == 0)
         fresh_iterations = report.iterations;
-      else if (report.iterations > 2 * fresh_iterations + 5)
+      else if (counted && report.iterations > 2 * fresh_iterations + 5)
         preconditioner.reset();
       ++preconditioner_age;
       flow_constraints.distribute(solution);

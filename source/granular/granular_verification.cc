@@ -304,6 +304,15 @@ namespace slidewave
 
 
 
+    void
+    GranularVerification::check_points(const particles::PointCloud &cloud) const
+    {
+      if (parameters.exact_solution == GranularExactSolution::settling)
+        settling_values(cloud, scene.start_time); // throws without the row it follows
+    }
+
+
+
     std::array<double, 3>
     GranularVerification::settling_values(const particles::PointCloud &cloud,
                                           const double                 time) const

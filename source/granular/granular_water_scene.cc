@@ -184,6 +184,7 @@ namespace slidewave
                          skeleton_fields(),
                          0.,
                          nullptr);
+      verification.check_points(engine->point_cloud());
       verification.open_files(false);
       fluid_output.open_gauges(false);
     }

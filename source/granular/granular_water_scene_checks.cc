@@ -112,6 +112,19 @@ namespace slidewave
                              "a dry density (1 - n_0) rho^s between 0.01 and 1 times '" + section
                                + "/Grain density' = " + to_string(parameters.grain_density)
                                + " (an initial porosity in (0, 0.99])");
+          // A suspension (n_0 > n_s) carries no stress: neither its own initial stress
+          // nor, through 'geostatic', a weight on the points below it.
+          if (n0 > parameters.suspension_porosity
+              && soil_parameters.initial_stress != soil::InitialStress::none)
+            throw InputError(soil_section + "/Initial stress/Type",
+                             soil_parameters.initial_stress == soil::InitialStress::geostatic ?
+                               "geostatic" :
+                               "uniform",
+                             "none with material '" + material.name
+                               + "', which starts as a suspension (its porosity " + to_string(n0)
+                               + " is above '" + section + "/Suspension porosity' = "
+                               + to_string(parameters.suspension_porosity)
+                               + "): its grains carry no stress");
           // A rate-dependent friction's grains and liquid are this scene's.
           const std::string path = soil_section + "/Material '" + material.name + "'";
           if (material.friction_law == materials::FrictionLaw::inertial
@@ -132,12 +145,15 @@ namespace slidewave
         }
       if (parameters.exact_solution != GranularExactSolution::none)
         {
+          // Settling's grains fall out of contact, its bed rests at n_s: any material.
           if (soil_parameters.materials.empty()
-              || soil_parameters.materials[0].model != materials::MaterialModel::linear_elastic)
+              || (parameters.exact_solution != GranularExactSolution::settling
+                  && soil_parameters.materials[0].model
+                       != materials::MaterialModel::linear_elastic))
             throw InputError(soil_section + "/Material 1/Model",
                              soil_parameters.materials.empty() ? "(none)" :
                                                                  soil_parameters.materials[0].name,
-                             "a linear elastic material with an exact solution");
+                             "a linear elastic material with this exact solution");
           if (parameters.exact_solution == GranularExactSolution::seepage)
             {
               if (fluid_parameters.boundaries[3] != fluid::FlowBoundary::inflow)

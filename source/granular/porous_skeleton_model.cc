@@ -12,7 +12,7 @@ namespace slidewave
                                              const GranularWaterParameters       &parameters,
                                              const double                         fluid_density,
                                              const double                         fluid_viscosity)
-      : soil::SoilModel(soil_parameters, parameters.grain_density)
+      : soil::SoilModel(soil_parameters, parameters.grain_density, parameters.suspension_porosity)
       , parameters(parameters)
       , grain_density(parameters.grain_density)
       , viscosity(fluid_viscosity)
@@ -22,22 +22,6 @@ namespace slidewave
     {
       if (parameters.forchheimer)
         porous_layout.add_scalar("relative_speed");
-    }
-
-
-
-    void
-    PorousSkeletonModel::update_cell(const ParticleRange        &particles_in_cell,
-                                     const dealii::Tensor<2, 2> *L,
-                                     const double                dt) const
-    {
-      soil::SoilModel::update_cell(particles_in_cell, L, dt);
-      for (auto &particle : particles_in_cell)
-        {
-          auto p = particle.get_properties();
-          if (suspended(p))
-            release_stress(p);
-        }
     }
 
 

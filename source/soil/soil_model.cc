@@ -12,9 +12,12 @@ namespace slidewave
 {
   namespace soil
   {
-    SoilModel::SoilModel(const MaterialPointParameters &parameters, const double grain_density)
+    SoilModel::SoilModel(const MaterialPointParameters &parameters,
+                         const double                   grain_density,
+                         const double                   suspension_porosity)
       : prm(parameters)
       , solid_density(grain_density)
+      , contact_density((1. - suspension_porosity) * grain_density)
       , gravity(parameters.gravity)
       , point_forces(parameters.point_forces)
       , damping(parameters.damping)
@@ -74,7 +77,19 @@ namespace slidewave
       const bool                follow_stretch = prm.shape_function == grid::ShapeFunction::cpgimp;
       const double              max_half       = 0.5 * prm.cell_size;
       const FiniteStrainPoints *hencky         = finite_strain ? &*finite_strain : nullptr;
-      unsigned int              k              = 0;
+      // The grains' contact (n_s) is judged on the cell's points together, their mass over
+      // their volume, as B-bar takes their mean dilatation: a single point's porosity is
+      // noisy, and judged point by point a settled bed locks in rows of stressed points
+      // at n_s holding rows of released ones open between them (n up to 0.67).
+      double mass_sum = 0., old_volume_sum = 0.;
+      if (contact_density > 0.)
+        for (const auto &particle : particles_in_cell)
+          {
+            const auto p = particle.get_properties();
+            mass_sum += p[property::mass];
+            old_volume_sum += p[property::volume];
+          }
+      unsigned int k = 0;
       for (auto &particle : particles_in_cell)
         {
           const dealii::Tensor<2, 2> &L = cell_gradients[k++];
@@ -92,6 +107,38 @@ namespace slidewave
             grid::stretch_domain(
               p[property::domain_half_x], p[property::domain_half_y], L, dt, max_half);
         }
+      if (!(contact_density > 0.))
+        return;
+      double volume_sum = 0.;
+      for (const auto &particle : particles_in_cell)
+        volume_sum += particle.get_properties()[property::volume];
+      const double contact_volume = mass_sum / contact_density;
+      if (volume_sum > contact_volume)
+        for (auto &particle : particles_in_cell)
+          release_stress(particle.get_properties());
+      else if (old_volume_sum > contact_volume)
+        {
+          // Released at the start of the step, in contact by its end: only the part of the
+          // step's compaction past the contact volume loads the grains.
+          const double fraction = std::clamp(
+            std::log(contact_volume / volume_sum) / std::log(old_volume_sum / volume_sum), 0., 1.);
+          for (auto &particle : particles_in_cell)
+            regain_contact(particle.get_properties(), fraction);
+        }
+    }
+
+
+
+    void
+    SoilModel::regain_contact(dealii::ArrayView<double> p, const double fraction) const
+    {
+      // The stress is scaled towards zero (inside any Drucker-Prager cone that holds the
+      // origin), and a finite-strain point's b^e follows the scaled stress.
+      for (const unsigned int i :
+           {property::stress_xx, property::stress_yy, property::stress_xy, property::stress_zz})
+        p[i] *= fraction;
+      if (finite_strain)
+        finite_strain->set_from_stress(p);
     }
 
 

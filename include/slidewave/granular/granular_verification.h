@@ -52,6 +52,11 @@ namespace slidewave
                            const fluid::FreeSurfaceParameters  &fluid_parameters,
                            const GranularWaterParameters       &parameters);
 
+      /** Refuses, before the first step, a settling column with no points below 0.7 of
+       *  'Column height' (InputError; collective); nothing for the other cases. */
+      void
+      check_points(const particles::PointCloud &cloud) const;
+
       /** terzaghi_profiles.csv: created, or continued by a resumed run (rank 0). */
       void
       open_files(bool append);

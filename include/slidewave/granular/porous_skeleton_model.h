@@ -115,43 +115,6 @@ namespace slidewave
         sums[drag] += N_k * t.drag_volume;
       }
 
-      /**
-       * The soil's update of the points of one cell (soil::SoilModel::update_cell), then
-       * the grains out of contact: a point dilated beyond 'Suspension porosity' n_s
-       * carries no effective stress (SoilModel::release_stress); compacted below n_s
-       * again, it takes stress from zero.
-       */
-      void
-      update_cell(const ParticleRange        &particles_in_cell,
-                  const dealii::Tensor<2, 2> *L,
-                  double                      dt) const;
-
-      /** n_p > n_s: the point's grains are out of contact, a suspension in the water. */
-      template <typename Properties>
-      bool
-      suspended(const Properties &p) const
-      {
-        return p[soil::property::mass]
-               < (1. - parameters.suspension_porosity) * grain_density * p[soil::property::volume];
-      }
-
-      /**
-       * The P-wave speed (Eq. 22) at the point's density, but not below the dry density
-       * (1 - n_s) rho^s at which its grains touch. A suspended point has no stiffness, but
-       * it may regain it within a step: it keeps the step of the contact it is about to
-       * make, and a point dilated far from the mass no longer shortens the step as its
-       * density falls.
-       */
-      template <typename Properties>
-      double
-      wave_speed(const Properties &p) const
-      {
-        const double density = p[soil::property::mass] / p[soil::property::volume];
-        const double contact = (1. - parameters.suspension_porosity) * grain_density;
-        return density < contact ? soil::SoilModel::wave_speed(p) * std::sqrt(density / contact) :
-                                   soil::SoilModel::wave_speed(p);
-      }
-
       /** The relative speed of the water's last step at the point (Forchheimer). */
       template <typename Properties>
       void

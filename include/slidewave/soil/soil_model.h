@@ -1,6 +1,7 @@
 #ifndef slidewave_soil_soil_model_h
 #define slidewave_soil_soil_model_h
 
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/tensor.h>
 #include <deal.II/particles/particle_handler.h>
@@ -69,8 +70,11 @@ namespace slidewave
       /** @p grain_density: rho^s of the grains where the points are a porous skeleton
        *  (granular::PorousSkeletonModel), which a critical-state dilatancy needs to know
        *  a point's porosity n = 1 - m_p / (rho^s V_p); 0 for a soil without one, which
-       *  refuses such a material (InputError). */
-      explicit SoilModel(const MaterialPointParameters &parameters, double grain_density = 0.);
+       *  refuses such a material (InputError). @p suspension_porosity: n_s, above which
+       *  a point's grains lose contact (release_stress; 1, or no grain density: never). */
+      explicit SoilModel(const MaterialPointParameters &parameters,
+                         double                         grain_density       = 0.,
+                         double                         suspension_porosity = 1.);
 
       /** The points' properties: property::Index, then the point forces if on, then b^e
        *  (FiniteStrainPoints) if some material is a finite-strain one. */
@@ -125,20 +129,36 @@ namespace slidewave
        * order of @p particles_in_cell): strain and spin increments, B-bar, the material's
        * update with the Jaumann rate (Eqs. 5–6), the new volume, cpGIMP's domain; the
        * points of finite-strain materials by FiniteStrainPoints::update() instead (the
-       * same B-bar mean, as F-bar).
+       * same B-bar mean, as F-bar). Then, where the cell's points together are looser
+       * than the suspension porosity n_s (their mass over their volume below the contact
+       * density (1 - n_s) rho^s), they are released (release_stress); compacted below n_s
+       * again, they take stress from zero at the contact (regain_contact).
        */
       void
       update_cell(const ParticleRange        &particles_in_cell,
                   const dealii::Tensor<2, 2> *L,
                   double                      dt) const;
 
-      /** A point whose grains have lost contact (granular::PorousSkeletonModel): no
-       *  stress, and a finite-strain point's elastic strain b^e reset to the identity
-       *  with it, so that it takes stress from zero when its grains touch again. */
+      /** A point whose grains have lost contact (its cell's n > n_s): no stress, and a
+       *  finite-strain point's elastic strain b^e reset to the identity with it, so that
+       *  it takes stress from zero when its grains touch again. */
       void
       release_stress(dealii::ArrayView<double> p) const;
 
-      /** The P-wave speed sqrt((K + 4G/3) / rho) of the point's material (Eq. 22). */
+      /** A point of a cell released at the start of the step (zero stress) whose grains
+       *  touch again by its end: its stress scaled by @p fraction, the part of the step's
+       *  compaction past the contact (a whole step's compaction taken as elastic would load
+       *  it by up to M v dt / h). */
+      void
+      regain_contact(dealii::ArrayView<double> p, double fraction) const;
+
+      /**
+       * The P-wave speed sqrt((K + 4G/3) / rho) of the point's material (Eq. 22), at its
+       * density but not below the contact density (1 - n_s) rho^s (0 without a porous
+       * skeleton). A suspended point has no stiffness, but it may regain it within a
+       * step: it keeps the step of the contact it is about to make, and a point dilated
+       * far from the mass does not shorten the step as its density falls.
+       */
       template <typename Properties>
       double
       wave_speed(const Properties &p) const
@@ -146,7 +166,7 @@ namespace slidewave
         const double density = p[property::mass] / p[property::volume];
         return std::sqrt(
           materials[static_cast<unsigned int>(p[property::material_id])].p_wave_modulus()
-          / density);
+          / std::max(density, contact_density));
       }
 
       /** Nodes with less mass than this are empty. */
@@ -245,7 +265,9 @@ namespace slidewave
       const MaterialPointParameters   &prm;
       std::vector<materials::Material> materials;
       /** rho^s of the grains (0: unknown; the constructor's @p grain_density). */
-      double                    solid_density;
+      double solid_density;
+      /** (1 - n_s) rho^s: below it a point's grains are out of contact (0: never). */
+      double                    contact_density;
       particles::PropertyLayout property_layout;
       /** The finite-strain points' update and b^e; only when a material needs it. */
       std::optional<FiniteStrainPoints> finite_strain;

@@ -164,7 +164,8 @@ namespace slidewave
             preconditioner = ilu;
           }
         preconditioner_age = 0;
-        preconditioner_dt  = lengths.dt;
+        fresh_iterations.reset();
+        preconditioner_dt = lengths.dt;
         preconditioner_time += timer.wall_time() - start;
       };
       const bool stale = !preconditioner || preconditioner_age >= parameters.preconditioner_interval
@@ -249,11 +250,12 @@ namespace slidewave
       report.assembly_time       = assembly_time;
       report.preconditioner_time = preconditioner_time;
       report.solve_time          = timer.wall_time() - assembly_time - preconditioner_time;
-      // A preconditioner that takes more than twice its first solve's iterations (plus 5)
-      // is rebuilt at the next step; a solve whose count is unknown judges nothing.
-      if (counted && preconditioner_age == 0)
+      // A preconditioner that takes more than twice its first counted solve's iterations
+      // (plus 5) is rebuilt at the next step; a solve whose count is unknown judges
+      // nothing and sets no reference.
+      if (counted && !fresh_iterations)
         fresh_iterations = report.iterations;
-      else if (counted && report.iterations > 2 * fresh_iterations + 5)
+      else if (counted && report.iterations > 2 * *fresh_iterations + 5)
         preconditioner.reset();
       ++preconditioner_age;
       flow_constraints.distribute(solution);

@@ -35,18 +35,20 @@ namespace slidewave
       prm.declare_entry("Suspension porosity",
                         "0.6",
                         Double(0., 1.),
-                        "n_s: a point whose porosity exceeds it has its grains out of "
-                        "contact, a suspension in the water: it carries no effective stress "
-                        "and has no stiffness; compacted below n_s again, it takes stress "
-                        "from zero (the granular stress vanishes below the loosest packing, "
+                        "n_s: where a cell's points together are looser than it (their "
+                        "mass over their volume below (1 - n_s) rho^s), their grains are out "
+                        "of contact, a suspension in the water: they carry no effective "
+                        "stress and have no stiffness; compacted below n_s again, they take "
+                        "stress from zero (the granular stress vanishes below the loosest packing, "
                         "as in Baumgarten and Kamrin's mixture model, J. Fluid Mech. 2019). "
                         "The step takes every point's P-wave speed at its density but not "
-                        "below the density of contact (1 - n_s) rho^s, so a suspended point "
+                        "below the density of contact (1 - n_s) rho^s, so a dilated point "
                         "keeps the step of the contact it may make within it. 0.6 is a "
                         "solid fraction of 0.4, looser than any random packing of grains "
                         "(spheres: 0.55); raise it for a skeleton that holds at a larger "
                         "porosity (soft clays). A material looser than n_s starts as a "
-                        "suspension; 1: the grains never lose contact.");
+                        "suspension (with 'Initial stress/Type = none'); 1: the grains never "
+                        "lose contact.");
       prm.declare_entry("Drag law",
                         "Forchheimer",
                         Selection("Darcy|Forchheimer"),

@@ -153,7 +153,9 @@ namespace slidewave
             throw InputError(soil_section + "/Material 1/Model",
                              soil_parameters.materials.empty() ? "(none)" :
                                                                  soil_parameters.materials[0].name,
-                             "a linear elastic material with this exact solution");
+                             parameters.exact_solution == GranularExactSolution::settling ?
+                               "a material (any model) with 'Exact solution = settling'" :
+                               "a linear elastic material with this exact solution");
           if (parameters.exact_solution == GranularExactSolution::seepage)
             {
               if (fluid_parameters.boundaries[3] != fluid::FlowBoundary::inflow)

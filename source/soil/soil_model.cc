@@ -80,15 +80,22 @@ namespace slidewave
       // The grains' contact (n_s) is judged on the cell's points together, their mass over
       // their volume, as B-bar takes their mean dilatation: a single point's porosity is
       // noisy, and judged point by point a settled bed locks in rows of stressed points
-      // at n_s holding rows of released ones open between them (n up to 0.67).
+      // at n_s holding rows of released ones open between them (n up to 0.67). The cell
+      // holds other points than at the last step's end (they move between cells), so it
+      // is judged at the step's start too: a cell looser than n_s starts released.
       double mass_sum = 0., old_volume_sum = 0.;
       if (contact_density > 0.)
-        for (const auto &particle : particles_in_cell)
-          {
-            const auto p = particle.get_properties();
-            mass_sum += p[property::mass];
-            old_volume_sum += p[property::volume];
-          }
+        {
+          for (const auto &particle : particles_in_cell)
+            {
+              const auto p = particle.get_properties();
+              mass_sum += p[property::mass];
+              old_volume_sum += p[property::volume];
+            }
+          if (old_volume_sum > mass_sum / contact_density)
+            for (auto &particle : particles_in_cell)
+              release_stress(particle.get_properties());
+        }
       unsigned int k = 0;
       for (auto &particle : particles_in_cell)
         {
@@ -118,10 +125,10 @@ namespace slidewave
           release_stress(particle.get_properties());
       else if (old_volume_sum > contact_volume)
         {
-          // Released at the start of the step, in contact by its end: only the part of the
-          // step's compaction past the contact volume loads the grains.
-          const double fraction = std::clamp(
-            std::log(contact_volume / volume_sum) / std::log(old_volume_sum / volume_sum), 0., 1.);
+          // Released at the step's start, in contact by its end: only the part of the
+          // step's compaction past the contact volume loads the grains, the fraction
+          // (V_c - V) / (V_old - V) of it (V_old > V_c >= V: no division by zero).
+          const double fraction = (contact_volume - volume_sum) / (old_volume_sum - volume_sum);
           for (auto &particle : particles_in_cell)
             regain_contact(particle.get_properties(), fraction);
         }

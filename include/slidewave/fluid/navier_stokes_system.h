@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 #include <memory>
+#include <optional>
 #include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/fluid/porous_medium.h>
 #include <slidewave/fluid/velocity_subscales.h>
@@ -187,8 +188,11 @@ namespace slidewave
       /** The positions of u_x and u_y of the vertices this rank owns in the owned flow
        *  vector (max_speed(); cleared on grid changes, rebuilt by the next call). */
       mutable std::vector<std::array<int, 2>> vertex_velocity;
-      unsigned int                            preconditioner_age = 0, fresh_iterations = 0;
-      double                                  preconditioner_dt = 0.;
+      unsigned int                            preconditioner_age = 0;
+      /** The iterations of the first counted solve with the preconditioner now in use
+       *  (none yet: cleared when it is built). */
+      std::optional<unsigned int> fresh_iterations;
+      double                      preconditioner_dt = 0.;
     };
   } // namespace fluid
 } // namespace slidewave

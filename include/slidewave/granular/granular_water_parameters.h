@@ -59,8 +59,9 @@ namespace slidewave
        *  (DragProjection, 'semi-implicit projected'; implies implicit_drag); false: the
        *  lumped nodal drag W_I ('semi-implicit') or the explicit coupling. */
       bool projected_drag = true;
-      /** n_s: a point of larger porosity has its grains out of contact, a suspension
-       *  without effective stress or stiffness (PorousSkeletonModel::suspended). */
+      /** n_s: where a cell's points together are looser, their grains are out of
+       *  contact, a suspension without effective stress or stiffness
+       *  (soil::SoilModel::update_cell). */
       double suspension_porosity = 0.6;
       /** A pressure [Pa] on the top row of points (Terzaghi's load; 0: none). */
       double top_load = 0.;

@@ -71,7 +71,8 @@ namespace slidewave
        *  (granular::PorousSkeletonModel), which a critical-state dilatancy needs to know
        *  a point's porosity n = 1 - m_p / (rho^s V_p); 0 for a soil without one, which
        *  refuses such a material (InputError). @p suspension_porosity: n_s, above which
-       *  a point's grains lose contact (release_stress; 1, or no grain density: never). */
+       *  the grains of a cell's points lose contact (release_stress; 1, or no grain
+       *  density: never). */
       explicit SoilModel(const MaterialPointParameters &parameters,
                          double                         grain_density       = 0.,
                          double                         suspension_porosity = 1.);
@@ -155,9 +156,9 @@ namespace slidewave
       /**
        * The P-wave speed sqrt((K + 4G/3) / rho) of the point's material (Eq. 22), at its
        * density but not below the contact density (1 - n_s) rho^s (0 without a porous
-       * skeleton). A suspended point has no stiffness, but it may regain it within a
-       * step: it keeps the step of the contact it is about to make, and a point dilated
-       * far from the mass does not shorten the step as its density falls.
+       * skeleton). A dilated point may sit in a cell in contact, or its cell may regain
+       * contact within a step: it keeps the step of the stiffness it may have, and a point
+       * dilated far from the mass does not shorten the step as its density falls.
        */
       template <typename Properties>
       double

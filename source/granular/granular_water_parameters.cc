@@ -35,7 +35,7 @@ namespace slidewave
       prm.declare_entry("Suspension porosity",
                         "0.6",
                         Double(0., 1.),
-                        "n_s: where a cell's points together are looser than it (their "
+                        "n_s, in (0, 1]: where a cell's points together are looser than it (their "
                         "mass over their volume below (1 - n_s) rho^s), their grains are out "
                         "of contact, a suspension in the water: they carry no effective "
                         "stress and have no stiffness; compacted below n_s again, they take "

@@ -150,9 +150,14 @@ namespace slidewave
               || (parameters.exact_solution != GranularExactSolution::settling
                   && soil_parameters.materials[0].model
                        != materials::MaterialModel::linear_elastic))
-            throw InputError(soil_section + "/Material 1/Model",
+            throw InputError(soil_parameters.materials.empty() ?
+                               soil_section + "/Material 1" :
+                               soil_parameters.materials[0].path + "/Model",
                              soil_parameters.materials.empty() ? "(none)" :
-                                                                 soil_parameters.materials[0].name,
+                             soil_parameters.materials[0].model
+                                 == materials::MaterialModel::drucker_prager ?
+                                                                 "drucker prager" :
+                                                                 "hencky drucker prager",
                              parameters.exact_solution == GranularExactSolution::settling ?
                                "a material (any model) with 'Exact solution = settling'" :
                                "a linear elastic material with this exact solution");

@@ -167,7 +167,7 @@ namespace slidewave
         const double density = p[property::mass] / p[property::volume];
         return std::sqrt(
           materials[static_cast<unsigned int>(p[property::material_id])].p_wave_modulus()
-          / std::max(density, contact_density));
+          / (contact_density > 0. ? std::max(density, contact_density) : density));
       }
 
       /** Nodes with less mass than this are empty. */
@@ -267,7 +267,8 @@ namespace slidewave
       std::vector<materials::Material> materials;
       /** rho^s of the grains (0: unknown; the constructor's @p grain_density). */
       double solid_density;
-      /** (1 - n_s) rho^s: below it a point's grains are out of contact (0: never). */
+      /** (1 - n_s) rho^s: where a cell's points together are lighter, their grains are
+       *  out of contact (0: never). */
       double                    contact_density;
       particles::PropertyLayout property_layout;
       /** The finite-strain points' update and b^e; only when a material needs it. */

@@ -240,9 +240,12 @@ namespace slidewave
         prm.declare_entry("Maximum volume drift",
                           "0.05",
                           Double(0.),
-                          "The run stops (exit status 2) when the water volume (the "
-                          "integral of phi, of n phi in a porous solid) differs from the "
-                          "initial one by more than this fraction (0: never).");
+                          "The run stops (exit status 2) when the water's balance is off "
+                          "by more than this fraction of the initial volume: the water "
+                          "volume (the integral of phi, of n phi in a porous solid) plus "
+                          "what left through the open and inflow sides, against the "
+                          "initial volume (0: never). With Physics = granular water it is "
+                          "checked every 'Material points/Check interval' steps.");
         prm.declare_entry("Maximum speed",
                           "1000",
                           Double(0.),

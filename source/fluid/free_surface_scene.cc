@@ -125,7 +125,7 @@ namespace slidewave
       dealii::TimerOutput::Scope scope(timer_output, "fluid: setup");
       create_solver();
       solver->setup(start_time);
-      initial_volume = solver->water_volume();
+      balance.start(solver->water_volume());
       output.open_gauges(false);
     }
 
@@ -192,7 +192,7 @@ namespace slidewave
 
 
 
-    double
+    std::string
     FreeSurfaceScene::check_state(const StepInfo &info) const
     {
       const std::string where
@@ -204,16 +204,9 @@ namespace slidewave
       const double speed = solver->max_speed();
       if (parameters.max_speed > 0. && speed > parameters.max_speed)
         throw RunFailure(where + "the largest speed, " + to_string(speed)
-                         + " m/s, exceeds 'Guards/Maximum speed' = "
+                         + " m/s, exceeds 'Free surface flow/Guards/Maximum speed' = "
                          + to_string(parameters.max_speed) + " m/s");
-      const double drift = std::abs(volume_drift(solver->water_volume()));
-      if (parameters.max_volume_drift > 0. && drift > parameters.max_volume_drift)
-        throw RunFailure(where + "the water volume drifted by " + to_string(100. * drift) + " % of "
-                         + to_string(reference_volume())
-                         + " m^2 from its initial value and what the sides let in and out, "
-                           "beyond 'Guards/Maximum volume drift' = "
-                         + to_string(100. * parameters.max_volume_drift) + " %");
-      return drift;
+      return where;
     }
 
 
@@ -222,31 +215,11 @@ namespace slidewave
     FreeSurfaceScene::after_step(const StepInfo &info)
     {
       dealii::TimerOutput::Scope scope(*timer, "fluid: checks and gauges");
-      max_drift = std::max(max_drift, check_state(info));
+      balance.check(check_state(info), solver->water_volume(), solver->water_outflow);
       output.record_gauges(*solver, info.time);
       if (parameters.exact_solution == FlowExactSolution::martin_moyce
           || parameters.exact_solution == FlowExactSolution::standing_wave)
         verification_history.emplace_back(info.time, verification_value());
-    }
-
-
-
-    double
-    FreeSurfaceScene::reference_volume() const
-    {
-      // An empty tank filled through an inflow side: its area.
-      return initial_volume > 0. ? initial_volume :
-                                   (parameters.upper_right[0] - parameters.lower_left[0])
-                                     * (parameters.upper_right[1] - parameters.lower_left[1]);
-    }
-
-
-
-    double
-    FreeSurfaceScene::volume_drift(const double volume) const
-    {
-      // The water balance: what is there, plus what left, minus what was there.
-      return (volume + solver->water_outflow - initial_volume) / reference_volume();
     }
 
 
@@ -296,7 +269,7 @@ namespace slidewave
       statistics.add_value("dt", info.dt);
       statistics.add_value("water_volume", volume);
       statistics.add_value("water_outflow", solver->water_outflow);
-      statistics.add_value("volume_drift", volume_drift(volume));
+      statistics.add_value("volume_drift", balance.drift(volume, solver->water_outflow));
       statistics.add_value("kinetic_energy",
                            diagnostics::kinetic_energy(solver->flow_field(),
                                                        solver->phase_field(),
@@ -407,8 +380,8 @@ namespace slidewave
       if (is_writer)
         {
           std::printf("Water volume: largest drift %.3e of the initial %.6g m^2\n",
-                      max_drift,
-                      initial_volume);
+                      balance.largest_drift(),
+                      balance.initial_volume());
           // The split of the steps' time (wall times: not in test mode's output).
           if (!scene.test_mode)
             std::printf("Step time: flow assembly %.3g s, preconditioner %.3g s (%llu builds), "
@@ -419,7 +392,7 @@ namespace slidewave
                         part_times[2],
                         flow_iterations,
                         part_times[3]);
-          if (std::abs(solver->water_outflow) > 1e-6 * reference_volume())
+          if (std::abs(solver->water_outflow) > 1e-6 * balance.reference_volume())
             std::printf("Water through the sides: %.6g m^2 out (negative: in)\n",
                         solver->water_outflow);
           if (line[0] != '\0')
@@ -471,8 +444,7 @@ namespace slidewave
       record.put("fluid/time", solver->time);
       record.put("fluid/last_dt", solver->last_dt);
       record.put("fluid/steps", solver->n_steps);
-      record.put("fluid/initial_volume", initial_volume);
-      record.put("fluid/max_drift", max_drift);
+      balance.save(record);
       record.put("fluid/water_outflow", solver->water_outflow);
       record.put("fluid/last_iterations",
                  std::vector<double>{static_cast<double>(last_report.flow.iterations),
@@ -506,11 +478,10 @@ namespace slidewave
       dealii::TimerOutput::Scope scope(timer_output, "fluid: setup");
       create_solver();
       solver->load(prefix);
-      solver->time          = record.get("fluid/time");
-      solver->last_dt       = record.get("fluid/last_dt");
-      solver->n_steps       = record.get_unsigned("fluid/steps");
-      initial_volume        = record.get("fluid/initial_volume");
-      max_drift             = record.get("fluid/max_drift");
+      solver->time    = record.get("fluid/time");
+      solver->last_dt = record.get("fluid/last_dt");
+      solver->n_steps = record.get_unsigned("fluid/steps");
+      balance.load(record);
       solver->water_outflow = record.get("fluid/water_outflow");
       const auto &its       = record.get_vector("fluid/last_iterations");
       if (its.size() != 2)

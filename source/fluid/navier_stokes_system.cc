@@ -212,8 +212,7 @@ namespace slidewave
             // preconditioner's bookkeeping below.
             const unsigned int steps = control.last_step();
             counted                  = steps != dealii::numbers::invalid_unsigned_int;
-            return SolveReport{steps == dealii::numbers::invalid_unsigned_int ? 0u : steps,
-                               true_residual};
+            return SolveReport{counted ? steps : 0u, true_residual};
           }
         return SolveReport{control.last_step(), control.last_value()};
       };

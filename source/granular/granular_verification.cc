@@ -308,7 +308,34 @@ namespace slidewave
     GranularVerification::check_points(const particles::PointCloud &cloud) const
     {
       if (parameters.exact_solution == GranularExactSolution::settling)
-        settling_values(cloud, scene.start_time); // throws without the row it follows
+        settling_row(cloud);
+    }
+
+
+
+    double
+    GranularVerification::settling_row(const particles::PointCloud &cloud) const
+    {
+      // The row of points that started highest at or below 0.7 H: clear of the top, where
+      // the water's velocity jumps and the grid smears the suspension's edge over a cell or
+      // two, and above the bed until the fall reaches its height times (n_0 - n_s) /
+      // (1 - n_s).
+      const double H    = parameters.column_height;
+      const double base = fluid_parameters.lower_left[1];
+      double       row  = -std::numeric_limits<double>::max();
+      for (const auto &particle : cloud.particles())
+        {
+          const double y0 = particle.get_properties()[soil::property::initial_y];
+          if (y0 <= base + 0.7 * H)
+            row = std::max(row, y0);
+        }
+      row = dealii::Utilities::MPI::max(row, MPI_COMM_WORLD);
+      if (row == -std::numeric_limits<double>::max())
+        throw InputError("Granular water/Verification/Column height",
+                         to_string(H),
+                         "the height of the suspension, with points below 0.7 of it ('Exact "
+                         "solution = settling' follows the row that started highest there)");
+      return row;
     }
 
 
@@ -340,20 +367,9 @@ namespace slidewave
       const double H = parameters.column_height, ns = parameters.suspension_porosity;
       const double base = fluid_parameters.lower_left[1];
 
-      // The row of points that started highest at or below 0.7 H: clear of the top, where
-      // the water's velocity jumps and the grid smears the suspension's edge over a cell or
-      // two, and above the bed until the fall reaches its height times (n_0 - n_s) /
-      // (1 - n_s).
-      double row = -std::numeric_limits<double>::max();
-      for (const auto &particle : cloud.particles())
-        {
-          const double y0 = particle.get_properties()[soil::property::initial_y];
-          if (y0 <= base + 0.7 * H)
-            row = std::max(row, y0);
-        }
-      row                = dealii::Utilities::MPI::max(row, MPI_COMM_WORLD);
-      const bool met     = fall >= (row - base) * (n0 - ns) / (1. - ns);
-      double     sums[3] = {0., 0., 0.}; // the row's fall, its count, all points' volume
+      const double row     = settling_row(cloud);
+      const bool   met     = fall >= (row - base) * (n0 - ns) / (1. - ns);
+      double       sums[3] = {0., 0., 0.}; // the row's fall, its count, all points' volume
       for (const auto &particle : cloud.particles())
         {
           const auto p = particle.get_properties();
@@ -367,11 +383,6 @@ namespace slidewave
       dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sums, 3),
                                   MPI_COMM_WORLD,
                                   dealii::ArrayView<double>(sums, 3));
-      if (!(sums[1] > 0.))
-        throw InputError("Granular water/Verification/Column height",
-                         to_string(H),
-                         "the height of the suspension, with points below 0.7 of it ('Exact "
-                         "solution = settling' follows the row that started highest there)");
       const double width = fluid_parameters.upper_right[0] - fluid_parameters.lower_left[0];
       // Once the bed reaches the row: the points' volume over the width, the bed at n_s
       // under what is left of the suspension at n_0, H - fall, until the top meets the bed

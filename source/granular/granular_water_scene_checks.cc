@@ -222,5 +222,35 @@ namespace slidewave
                              to_string(soil_parameters.fixed_time_step),
                              "'Fixed time step'");
     }
+
+
+
+    void
+    GranularWaterScene::after_step(const StepInfo &info)
+    {
+      dealii::TimerOutput::Scope scope(*timer, "granular: checks");
+      const std::string          where
+        = "at step " + std::to_string(info.step) + ", t = " + to_string(info.time) + " s: ";
+      if (!fluid_solver->state_is_finite())
+        throw RunFailure(where
+                         + "the water's velocity, pressure or phase field is not finite "
+                           "(reduce the time step)");
+      if (info.step % check_interval == 0 || info.is_output_time || info.at_end)
+        {
+          const std::string bad = model->find_invalid_particle(engine->point_cloud());
+          if (!bad.empty())
+            throw RunFailure(where + bad);
+          // The water's guards ('Free surface flow/Guards'), at the skeleton's checks: the
+          // volume's integral is a pass over the cells, like the points' check.
+          const double speed = fluid_solver->max_speed();
+          if (fluid_parameters.max_speed > 0. && speed > fluid_parameters.max_speed)
+            throw RunFailure(where + "the water's largest speed, " + to_string(speed)
+                             + " m/s, exceeds 'Free surface flow/Guards/Maximum speed' = "
+                             + to_string(fluid_parameters.max_speed) + " m/s");
+          balance.check(where, fluid_solver->water_volume(), fluid_solver->water_outflow);
+        }
+      fluid_output.record_gauges(*fluid_solver, info.time);
+      verification.after_step(info.time, fluid_solver->flow_field());
+    }
   } // namespace granular
 } // namespace slidewave

@@ -47,7 +47,9 @@ namespace slidewave
                         "for points that left through a side that is not free, and the "
                         "kinetic energy against the energy available (initial "
                         "kinetic + elastic energy + work of gravity); a failed check stops "
-                        "the run (exit status 2) with the step, time and point.");
+                        "the run (exit status 2) with the step, time and point. With "
+                        "Physics = granular water the water's guards ('Free surface "
+                        "flow/Guards') are checked then too.");
       prm.declare_entry("Output grid",
                         "false",
                         Bool(),

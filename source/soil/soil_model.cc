@@ -58,45 +58,38 @@ namespace slidewave
                            const double                dt) const
     {
       // With B-bar, the volumetric part of each point's strain increment is replaced by
-      // its volume-weighted average over the cell (mean dilatation).
-      double mean_volumetric = 0.;
-      if (prm.b_bar)
-        {
-          double       volume_sum = 0., volumetric_sum = 0.;
-          unsigned int k = 0;
-          for (const auto &particle : particles_in_cell)
-            {
-              const dealii::Tensor<2, 2> &L = cell_gradients[k++];
-              const double                V = particle.get_properties()[property::volume];
-              volume_sum += V;
-              volumetric_sum += V * (L[0][0] + L[1][1]);
-            }
-          mean_volumetric = volumetric_sum / volume_sum;
-        }
+      // its volume-weighted average over the cell (mean dilatation). The grains' contact
+      // (n_s) is judged on the cell's points together, their mass over their volume, as
+      // B-bar takes their mean dilatation: a single point's porosity is noisy, and judged
+      // point by point a settled bed locks in rows of stressed points at n_s holding rows
+      // of released ones open between them (n up to 0.67). Both sums are taken in one
+      // pass over the cell's points.
+      const bool   judge_contact = contact_density > 0.;
+      double       mass_sum = 0., old_volume_sum = 0., volumetric_sum = 0.;
+      unsigned int k = 0;
+      if (prm.b_bar || judge_contact)
+        for (const auto &particle : particles_in_cell)
+          {
+            const dealii::Tensor<2, 2> &L = cell_gradients[k++];
+            const auto                  p = particle.get_properties();
+            old_volume_sum += p[property::volume];
+            volumetric_sum += p[property::volume] * (L[0][0] + L[1][1]);
+            mass_sum += p[property::mass];
+          }
+      const double mean_volumetric = prm.b_bar ? volumetric_sum / old_volume_sum : 0.;
+      // The cell holds other points than at the last step's end (they move between
+      // cells), so it is judged at the step's start too: a cell looser than n_s starts
+      // released (its points' update starts from zero stress).
+      const double contact_volume = judge_contact ? mass_sum / contact_density : 0.;
+      if (judge_contact && old_volume_sum > contact_volume)
+        for (auto &particle : particles_in_cell)
+          release_stress(particle.get_properties());
 
       const bool                follow_stretch = prm.shape_function == grid::ShapeFunction::cpgimp;
       const double              max_half       = 0.5 * prm.cell_size;
       const FiniteStrainPoints *hencky         = finite_strain ? &*finite_strain : nullptr;
-      // The grains' contact (n_s) is judged on the cell's points together, their mass over
-      // their volume, as B-bar takes their mean dilatation: a single point's porosity is
-      // noisy, and judged point by point a settled bed locks in rows of stressed points
-      // at n_s holding rows of released ones open between them (n up to 0.67). The cell
-      // holds other points than at the last step's end (they move between cells), so it
-      // is judged at the step's start too: a cell looser than n_s starts released.
-      double mass_sum = 0., old_volume_sum = 0.;
-      if (contact_density > 0.)
-        {
-          for (const auto &particle : particles_in_cell)
-            {
-              const auto p = particle.get_properties();
-              mass_sum += p[property::mass];
-              old_volume_sum += p[property::volume];
-            }
-          if (old_volume_sum > mass_sum / contact_density)
-            for (auto &particle : particles_in_cell)
-              release_stress(particle.get_properties());
-        }
-      unsigned int k = 0;
+      double                    volume_sum     = 0.;
+      k                                        = 0;
       for (auto &particle : particles_in_cell)
         {
           const dealii::Tensor<2, 2> &L = cell_gradients[k++];
@@ -113,13 +106,10 @@ namespace slidewave
           if (follow_stretch)
             grid::stretch_domain(
               p[property::domain_half_x], p[property::domain_half_y], L, dt, max_half);
+          volume_sum += p[property::volume];
         }
-      if (!(contact_density > 0.))
+      if (!judge_contact)
         return;
-      double volume_sum = 0.;
-      for (const auto &particle : particles_in_cell)
-        volume_sum += particle.get_properties()[property::volume];
-      const double contact_volume = mass_sum / contact_density;
       if (volume_sum > contact_volume)
         for (auto &particle : particles_in_cell)
           release_stress(particle.get_properties());

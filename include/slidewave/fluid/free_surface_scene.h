@@ -11,6 +11,7 @@
 #include <slidewave/fluid/free_surface_output.h>
 #include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/fluid/free_surface_solver.h>
+#include <slidewave/fluid/water_balance.h>
 #include <string>
 #include <vector>
 
@@ -101,19 +102,10 @@ namespace slidewave
       void
       create_solver();
 
-      /** The guards: finite fields, the speed limit, the water volume (RunFailure).
-       *  Returns the volume's relative drift. */
-      double
+      /** The guards of the fields: finite, within the speed limit (RunFailure). Returns
+       *  where the step is, for the water balance's guard. */
+      std::string
       check_state(const StepInfo &info) const;
-
-      /** The volume the drift is measured against: the initial water's, or the
-       *  domain's when it starts empty. */
-      double
-      reference_volume() const;
-
-      /** (@p volume + outflow - initial volume) / reference_volume(). */
-      double
-      volume_drift(double volume) const;
 
       const SceneParameters                &scene;
       FreeSurfaceParameters                 parameters;
@@ -128,7 +120,7 @@ namespace slidewave
       std::array<double, 4> part_times{};
       unsigned long long    flow_iterations = 0, preconditioner_builds = 0;
       /** The water volume at the start and the largest relative drift since. */
-      double initial_volume = 0., max_drift = 0.;
+      WaterBalance balance{parameters};
       /** (time, value) of every step for the verification: the surge front (Martin and
        *  Moyce), the surface at the left wall (standing wave). */
       std::vector<std::pair<double, double>> verification_history;

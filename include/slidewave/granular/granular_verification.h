@@ -121,6 +121,12 @@ namespace slidewave
       std::array<double, 3>
       settling_values(const particles::PointCloud &cloud, double time) const;
 
+      /** Settling: the initial height of the row of points that started highest at or
+       *  below 0.7 of 'Column height'; refuses (InputError) a column with no points there
+       *  (collective). */
+      double
+      settling_row(const particles::PointCloud &cloud) const;
+
       const SceneParameters               &scene;
       const soil::MaterialPointParameters &soil_parameters;
       const fluid::FreeSurfaceParameters  &fluid_parameters;

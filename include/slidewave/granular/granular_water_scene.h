@@ -12,6 +12,7 @@
 #include <slidewave/fluid/free_surface_output.h>
 #include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/fluid/free_surface_solver.h>
+#include <slidewave/fluid/water_balance.h>
 #include <slidewave/granular/drag_projection.h>
 #include <slidewave/granular/granular_verification.h>
 #include <slidewave/granular/granular_water_parameters.h>
@@ -174,7 +175,9 @@ namespace slidewave
       fluid::FreeSurfaceOutput     fluid_output;
       dealii::TimerOutput         *timer = nullptr;
       fluid::FluidStepReport       last_report;
-      unsigned int                 check_interval = 10;
+      /** The water's volume against its start and what left through the sides. */
+      fluid::WaterBalance balance{fluid_parameters};
+      unsigned int        check_interval = 10;
       /** The skeleton's sub-steps in the last step. */
       unsigned int         n_substeps = 1;
       GranularVerification verification;

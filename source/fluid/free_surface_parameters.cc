@@ -241,11 +241,13 @@ namespace slidewave
                           "0.05",
                           Double(0.),
                           "The run stops (exit status 2) when the water's balance is off "
-                          "by more than this fraction of the initial volume: the water "
-                          "volume (the integral of phi, of n phi in a porous solid) plus "
-                          "what left through the open and inflow sides, against the "
-                          "initial volume (0: never). With Physics = granular water it is "
-                          "checked every 'Material points/Check interval' steps.");
+                          "by more than this fraction of the initial volume (of the "
+                          "domain's area for a tank that starts empty): the water volume "
+                          "(the integral of phi, of n phi in a porous solid) plus what "
+                          "left through the open and inflow sides, against the initial "
+                          "volume (0: never). With Physics = granular water it is checked "
+                          "every 'Material points/Check interval' steps, at every output "
+                          "and at the end.");
         prm.declare_entry("Maximum speed",
                           "1000",
                           Double(0.),

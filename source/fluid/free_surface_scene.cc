@@ -215,7 +215,8 @@ namespace slidewave
     FreeSurfaceScene::after_step(const StepInfo &info)
     {
       dealii::TimerOutput::Scope scope(*timer, "fluid: checks and gauges");
-      balance.check(check_state(info), solver->water_volume(), solver->water_outflow);
+      const std::string where = check_state(info);
+      balance.check(where, solver->water_volume(), solver->water_outflow);
       output.record_gauges(*solver, info.time);
       if (parameters.exact_solution == FlowExactSolution::martin_moyce
           || parameters.exact_solution == FlowExactSolution::standing_wave)

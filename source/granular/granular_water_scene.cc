@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <deal.II/base/mpi.h>
 #include <limits>
 #include <slidewave/core/input_error.h>

@@ -18,8 +18,9 @@ namespace slidewave
       /** The first words of scene.txt: the format of the checkpoint's data (format 2: the
        *  cells carry their partition first, BackgroundGrid::save; format 3: granular water
        *  keeps the solid's flux of the step's start, and the water's volume is the integral
-       *  of n phi in porous solids). */
-      constexpr const char *format_tag = "checkpoint format 3: ";
+       *  of n phi in porous solids; format 4: granular water keeps the water's balance,
+       *  its initial volume and largest drift). */
+      constexpr const char *format_tag = "checkpoint format 4: ";
     } // namespace
 
 

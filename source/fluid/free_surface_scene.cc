@@ -215,7 +215,7 @@ namespace slidewave
     FreeSurfaceScene::after_step(const StepInfo &info)
     {
       dealii::TimerOutput::Scope scope(*timer, "fluid: checks and gauges");
-      const std::string where = check_state(info);
+      const std::string          where = check_state(info);
       balance.check(where, solver->water_volume(), solver->water_outflow);
       output.record_gauges(*solver, info.time);
       if (parameters.exact_solution == FlowExactSolution::martin_moyce

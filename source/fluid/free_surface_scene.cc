@@ -380,9 +380,7 @@ namespace slidewave
         }
       if (is_writer)
         {
-          std::printf("Water volume: largest drift %.3e of the initial %.6g m^2\n",
-                      balance.largest_drift(),
-                      balance.initial_volume());
+          balance.print_summary(solver->water_outflow);
           // The split of the steps' time (wall times: not in test mode's output).
           if (!scene.test_mode)
             std::printf("Step time: flow assembly %.3g s, preconditioner %.3g s (%llu builds), "
@@ -393,9 +391,6 @@ namespace slidewave
                         part_times[2],
                         flow_iterations,
                         part_times[3]);
-          if (std::abs(solver->water_outflow) > 1e-6 * balance.reference_volume())
-            std::printf("Water through the sides: %.6g m^2 out (negative: in)\n",
-                        solver->water_outflow);
           if (line[0] != '\0')
             {
               std::printf("%s", line);

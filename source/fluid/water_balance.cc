@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <slidewave/core/input_error.h>
 #include <slidewave/fluid/water_balance.h>
 
@@ -43,7 +44,7 @@ namespace slidewave
 
 
 
-    double
+    void
     WaterBalance::check(const std::string &where, const double volume, const double outflow)
     {
       const double magnitude = std::abs(drift(volume, outflow));
@@ -54,7 +55,16 @@ namespace slidewave
                            "beyond 'Free surface flow/Guards/Maximum volume drift' = "
                          + to_string(100. * parameters.max_volume_drift) + " %");
       largest = std::max(largest, magnitude);
-      return magnitude;
+    }
+
+
+
+    void
+    WaterBalance::print_summary(const double outflow) const
+    {
+      std::printf("Water volume: largest drift %.3e of the initial %.6g m^2\n", largest, initial);
+      if (std::abs(outflow) > 1e-6 * reference_volume())
+        std::printf("Water through the sides: %.6g m^2 out (negative: in)\n", outflow);
     }
 
 

@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <deal.II/base/mpi.h>
 #include <limits>
 #include <slidewave/core/input_error.h>
@@ -481,14 +480,7 @@ namespace slidewave
     GranularWaterScene::finish(const StepInfo &info)
     {
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        {
-          std::printf("Water volume: largest drift %.3e of the initial %.6g m^2\n",
-                      balance.largest_drift(),
-                      balance.initial_volume());
-          if (std::abs(fluid_solver->water_outflow) > 1e-6 * balance.reference_volume())
-            std::printf("Water through the sides: %.6g m^2 out (negative: in)\n",
-                        fluid_solver->water_outflow);
-        }
+        balance.print_summary(fluid_solver->water_outflow);
       return verification.finish(fluid_solver->flow_field(), engine->point_cloud(), info.time);
     }
 

@@ -13,8 +13,9 @@ namespace slidewave
      * The water's volume balance of a free-surface flow: the water there now plus what
      * has left through the open and inflow sides (FreeSurfaceSolver::water_outflow),
      * against the water there at the start, relative to that start (or to the domain's
-     * area when the tank starts empty). Its guard is 'Guards/Maximum volume drift'; the
-     * largest drift of the run is kept for the final report and the checkpoint.
+     * area when the tank starts empty). Its guard is 'Free surface flow/Guards/Maximum
+     * volume drift'; the largest drift of the run is kept for the final report and the
+     * checkpoint.
      *
      * In a porous solid the volume is the integral of n phi (the grains' pores hold the
      * rest), so water that the grains push through the open top of a tank counts as
@@ -33,26 +34,15 @@ namespace slidewave
       double
       drift(double volume, double outflow) const;
 
-      /** The drift's magnitude, recorded as the largest so far; beyond the guard a
+      /** Records the drift's magnitude as the largest so far; beyond the guard a
        *  RunFailure that begins with @p where. */
-      double
+      void
       check(const std::string &where, double volume, double outflow);
 
-      /** The initial volume, or the domain's area when the tank starts empty [m^2]. */
-      double
-      reference_volume() const;
-
-      double
-      initial_volume() const
-      {
-        return initial;
-      }
-
-      double
-      largest_drift() const
-      {
-        return largest;
-      }
+      /** The run's end (the caller's writing rank): the largest drift and, when water
+       *  crossed the sides, @p outflow, what left through them [m^2]. */
+      void
+      print_summary(double outflow) const;
 
       void
       save(io::CheckpointRecord &record) const;
@@ -61,6 +51,10 @@ namespace slidewave
       load(const io::CheckpointRecord &record);
 
     private:
+      /** The initial volume, or the domain's area when the tank starts empty [m^2]. */
+      double
+      reference_volume() const;
+
       const FreeSurfaceParameters &parameters;
       double                       initial = 0., largest = 0.;
     };

@@ -8,6 +8,7 @@
 #include <slidewave/core/input_error.h>
 #include <slidewave/granular/coupling_point_values.h>
 #include <slidewave/granular/drag_projection.h>
+#include <slidewave/grid/tree_order.h>
 
 namespace slidewave
 {
@@ -68,56 +69,56 @@ namespace slidewave
       cells.clear();
       for (unsigned int d = 0; d < 2; ++d)
         rhs[d] = 0.;
-      for (const auto &cell : grid.dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned() && values.reinit(cell))
+      // (in the tree's order: the conjugate gradients' sums repeat in a resumed run)
+      grid::for_each_owned_cell_in_tree_order(grid.dof_handler(), [&](const auto &cell) {
+        if (!values.reinit(cell))
+          return;
+        cell->get_dof_indices(indices);
+        CellMatrix block;
+        for (unsigned int i = 0; i < 4; ++i)
+          block.nodes[i] = nodes.local_index(indices[i]);
+        block.matrix.fill(0.);
+        double w_min = std::numeric_limits<double>::max(), w_max = 0.;
+        for (unsigned int q = 0; q < values.n_points(); ++q)
           {
-            cell->get_dof_indices(indices);
-            CellMatrix block;
+            const double solid  = 1. - values.n[q];
+            const double C      = values.drag[q];
+            const double weight = (grain_density * solid / dt + C) * fv_grid.JxW(q);
+            w_min               = std::min(w_min, weight);
+            w_max               = std::max(w_max, weight);
+            // The predicted velocity, from its flux as the water read it.
+            const dealii::Tensor<1, 2> load = (C * (values.u[q] - values.v_s[q])
+                                               - solid * (values.grad_p[q] - values.grad_p_old[q]))
+                                              * fv_grid.JxW(q);
             for (unsigned int i = 0; i < 4; ++i)
-              block.nodes[i] = nodes.local_index(indices[i]);
-            block.matrix.fill(0.);
-            double w_min = std::numeric_limits<double>::max(), w_max = 0.;
-            for (unsigned int q = 0; q < values.n_points(); ++q)
               {
-                const double solid  = 1. - values.n[q];
-                const double C      = values.drag[q];
-                const double weight = (grain_density * solid / dt + C) * fv_grid.JxW(q);
-                w_min               = std::min(w_min, weight);
-                w_max               = std::max(w_max, weight);
-                // The predicted velocity, from its flux as the water read it.
-                const dealii::Tensor<1, 2> load
-                  = (C * (values.u[q] - values.v_s[q])
-                     - solid * (values.grad_p[q] - values.grad_p_old[q]))
-                    * fv_grid.JxW(q);
-                for (unsigned int i = 0; i < 4; ++i)
-                  {
-                    const double Ni = fv_grid.shape_value(i, q);
-                    for (unsigned int d = 0; d < 2; ++d)
-                      rhs[d].local_element(block.nodes[i]) += load[d] * Ni;
-                    for (unsigned int j = 0; j < 4; ++j)
-                      block.matrix[4 * i + j] += weight * Ni * fv_grid.shape_value(j, q);
-                  }
+                const double Ni = fv_grid.shape_value(i, q);
+                for (unsigned int d = 0; d < 2; ++d)
+                  rhs[d].local_element(block.nodes[i]) += load[d] * Ni;
+                for (unsigned int j = 0; j < 4; ++j)
+                  block.matrix[4 * i + j] += weight * Ni * fv_grid.shape_value(j, q);
               }
-            // Where the weight varies across the cell (the mass's edge, where the grains
-            // thin out) the consistent matrix extrapolates: a node of the cell's light
-            // corner takes many times its heavy neighbour's increment, of opposite sign.
-            // There the cell's matrix is lumped in proportion to the weight's variation,
-            // 1 - w_min / w_max (its row sums, and so the momentum, unchanged); a cell
-            // of uniform weight (inside the mass) keeps the consistent one.
-            const double lumping = w_max > 0. ? 1. - w_min / w_max : 0.;
-            if (lumping > 0.)
-              for (unsigned int i = 0; i < 4; ++i)
-                {
-                  double row = 0.;
-                  for (unsigned int j = 0; j < 4; ++j)
-                    {
-                      row += block.matrix[4 * i + j];
-                      block.matrix[4 * i + j] *= 1. - lumping;
-                    }
-                  block.matrix[4 * i + i] += lumping * row;
-                }
-            cells.push_back(block);
           }
+        // Where the weight varies across the cell (the mass's edge, where the grains
+        // thin out) the consistent matrix extrapolates: a node of the cell's light
+        // corner takes many times its heavy neighbour's increment, of opposite sign.
+        // There the cell's matrix is lumped in proportion to the weight's variation,
+        // 1 - w_min / w_max (its row sums, and so the momentum, unchanged); a cell
+        // of uniform weight (inside the mass) keeps the consistent one.
+        const double lumping = w_max > 0. ? 1. - w_min / w_max : 0.;
+        if (lumping > 0.)
+          for (unsigned int i = 0; i < 4; ++i)
+            {
+              double row = 0.;
+              for (unsigned int j = 0; j < 4; ++j)
+                {
+                  row += block.matrix[4 * i + j];
+                  block.matrix[4 * i + j] *= 1. - lumping;
+                }
+              block.matrix[4 * i + i] += lumping * row;
+            }
+        cells.push_back(block);
+      });
       for (unsigned int d = 0; d < 2; ++d)
         {
           nodes.condense_hanging_nodes(rhs[d]);

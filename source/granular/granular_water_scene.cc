@@ -442,11 +442,13 @@ namespace slidewave
       statistics.add_value("time", info.time);
       statistics.add_value("step", info.step);
       statistics.add_value("dt", info.dt);
-      // The balance, water_volume + water_outflow - the first row's water_volume, is not a
-      // column: its cancellation shows the last bit of the volume's sum over the cells,
-      // which a resumed run on an adaptive grid does not repeat (doc/granular-water.md).
-      statistics.add_value("water_volume", fluid_solver->water_volume());
+      // The balance, (water_volume + water_outflow - the first row's water_volume) / that
+      // volume: its cancellation shows the last bit of the volume's sum over the cells,
+      // which a run resumed on an adaptive grid repeats (doc/checkpoints.md, "Exact").
+      const double volume = fluid_solver->water_volume();
+      statistics.add_value("water_volume", volume);
       statistics.add_value("water_outflow", fluid_solver->water_outflow);
+      statistics.add_value("volume_drift", balance.drift(volume, fluid_solver->water_outflow));
       statistics.add_value("water_max_speed", fluid_solver->max_speed());
       statistics.add_value("skeleton_kinetic_energy", skeleton.kinetic_energy);
       statistics.add_value("skeleton_max_speed", skeleton.max_speed);

@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <slidewave/granular/coupling_point_values.h>
 #include <slidewave/granular/skeleton_fluid_exchange.h>
+#include <slidewave/grid/tree_order.h>
 #include <vector>
 
 namespace slidewave
@@ -133,25 +134,24 @@ namespace slidewave
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
       for (unsigned int d = 0; d < 2; ++d)
         force[d] = 0.;
-      for (const auto &cell : grid.dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned())
+      // (in the tree's order, as every sum into the nodes: a resumed run repeats it)
+      grid::for_each_owned_cell_in_tree_order(grid.dof_handler(), [&](const auto &cell) {
+        fv_scalar.reinit(fields.fluid_fraction->cell_on(cell));
+        fv_scalar.get_function_values(fields.fluid_fraction->values(0), n);
+        if (*std::min_element(n.begin(), n.end()) >= 1.)
+          return; // no grains in the cell
+        fv_flow.reinit(flow.cell_on(cell));
+        fv_flow[pressure].get_function_gradients(flow.values(0), grad_p);
+        fv_grid.reinit(cell);
+        cell->get_dof_indices(indices);
+        for (unsigned int q = 0; q < n_q; ++q)
           {
-            fv_scalar.reinit(fields.fluid_fraction->cell_on(cell));
-            fv_scalar.get_function_values(fields.fluid_fraction->values(0), n);
-            if (*std::min_element(n.begin(), n.end()) >= 1.)
-              continue; // no grains in the cell
-            fv_flow.reinit(flow.cell_on(cell));
-            fv_flow[pressure].get_function_gradients(flow.values(0), grad_p);
-            fv_grid.reinit(cell);
-            cell->get_dof_indices(indices);
-            for (unsigned int q = 0; q < n_q; ++q)
-              {
-                const dealii::Tensor<1, 2> traction = -grad_p[q] * fv_grid.JxW(q);
-                for (unsigned int i = 0; i < indices.size(); ++i)
-                  for (unsigned int d = 0; d < 2; ++d)
-                    force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
-              }
+            const dealii::Tensor<1, 2> traction = -grad_p[q] * fv_grid.JxW(q);
+            for (unsigned int i = 0; i < indices.size(); ++i)
+              for (unsigned int d = 0; d < 2; ++d)
+                force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
           }
+      });
       lump_on_grains(nodes, force);
     }
 
@@ -195,29 +195,28 @@ namespace slidewave
       // Semi-implicit: the drag on the grains' side is - C v_s of the new step, which the
       // nodes take implicitly with W_I (PorousSkeletonModel::update_nodal_velocity).
       const double explicit_drag = water_drag != nullptr ? 0. : 1.;
-      for (const auto &cell : grid.dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned() && values.reinit(cell))
+      grid::for_each_owned_cell_in_tree_order(grid.dof_handler(), [&](const auto &cell) {
+        if (!values.reinit(cell))
+          return;
+        cell->get_dof_indices(indices);
+        for (unsigned int q = 0; q < values.n_points(); ++q)
           {
-            cell->get_dof_indices(indices);
-            for (unsigned int q = 0; q < values.n_points(); ++q)
-              {
-                const double               C = values.drag[q];
-                const dealii::Tensor<1, 2> traction
-                  = C * (values.u[q] - explicit_drag * values.v_s[q]) * fv_grid.JxW(q);
-                // (the pressure's share, -integral N_I grad p, lumped on the grains below)
-                const dealii::Tensor<1, 2> pressure_traction = -values.grad_p[q] * fv_grid.JxW(q);
-                for (unsigned int i = 0; i < indices.size(); ++i)
-                  for (unsigned int d = 0; d < 2; ++d)
-                    {
-                      force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
-                      pressure_work[d](indices[i])
-                        += pressure_traction[d] * fv_grid.shape_value(i, q);
-                    }
-                if (water_drag != nullptr)
-                  for (unsigned int i = 0; i < indices.size(); ++i)
-                    (*water_drag)(indices[i]) += C * fv_grid.JxW(q) * fv_grid.shape_value(i, q);
-              }
+            const double               C = values.drag[q];
+            const dealii::Tensor<1, 2> traction
+              = C * (values.u[q] - explicit_drag * values.v_s[q]) * fv_grid.JxW(q);
+            // (the pressure's share, -integral N_I grad p, lumped on the grains below)
+            const dealii::Tensor<1, 2> pressure_traction = -values.grad_p[q] * fv_grid.JxW(q);
+            for (unsigned int i = 0; i < indices.size(); ++i)
+              for (unsigned int d = 0; d < 2; ++d)
+                {
+                  force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
+                  pressure_work[d](indices[i]) += pressure_traction[d] * fv_grid.shape_value(i, q);
+                }
+            if (water_drag != nullptr)
+              for (unsigned int i = 0; i < indices.size(); ++i)
+                (*water_drag)(indices[i]) += C * fv_grid.JxW(q) * fv_grid.shape_value(i, q);
           }
+      });
       // What landed on a hanging node belongs to its parents (the transpose of the
       // interpolation, as the points' scatter): no force is lost where cells change size.
       for (unsigned int d = 0; d < 2; ++d)

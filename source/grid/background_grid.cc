@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstring>
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -441,7 +442,7 @@ namespace slidewave
     BackgroundGrid::finish_change()
     {
       vertex_to_cells = dealii::GridTools::vertex_to_cell_map(tria);
-      dofs.distribute_dofs(fe);
+      number_dofs();
       for (GridFollower *follower : followers)
         follower->grid_changed();
     }
@@ -453,7 +454,21 @@ namespace slidewave
     {
       dofs.reinit(tria);
       vertex_to_cells = dealii::GridTools::vertex_to_cell_map(tria);
+      number_dofs();
+    }
+
+
+
+    void
+    BackgroundGrid::number_dofs()
+    {
       dofs.distribute_dofs(fe);
+      // Numbered along the cells' tree (p4est's space-filling curve), not in the order in
+      // which refinement happened to create the cells: a grid read from a checkpoint then
+      // has the nodes' numbers of the run that wrote it, and every sum over the nodes (the
+      // nodal vectors' norms, the drag projection's conjugate gradients) repeats the
+      // uninterrupted run to the last bit (FiniteElementField::setup_dofs() does the same).
+      dealii::DoFRenumbering::hierarchical(dofs);
     }
 
 

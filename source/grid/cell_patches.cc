@@ -57,7 +57,14 @@ namespace slidewave
               if (other != cell
                   && std::find(neighbours.begin(), neighbours.end(), other) == neighbours.end())
                 neighbours.push_back(other);
-          std::sort(neighbours.begin(), neighbours.end());
+          // In the order of their centres (by rows, bottom up), which depends on the grid
+          // only, not on the indices refinement and coarsening happened to give the cells:
+          // a GIMP point's sums over its patch then repeat in a run resumed from a
+          // checkpoint (on a uniform grid it is the cells' own order).
+          std::sort(neighbours.begin(), neighbours.end(), [](const auto &a, const auto &b) {
+            const dealii::Point<2> ca = a->center(), cb = b->center();
+            return ca[1] < cb[1] || (ca[1] == cb[1] && ca[0] < cb[0]);
+          });
           for (const auto &other : neighbours)
             {
               patch_cells.push_back(make_entry(dealii::DoFHandler<2>::active_cell_iterator(

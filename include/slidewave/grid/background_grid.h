@@ -258,6 +258,10 @@ namespace slidewave
       void
       distribute_dofs();
 
+      /** Distributes the dofs and numbers them in the tree's order. */
+      void
+      number_dofs();
+
       /** Owned cells the followers need fine, grown by the buffer (collective). */
       std::vector<bool>
       cells_to_keep_fine() const;

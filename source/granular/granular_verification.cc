@@ -14,6 +14,7 @@
 #include <slidewave/granular/drag_law.h>
 #include <slidewave/granular/granular_verification.h>
 #include <slidewave/granular/terzaghi.h>
+#include <slidewave/grid/tree_order.h>
 #include <slidewave/soil/particle_properties.h>
 
 namespace slidewave
@@ -39,15 +40,14 @@ namespace slidewave
       {
         const auto                                  &fe = flow.finite_element();
         std::vector<dealii::types::global_dof_index> indices(fe.n_dofs_per_cell());
-        for (const auto &cell : flow.dof_handler().active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              cell->get_dof_indices(indices);
-              for (unsigned int k = 0; k < indices.size(); ++k)
-                if (fe.system_to_component_index(k).first == 2)
-                  f(cell->vertex(fe.system_to_component_index(k).second)[1],
-                    flow.values(0)[indices[k]]);
-            }
+        // (in the tree's order: the least squares' sums repeat in a resumed run)
+        grid::for_each_owned_cell_in_tree_order(flow.dof_handler(), [&](const auto &cell) {
+          cell->get_dof_indices(indices);
+          for (unsigned int k = 0; k < indices.size(); ++k)
+            if (fe.system_to_component_index(k).first == 2)
+              f(cell->vertex(fe.system_to_component_index(k).second)[1],
+                flow.values(0)[indices[k]]);
+        });
       }
     } // namespace
 
@@ -149,17 +149,17 @@ namespace slidewave
       const dealii::FEValuesExtractors::Scalar pressure(2);
       std::vector<double>                      p(quadrature.size());
       double                                   integral = 0., area = 0.;
-      for (const auto &cell : flow.dof_handler().active_cell_iterators())
-        if (cell->is_locally_owned() && cell->center()[1] < base + H)
+      grid::for_each_owned_cell_in_tree_order(flow.dof_handler(), [&](const auto &cell) {
+        if (cell->center()[1] >= base + H)
+          return;
+        fv.reinit(cell);
+        fv[pressure].get_function_values(flow.values(0), p);
+        for (unsigned int q = 0; q < p.size(); ++q)
           {
-            fv.reinit(cell);
-            fv[pressure].get_function_values(flow.values(0), p);
-            for (unsigned int q = 0; q < p.size(); ++q)
-              {
-                integral += p[q] * fv.JxW(q);
-                area += fv.JxW(q);
-              }
+            integral += p[q] * fv.JxW(q);
+            area += fv.JxW(q);
           }
+      });
       largest  = dealii::Utilities::MPI::max(largest, MPI_COMM_WORLD);
       integral = dealii::Utilities::MPI::sum(integral, MPI_COMM_WORLD);
       area     = dealii::Utilities::MPI::sum(area, MPI_COMM_WORLD);

@@ -443,8 +443,9 @@ namespace slidewave
       statistics.add_value("step", info.step);
       statistics.add_value("dt", info.dt);
       // The balance, (water_volume + water_outflow - the first row's water_volume) / that
-      // volume: its cancellation shows the last bit of the volume's sum over the cells,
-      // which a run resumed on an adaptive grid repeats (doc/checkpoints.md, "Exact").
+      // volume (WaterBalance::drift): its cancellation usually shows the last bit of the
+      // volume's sum over the cells, which a run resumed on an adaptive grid repeats
+      // (doc/checkpoints.md, "Exact").
       const double volume = fluid_solver->water_volume();
       statistics.add_value("water_volume", volume);
       statistics.add_value("water_outflow", fluid_solver->water_outflow);

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <limits>
 #include <slidewave/grid/background_grid.h>
+#include <slidewave/grid/tree_order.h>
 
 namespace slidewave
 {
@@ -482,14 +483,13 @@ namespace slidewave
                                                               relevant,
                                                               tria.get_communicator());
       std::vector<dealii::types::global_dof_index>       indices(4);
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(indices);
-            const double quarter = 0.25 * cell->measure();
-            for (const auto i : indices)
-              area[i] += quarter;
-          }
+      // (in the tree's order: a node's sum of its cells' quarters repeats in a resumed run)
+      for_each_owned_cell_in_tree_order(dofs, [&](const auto &cell) {
+        cell->get_dof_indices(indices);
+        const double quarter = 0.25 * cell->measure();
+        for (const auto i : indices)
+          area[i] += quarter;
+      });
       area.compress(dealii::VectorOperation::add);
       area.update_ghost_values();
       return area;

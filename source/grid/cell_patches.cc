@@ -57,13 +57,13 @@ namespace slidewave
               if (other != cell
                   && std::find(neighbours.begin(), neighbours.end(), other) == neighbours.end())
                 neighbours.push_back(other);
-          // In the order of their centres (by rows, bottom up), which depends on the grid
-          // only, not on the indices refinement and coarsening happened to give the cells:
-          // a GIMP point's sums over its patch then repeat in a run resumed from a
-          // checkpoint (on a uniform grid it is the cells' own order).
+          // In the order of their lower left corners (by rows, bottom up; no two active
+          // cells share one), which depends on the grid only, not on the indices
+          // refinement and coarsening happened to give the cells: a GIMP point's sums over
+          // its patch then repeat in a run resumed from a checkpoint.
           std::sort(neighbours.begin(), neighbours.end(), [](const auto &a, const auto &b) {
-            const dealii::Point<2> ca = a->center(), cb = b->center();
-            return ca[1] < cb[1] || (ca[1] == cb[1] && ca[0] < cb[0]);
+            const dealii::Point<2> &pa = a->vertex(0), &pb = b->vertex(0);
+            return pa[1] < pb[1] || (pa[1] == pb[1] && pa[0] < pb[0]);
           });
           for (const auto &other : neighbours)
             {

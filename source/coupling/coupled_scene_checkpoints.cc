@@ -23,6 +23,7 @@ namespace slidewave
           << "; materials";
       for (const auto &material : soil_parameters.materials)
         out << " " << material.signature();
+      out << engine::signature(soil_parameters.velocity_transfer);
       out << "; water cells: "
           << (coupling.water_cells == WaterCells::grid_columns ? "grid columns" : "water mesh")
           << "; loads on soil: " << (coupling.loads_on_soil ? "yes" : "no");

@@ -113,6 +113,7 @@ namespace slidewave
       Engine::Settings settings;
       settings.shape_function            = soil_parameters.shape_function;
       settings.flip_fraction             = soil_parameters.flip_fraction;
+      settings.velocity_transfer         = soil_parameters.velocity_transfer;
       settings.flip_reference_multiplier = soil::reference_time_step_multiplier;
       settings.musl                      = soil_parameters.update_scheme != soil::UpdateScheme::usl;
       settings.full_sort_every_step      = soil_parameters.full_sort_every_step;
@@ -506,6 +507,7 @@ namespace slidewave
       // (a material's model decides its points' properties: Hencky's carry b^e)
       for (const auto &material : soil_parameters.materials)
         out << " " << material.signature();
+      out << engine::signature(soil_parameters.velocity_transfer);
       // (a solid holds the water's and the skeleton's nodes: another one is another scene)
       for (const auto &solid : fluid_parameters.solids)
         {

@@ -50,14 +50,17 @@ namespace slidewave
         }
       if (with_positions)
         {
-          node_positions.resize(nodal_mass.locally_owned_size());
+          // The ghost nodes too: a point near the partition's edge scatters to them.
           const auto &partitioner = *nodal_mass.get_partitioner();
+          node_positions.resize(partitioner.locally_owned_size() + partitioner.n_ghost_indices());
           for (const auto &cell : dofs.active_cell_iterators())
-            if (cell->is_locally_owned())
+            if (!cell->is_artificial())
               for (const unsigned int v : cell->vertex_indices())
-                if (partitioner.in_local_range(cell->vertex_dof_index(v, 0)))
-                  node_positions[partitioner.global_to_local(cell->vertex_dof_index(v, 0))]
-                    = cell->vertex(v);
+                {
+                  const auto index = cell->vertex_dof_index(v, 0);
+                  if (partitioner.in_local_range(index) || partitioner.is_ghost_entry(index))
+                    node_positions[partitioner.global_to_local(index)] = cell->vertex(v);
+                }
         }
       const auto &partitioner = nodal_mass.get_partitioner();
       active_nodes.clear();

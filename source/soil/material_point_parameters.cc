@@ -64,6 +64,17 @@ namespace slidewave
                           "multiplier 0.5 (dt_ref = 0.5 h / max_p (c_p + |v_p|)); a step dt "
                           "blends FLIP^(dt / dt_ref), so that PIC's damping is a rate and the "
                           "results converge as the step shrinks (doc/mpm.md).");
+        prm.declare_entry("Velocity transfer",
+                          "flip",
+                          Selection("flip|apic"),
+                          "How the points' velocities go to the grid and back. 'flip': they "
+                          "scatter m_p v_p and take back the 'FLIP fraction' blend. 'apic': "
+                          "the affine particle-in-cell transfer (Jiang et al. 2015): each "
+                          "point also carries the velocity gradient C_p of the grid's new "
+                          "velocities (properties affine_xx, affine_xy, affine_yx, affine_yy), "
+                          "scatters m_p N_I (v_p + C_p (x_I - x_p)) and takes back the nodal "
+                          "velocity: PIC without PIC's damping of rotation and shear, and "
+                          "without FLIP's noise; 'FLIP fraction' is then unused (doc/mpm.md).");
         prm.declare_entry("Time step multiplier",
                           "0.5",
                           Double(),
@@ -520,6 +531,8 @@ namespace slidewave
                                                      grid::ShapeFunction::q1;
       update_scheme = prm.get("Update scheme") == "musl" ? UpdateScheme::musl : UpdateScheme::usl;
       flip_fraction = prm.get_double("FLIP fraction");
+      velocity_transfer = prm.get("Velocity transfer") == "apic" ? engine::VelocityTransfer::apic :
+                                                                   engine::VelocityTransfer::flip;
       time_step_multiplier = prm.get_double("Time step multiplier");
       if (!(time_step_multiplier > 0. && time_step_multiplier <= max_time_step_multiplier))
         throw InputError(path + "/Time step multiplier",

@@ -242,6 +242,7 @@ namespace slidewave
           << (parameters.adaptivity.enabled ? parameters.adaptivity.levels : 0) << "; materials";
       for (const auto &material : parameters.materials)
         out << " " << material.signature();
+      out << engine::signature(parameters.velocity_transfer);
       return out.str();
     }
 

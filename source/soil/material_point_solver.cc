@@ -19,6 +19,7 @@ namespace slidewave
         engine::ParticleEngine<SoilModel>::Settings settings;
         settings.shape_function            = prm.shape_function;
         settings.flip_fraction             = prm.flip_fraction;
+        settings.velocity_transfer         = prm.velocity_transfer;
         settings.flip_reference_multiplier = reference_time_step_multiplier;
         settings.musl                      = prm.update_scheme != UpdateScheme::usl;
         settings.full_sort_every_step      = prm.full_sort_every_step;

@@ -48,6 +48,13 @@ namespace slidewave
           for (const auto &name : FiniteStrainPoints::property_names())
             property_layout.add_scalar(name);
         }
+      // APIC's affine matrix only when chosen.
+      if (prm.velocity_transfer == engine::VelocityTransfer::apic)
+        {
+          for (const auto &name : engine::affine_property_names())
+            property_layout.add_scalar(name);
+          affine_index = engine::affine_index(property_layout, prm.velocity_transfer);
+        }
     }
 
 
@@ -244,6 +251,23 @@ namespace slidewave
       properties[property::domain_half_y]     = 0.5 * hy / n;
       if (finite_strain)
         finite_strain->initialize(properties);
+      if (affine_index != dealii::numbers::invalid_unsigned_int)
+        {
+          // APIC: C_p = grad v of the initial velocity at the point, by central
+          // differences a thousandth of the point's spacing wide (exact for a linear
+          // field, zero for a uniform one).
+          const double d = 1e-3 * std::min(hx, hy) / n;
+          for (unsigned int j = 0; j < 2; ++j)
+            {
+              dealii::Tensor<1, 2> step;
+              step[j]                      = d;
+              const dealii::Tensor<1, 2> g = (region.initial_velocity(position + step)
+                                              - region.initial_velocity(position - step))
+                                             / (2. * d);
+              for (unsigned int i = 0; i < 2; ++i)
+                properties[affine_index + 2 * i + j] = g[i];
+            }
+        }
     }
 
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <slidewave/core/step_timeline.h>
 #include <slidewave/engine/transfer_kernels.h>
+#include <slidewave/engine/velocity_transfer.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/cell_patches.h>
 #include <slidewave/grid/grid_boundary.h>
@@ -58,6 +59,9 @@ namespace slidewave
          *  reference step; pure PIC and pure FLIP unchanged). 0: the same blend every
          *  step. */
         double flip_reference_multiplier = 0.;
+        /** The points' velocity transfer: the FLIP blend above, or APIC (the model's
+         *  layout then holds affine_property_names(); flip_fraction is unused). */
+        VelocityTransfer velocity_transfer = VelocityTransfer::flip;
         /** Modified update stress last: re-map the velocities before the update. */
         bool musl = false;
         /** Relocate the points by deal.II's full sort every step. */
@@ -175,7 +179,7 @@ namespace slidewave
       flip_fraction_of_step(double dt) const;
 
       /** Whether the FLIP blend depends on the step (Settings::flip_reference_multiplier,
-       *  a blend strictly between PIC and FLIP). */
+       *  a blend strictly between PIC and FLIP; never with APIC). */
       bool
       blends_by_rate() const;
 

@@ -26,7 +26,7 @@ namespace slidewave
       , settings(settings)
       , cloud(grid, model.layout(), Model::mass, sides, settings.particle_weight)
       , nodes(grid,
-              settings.with_node_positions,
+              settings.with_node_positions || settings.velocity_transfer == VelocityTransfer::apic,
               Model::n_nodal_fields,
               model.n_used_nodal_fields(),
               model.needs_lumped_area())
@@ -37,7 +37,10 @@ namespace slidewave
                 nodes,
                 patches,
                 constraints,
-                {settings.shape_function, model.empty_node_mass(), settings.prescribed_velocity})
+                {settings.shape_function,
+                 model.empty_node_mass(),
+                 settings.prescribed_velocity,
+                 affine_index(model.layout(), settings.velocity_transfer)})
     {
       // The order of the followers is the order of their rebuilding after a grid change:
       // the points first, then the nodes, and what is built on the nodes.
@@ -293,7 +296,8 @@ namespace slidewave
     ParticleEngine<Model>::blends_by_rate() const
     {
       const double flip = settings.flip_fraction;
-      return settings.flip_reference_multiplier > 0. && flip > 0. && flip < 1.;
+      return settings.velocity_transfer == VelocityTransfer::flip
+             && settings.flip_reference_multiplier > 0. && flip > 0. && flip < 1.;
     }
 
 

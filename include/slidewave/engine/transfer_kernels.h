@@ -2,6 +2,7 @@
 #define slidewave_engine_transfer_kernels_h
 
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <slidewave/core/step_timeline.h>
@@ -66,6 +67,10 @@ namespace slidewave
         double empty_node_mass = 0.;
         /** Kinematic mode: the nodal velocities are this field (null: off). */
         dealii::FunctionParser<2> *prescribed_velocity = nullptr;
+        /** APIC (VelocityTransfer::apic): the index of the affine matrix's first property
+         *  (C_xx; C_xy, C_yx, C_yy follow) among the points' properties, which the
+         *  workspace's node positions then serve; invalid: the PIC/FLIP blend. */
+        unsigned int affine = dealii::numbers::invalid_unsigned_int;
       };
 
       TransferKernels(const Model                     &model,
@@ -91,13 +96,15 @@ namespace slidewave
       void
       update_grid(double dt, double time);
 
-      /** Velocities (PIC/FLIP, Eq. 20, with the step's FLIP fraction @p flip) and new
-       *  positions (Eq. 21, in new_positions()); with @p with_stresses (USL) also the
-       *  model's update in the same pass. */
+      /** Velocities (PIC/FLIP, Eq. 20, with the step's FLIP fraction @p flip; with APIC
+       *  the nodal velocity and its gradient, @p flip unused) and new positions (Eq. 21,
+       *  in new_positions()); with @p with_stresses (USL) also the model's update in the
+       *  same pass. */
       void
       grid_to_particles(double dt, bool with_stresses, double flip);
 
-      /** MUSL: nodal velocities from the updated particle momenta (collective). */
+      /** MUSL: nodal velocities from the updated particle momenta (with APIC their
+       *  affine parts too; collective). */
       void
       remap_velocities_to_grid();
 
@@ -117,6 +124,22 @@ namespace slidewave
       }
 
     private:
+      /** With APIC, the velocity the point of properties @p p at @p x scatters to the
+       *  node at @p node: v_p + C_p (x_I − x_p). */
+      template <typename Properties>
+      void
+      add_affine_velocity(const Properties       &p,
+                          const dealii::Point<2> &x,
+                          const dealii::Point<2> &node,
+                          double                 &vx,
+                          double                 &vy) const
+      {
+        const unsigned int a  = settings.affine;
+        const double       dx = node[0] - x[0], dy = node[1] - x[1];
+        vx += p[a] * dx + p[a + 1] * dy;
+        vy += p[a + 2] * dx + p[a + 3] * dy;
+      }
+
       template <typename ParticleAccessorType>
       void
       shape_weights(const ParticleAccessorType &particle,

@@ -73,6 +73,7 @@ namespace slidewave
       grid::NodeWeights w;
       // Q1 talks to the nodes of the point's cell, GIMP to those of the cell's patch.
       const bool whole_patch = settings.shape_function != grid::ShapeFunction::q1;
+      const bool apic        = settings.affine != dealii::numbers::invalid_unsigned_int;
       // The workspace's sums as a plain pointer, taken once: the point loop then indexes
       // it directly instead of going through the workspace on every node. The stride is
       // known at compile time: mass, momentum, force and the model's nodal fields.
@@ -90,8 +91,9 @@ namespace slidewave
         for (const auto &particle : particles_in_cell)
           {
             shape_weights(particle, cell_index, w);
-            const auto terms
-              = model.scatter_terms(particle.get_properties(), particle.get_location());
+            const auto             p     = particle.get_properties();
+            const dealii::Point<2> x     = particle.get_location();
+            const auto             terms = model.scatter_terms(p, x);
             for (unsigned int k = 0; k < w.n; ++k)
               {
                 // Everything read from the weights before anything is written to the
@@ -100,9 +102,12 @@ namespace slidewave
                 const double mk   = w.value[k] * terms.m;
                 double       fx, fy;
                 model.nodal_force(terms, w, k, mk, fx, fy);
+                double vx = terms.vx, vy = terms.vy;
+                if (apic)
+                  add_affine_velocity(p, x, nodes.position(w.node[k]), vx, vy);
                 sums[0] += mk;
-                sums[1] += mk * terms.vx;
-                sums[2] += mk * terms.vy;
+                sums[1] += mk * vx;
+                sums[2] += mk * vy;
                 sums[3] += fx;
                 sums[4] += fy;
                 model.scatter_fields(terms, w.value[k], sums + grid::NodalWorkspace::n_base_sums);
@@ -263,18 +268,23 @@ namespace slidewave
         for (unsigned int d = 0; d < 2; ++d)
           momentum[d].local_element(i) = 0.;
       grid::NodeWeights w;
+      const bool        apic = settings.affine != dealii::numbers::invalid_unsigned_int;
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
         const unsigned int cell_index = cell->active_cell_index();
         for (const auto &particle : particles_in_cell)
           {
             shape_weights(particle, cell_index, w);
-            const auto   p  = particle.get_properties();
-            const double px = p[Model::mass] * p[Model::velocity_x];
-            const double py = p[Model::mass] * p[Model::velocity_y];
+            const auto   p = particle.get_properties();
+            const double m = p[Model::mass];
             for (unsigned int k = 0; k < w.n; ++k)
               {
-                momentum[0].local_element(w.node[k]) += w.value[k] * px;
-                momentum[1].local_element(w.node[k]) += w.value[k] * py;
+                // With APIC the updated affine part too, about the old position.
+                double vx = p[Model::velocity_x], vy = p[Model::velocity_y];
+                if (apic)
+                  add_affine_velocity(
+                    p, particle.get_location(), nodes.position(w.node[k]), vx, vy);
+                momentum[0].local_element(w.node[k]) += w.value[k] * (m * vx);
+                momentum[1].local_element(w.node[k]) += w.value[k] * (m * vy);
               }
           }
       });
@@ -311,6 +321,7 @@ namespace slidewave
       // the velocity gradients come from the same nodal velocities, so the stresses are
       // updated in the same pass.
       grid::NodeWeights w;
+      const bool        apic = settings.affine != dealii::numbers::invalid_unsigned_int;
       // The workspace's velocities as a plain pointer, taken once (see particles_to_grid).
       const double *const all_velocities = nodes.velocities(0);
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
@@ -342,8 +353,13 @@ namespace slidewave
             // The model's nodal fields at the point (before its update, with_stresses).
             model.gather_fields(w, nodes, p, with_stresses);
             // A point whose nodes are all at rest (held by friction) is at rest with them
-            // when the model says so: FLIP would keep its departure from their mean.
-            const double f       = Model::rests_with_its_nodes && !grid_moves ? 0. : flip;
+            // when the model says so: FLIP would keep its departure from their mean. APIC
+            // takes the nodal velocity and keeps its gradient.
+            const double f = apic || (Model::rests_with_its_nodes && !grid_moves) ? 0. : flip;
+            if (apic)
+              for (unsigned int i = 0; i < 2; ++i)
+                for (unsigned int j = 0; j < 2; ++j)
+                  p[settings.affine + 2 * i + j] = L[i][j];
             p[Model::velocity_x] = f * (p[Model::velocity_x] + dv[0]) + (1. - f) * v_new[0];
             p[Model::velocity_y] = f * (p[Model::velocity_y] + dv[1]) + (1. - f) * v_new[1];
             dealii::Point<2> &x  = positions[particle.get_local_index()];

@@ -45,9 +45,10 @@ namespace slidewave
       static constexpr unsigned int n_velocities = 4;
 
       /**
-       * @p with_node_positions: keep the positions of the owned nodes (a prescribed
-       * velocity field needs them); @p n_model_fields: the nodal fields the model
-       * declares (the stride of the scatter's sums is n_base_sums + n_model_fields);
+       * @p with_node_positions: keep the positions of the owned and ghost nodes (a
+       * prescribed velocity field and APIC's affine transfer need them); @p n_model_fields: the
+       * nodal fields the model declares (the stride of the scatter's sums is n_base_sums +
+       * n_model_fields);
        * @p n_used_fields: how many of them (the first ones) this run uses, allocated as
        * vectors; @p with_lumped_area: keep 1 / the lumped area of each node.
        */
@@ -147,7 +148,7 @@ namespace slidewave
         return active_nodes;
       }
 
-      /** Position of owned node @p i (local index; only with_node_positions). */
+      /** Position of owned or ghost node @p i (local index; only with_node_positions). */
       const dealii::Point<2> &
       position(const unsigned int i) const
       {

@@ -8,6 +8,7 @@
 #include <deal.II/base/tensor.h>
 #include <memory>
 #include <slidewave/core/memory_estimate.h>
+#include <slidewave/engine/velocity_transfer.h>
 #include <slidewave/grid/grid_boundary.h>
 #include <slidewave/grid/rigid_solid.h>
 #include <slidewave/grid/rigid_wall.h>
@@ -80,11 +81,13 @@ namespace slidewave
       grid::ShapeFunction shape_function          = grid::ShapeFunction::q1;
       UpdateScheme        update_scheme           = UpdateScheme::usl;
       double              flip_fraction           = 0.99;
-      double              time_step_multiplier    = 0.5;
-      double              fixed_time_step         = 0.;
-      bool                b_bar                   = true;
-      bool                detailed_timing         = false;
-      bool                step_timeline           = false;
+      /** 'Velocity transfer': the FLIP blend or APIC (engine::VelocityTransfer). */
+      engine::VelocityTransfer velocity_transfer    = engine::VelocityTransfer::flip;
+      double                   time_step_multiplier = 0.5;
+      double                   fixed_time_step      = 0.;
+      bool                     b_bar                = true;
+      bool                     detailed_timing      = false;
+      bool                     step_timeline        = false;
       /** 'Particle relocation = full sort': deal.II's sort every step. */
       bool                 full_sort_every_step = false;
       dealii::Tensor<1, 2> gravity;

@@ -53,7 +53,7 @@ namespace slidewave
         {
           for (const auto &name : engine::affine_property_names())
             property_layout.add_scalar(name);
-          affine_index = engine::affine_index(property_layout, prm.velocity_transfer);
+          affine_first = engine::affine_index(property_layout, prm.velocity_transfer);
         }
     }
 
@@ -251,21 +251,21 @@ namespace slidewave
       properties[property::domain_half_y]     = 0.5 * hy / n;
       if (finite_strain)
         finite_strain->initialize(properties);
-      if (affine_index != dealii::numbers::invalid_unsigned_int)
+      if (affine_first != dealii::numbers::invalid_unsigned_int)
         {
-          // APIC: C_p = grad v of the initial velocity at the point, by central
-          // differences a thousandth of the point's spacing wide (exact for a linear
-          // field, zero for a uniform one).
-          const double d = 1e-3 * std::min(hx, hy) / n;
+          // APIC: C_p = grad v of the initial velocity across the point's own domain
+          // (exact for a linear field, zero for a uniform one; a jump inside the domain
+          // gives the jump over the point's width, not an unbounded slope).
           for (unsigned int j = 0; j < 2; ++j)
             {
-              dealii::Tensor<1, 2> step;
-              step[j]                      = d;
-              const dealii::Tensor<1, 2> g = (region.initial_velocity(position + step)
-                                              - region.initial_velocity(position - step))
-                                             / (2. * d);
+              const double         spacing = (j == 0 ? hx : hy) / n;
+              dealii::Tensor<1, 2> half_step;
+              half_step[j]                 = 0.5 * spacing;
+              const dealii::Tensor<1, 2> g = (region.initial_velocity(position + half_step)
+                                              - region.initial_velocity(position - half_step))
+                                             / spacing;
               for (unsigned int i = 0; i < 2; ++i)
-                properties[affine_index + 2 * i + j] = g[i];
+                properties[affine_first + 2 * i + j] = g[i];
             }
         }
     }
@@ -362,8 +362,11 @@ namespace slidewave
           auto p                  = particle.get_properties();
           p[property::velocity_x] = 0.;
           p[property::velocity_y] = 0.;
-          p[property::initial_x]  = particle.get_location()[0];
-          p[property::initial_y]  = particle.get_location()[1];
+          if (affine_first != dealii::numbers::invalid_unsigned_int)
+            for (unsigned int i = 0; i < 4; ++i)
+              p[affine_first + i] = 0.;
+          p[property::initial_x] = particle.get_location()[0];
+          p[property::initial_y] = particle.get_location()[1];
         }
     }
 

@@ -124,20 +124,36 @@ namespace slidewave
       }
 
     private:
-      /** With APIC, the velocity the point of properties @p p at @p x scatters to the
-       *  node at @p node: v_p + C_p (x_I − x_p). */
-      template <typename Properties>
-      void
-      add_affine_velocity(const Properties       &p,
-                          const dealii::Point<2> &x,
-                          const dealii::Point<2> &node,
-                          double                 &vx,
-                          double                 &vy) const
+      /** APIC: a point's affine matrix C (xx, xy, yx, yy) and the centre of its lever
+       *  arms, x̄ = Σ_k N_k x_k over its nodes @p w: x_p wherever the functions reproduce
+       *  linear fields, the centroid of the domain's part on the grid where a GIMP or
+       *  B-spline domain is cut by the grid's side. Arms from x̄ sum to zero with the
+       *  weights, so the affine part adds no momentum. */
+      struct AffinePart
       {
-        const unsigned int a  = settings.affine;
-        const double       dx = node[0] - x[0], dy = node[1] - x[1];
-        vx += p[a] * dx + p[a + 1] * dy;
-        vy += p[a + 2] * dx + p[a + 3] * dy;
+        double           C[4];
+        dealii::Point<2> centre;
+      };
+
+      template <typename Properties>
+      AffinePart
+      affine_part(const Properties &p, const grid::NodeWeights &w) const
+      {
+        AffinePart a;
+        for (unsigned int i = 0; i < 4; ++i)
+          a.C[i] = p[settings.affine + i];
+        for (unsigned int k = 0; k < w.n; ++k)
+          a.centre += w.value[k] * nodes.position(w.node[k]);
+        return a;
+      }
+
+      /** APIC: C (x_I − x̄) of the point's affine part @p a at the node at @p node. */
+      static void
+      affine_velocity(const AffinePart &a, const dealii::Point<2> &node, double &vx, double &vy)
+      {
+        const double dx = node[0] - a.centre[0], dy = node[1] - a.centre[1];
+        vx = a.C[0] * dx + a.C[1] * dy;
+        vy = a.C[2] * dx + a.C[3] * dy;
       }
 
       template <typename ParticleAccessorType>

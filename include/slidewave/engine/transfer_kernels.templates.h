@@ -94,6 +94,9 @@ namespace slidewave
             const auto             p     = particle.get_properties();
             const dealii::Point<2> x     = particle.get_location();
             const auto             terms = model.scatter_terms(p, x);
+            AffinePart             affine{};
+            if (apic)
+              affine = affine_part(p, w);
             for (unsigned int k = 0; k < w.n; ++k)
               {
                 // Everything read from the weights before anything is written to the
@@ -104,7 +107,12 @@ namespace slidewave
                 model.nodal_force(terms, w, k, mk, fx, fy);
                 double vx = terms.vx, vy = terms.vy;
                 if (apic)
-                  add_affine_velocity(p, x, nodes.position(w.node[k]), vx, vy);
+                  {
+                    double ax, ay;
+                    affine_velocity(affine, nodes.position(w.node[k]), ax, ay);
+                    vx += ax;
+                    vy += ay;
+                  }
                 sums[0] += mk;
                 sums[1] += mk * vx;
                 sums[2] += mk * vy;
@@ -274,17 +282,26 @@ namespace slidewave
         for (const auto &particle : particles_in_cell)
           {
             shape_weights(particle, cell_index, w);
-            const auto   p = particle.get_properties();
-            const double m = p[Model::mass];
+            const auto   p  = particle.get_properties();
+            const double m  = p[Model::mass];
+            const double px = m * p[Model::velocity_x];
+            const double py = m * p[Model::velocity_y];
+            // With APIC the updated affine part too, about the old position.
+            AffinePart affine{};
+            if (apic)
+              affine = affine_part(p, w);
             for (unsigned int k = 0; k < w.n; ++k)
               {
-                // With APIC the updated affine part too, about the old position.
-                double vx = p[Model::velocity_x], vy = p[Model::velocity_y];
+                double qx = px, qy = py;
                 if (apic)
-                  add_affine_velocity(
-                    p, particle.get_location(), nodes.position(w.node[k]), vx, vy);
-                momentum[0].local_element(w.node[k]) += w.value[k] * (m * vx);
-                momentum[1].local_element(w.node[k]) += w.value[k] * (m * vy);
+                  {
+                    double ax, ay;
+                    affine_velocity(affine, nodes.position(w.node[k]), ax, ay);
+                    qx += m * ax;
+                    qy += m * ay;
+                  }
+                momentum[0].local_element(w.node[k]) += w.value[k] * qx;
+                momentum[1].local_element(w.node[k]) += w.value[k] * qy;
               }
           }
       });

@@ -194,7 +194,8 @@ namespace slidewave
        * hanging_parent[hanging_start[k] .. hanging_start[k+1]) for hanging_node[k]. */
       std::vector<unsigned int> hanging_node, hanging_start, hanging_parent;
       std::vector<double>       hanging_weight;
-      /** Positions of the owned nodes (local index), for a prescribed velocity only. */
+      /** Positions of the owned and ghost nodes (local index), only with_positions (a
+       *  prescribed velocity, APIC). */
       std::vector<dealii::Point<2>> node_positions;
     };
   } // namespace grid

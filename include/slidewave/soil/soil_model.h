@@ -273,8 +273,9 @@ namespace slidewave
       particles::PropertyLayout property_layout;
       /** The finite-strain points' update and b^e; only when a material needs it. */
       std::optional<FiniteStrainPoints> finite_strain;
-      /** APIC: the index of the affine matrix's first property (invalid: FLIP). */
-      unsigned int               affine_index = dealii::numbers::invalid_unsigned_int;
+      /** APIC: the index of the affine matrix's first property (invalid: FLIP); the
+       *  engine's kernels find the same index in the layout (engine::affine_index). */
+      unsigned int               affine_first = dealii::numbers::invalid_unsigned_int;
       const dealii::Tensor<1, 2> gravity;
       const bool                 point_forces;
       /** Cundall's local damping in force now. */

@@ -1,7 +1,13 @@
 // The particle-to-grid transfer of MaterialPointSolver conserves mass and momentum: the
 // totals over the grid nodes (nodal_totals(): sum_i m_i, sum_i m_i v_i with
 // m_i = sum_p S_i(x_p) m_p) equal the sums over the material points (integrals()), because
-// the shape functions of every point sum to one, for Q1, uGIMP and cpGIMP.
+// the shape functions of every point sum to one, for Q1, uGIMP and cpGIMP. With APIC
+// ('Velocity transfer = apic', for Q1, uGIMP and the B-splines) each point also scatters
+// m_p S_i C_p (x_i - xbar_p), whose sum over the nodes is zero because the lever arms
+// start from xbar_p = sum_i S_i x_i: at the grid's sides, where a GIMP or B-spline domain
+// is cut, xbar_p is not x_p, and arms from x_p would add m_p C_p (xbar_p - x_p) (the
+// initial velocities here are not uniform, so C_p is not zero; the APIC cases print their
+// largest |C_p| to show it).
 //
 // Scene: grid [0, 1] x [0, 1] of 0.1 m cells, 2 x 2 points per cell (109 points), default
 // boundaries (rollers left and right, fixed bottom, free top), gravity on. Two linear
@@ -23,6 +29,7 @@
 // instability of small nodal masses, which GIMP and MUSL avoid.) Run on 1 and 2 MPI
 // ranks; the totals are printed with 10 significant digits and agree (the ranks only
 // change the order of the sums). Prints on rank 0 only; exits non-zero on failure.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <deal.II/base/mpi.h>
@@ -31,6 +38,8 @@
 #include <slidewave/soil/material_point_solver.h>
 #include <slidewave/soil/particle_properties.h>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace slidewave::soil;
 
@@ -48,9 +57,10 @@ namespace
   }
 
   std::string
-  scene(const std::string &shape_functions)
+  scene(const std::string &shape_functions, const std::string &transfer)
   {
-    return "set Shape functions = " + shape_functions + R"(
+    return "set Shape functions = " + shape_functions + "\nset Velocity transfer = " + transfer
+           + R"(
 set Gravity = 0, -9.81
 set Particles per direction = 2
 subsection Grid
@@ -88,13 +98,14 @@ end
   }
 
   MaterialPointParameters
-  parameters(const std::string &shape_functions)
+  parameters(const std::string &shape_functions, const std::string &transfer)
   {
     dealii::ParameterHandler prm;
     prm.enter_subsection("Material points");
     MaterialPointParameters::declare_parameters(prm);
     prm.leave_subsection();
-    prm.parse_input_from_string("subsection Material points\n" + scene(shape_functions) + "end\n");
+    prm.parse_input_from_string("subsection Material points\n" + scene(shape_functions, transfer)
+                                + "end\n");
     MaterialPointParameters result;
     prm.enter_subsection("Material points");
     result.parse_parameters(prm, "Material points");
@@ -170,14 +181,32 @@ main(int argc, char **argv)
   root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   const unsigned int n_steps = 10;
-  for (const std::string shape : {"q1", "gimp", "cpgimp"})
+  for (const auto &[shape, transfer] :
+       std::vector<std::pair<std::string, std::string>>{{"q1", "flip"},
+                                                        {"gimp", "flip"},
+                                                        {"cpgimp", "flip"},
+                                                        {"q1", "apic"},
+                                                        {"gimp", "apic"},
+                                                        {"bspline", "apic"}})
     {
-      const MaterialPointParameters prm  = parameters(shape);
+      const MaterialPointParameters prm  = parameters(shape, transfer);
       auto                          grid = MaterialPointSolver::make_grid(prm);
       MaterialPointSolver           solver(prm, *grid);
       solver.setup();
+      const std::string name = transfer == "apic" ? shape + " with APIC" : shape;
       if (root)
-        std::printf("%s, at the start:\n", shape.c_str());
+        std::printf("%s, at the start:\n", name.c_str());
+      if (transfer == "apic")
+        {
+          const unsigned int first   = solver.property_layout().index("affine_xx");
+          double             largest = 0.;
+          for (const auto &particle : solver.particles())
+            for (unsigned int i = 0; i < 4; ++i)
+              largest = std::max(largest, std::abs(particle.get_properties()[first + i]));
+          largest = dealii::Utilities::MPI::max(largest, MPI_COMM_WORLD);
+          if (root)
+            std::printf("  largest |C_p| %.6g 1/s\n", largest);
+        }
       compare(solver);
 
       double time = 0.;
@@ -193,7 +222,7 @@ main(int argc, char **argv)
       if (root)
         {
           std::printf("%s, after %u steps (t = %.6f s), %u points off their initial cell",
-                      shape.c_str(),
+                      name.c_str(),
                       n_steps,
                       time,
                       moved);

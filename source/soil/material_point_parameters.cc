@@ -72,7 +72,7 @@ namespace slidewave
                           "the affine particle-in-cell transfer (Jiang et al. 2015): each "
                           "point also carries the velocity gradient C_p of the grid's new "
                           "velocities (properties affine_xx, affine_xy, affine_yx, affine_yy), "
-                          "scatters m_p N_I (v_p + C_p (x_I - x_p)) and takes back the nodal "
+                          "scatters m_p N_I (v_p + C_p (x_I - xbar_p)) and takes back the nodal "
                           "velocity: PIC without PIC's damping of rotation and shear, and "
                           "without FLIP's noise; 'FLIP fraction' is then unused (doc/mpm.md).");
         prm.declare_entry("Time step multiplier",

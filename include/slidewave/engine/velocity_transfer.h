@@ -20,14 +20,15 @@ namespace slidewave
      * - `apic`: the affine particle-in-cell transfer (Jiang, Schroeder, Selle, Teran and
      *   Stomakhin 2015). Each point carries, besides v_p, the affine matrix C_p (four
      *   properties, "affine_xx", "affine_xy", "affine_yx", "affine_yy", where "affine_xy"
-     *   is dv_x/dy), scatters m_p N_I (v_p + C_p (x_I − x_p)) to node I, and takes back
-     *   the nodal velocity v_p = Σ_I N_I v_I (PIC) and C_p = Σ_I v_I ⊗ ∇N_I, the
-     *   gradient of the new nodal field at the point. With bilinear (Q1) functions this
-     *   is APIC's B_p D_p⁻¹ exactly (D_p is diagonal, a(1 − a) h² per direction), so the
-     *   transfers keep the angular momentum; with GIMP and the B-splines the gradient
-     *   stands in for B_p D_p⁻¹. Linear momentum goes through either way (the functions
-     *   reproduce linear fields). The local rotations and shears that PIC damps are kept,
-     *   without FLIP's noise.
+     *   is dv_x/dy), scatters m_p N_I (v_p + C_p (x_I − x̄_p)) to node I, with the lever
+     *   arms from x̄_p = Σ_J N_J x_J (x_p except where a GIMP or B-spline domain is cut
+     *   by the grid's side), so that the affine part adds no momentum, and takes back the
+     *   nodal velocity v_p = Σ_I N_I v_I (PIC) and C_p = Σ_I v_I ⊗ ∇N_I, the gradient of
+     *   the new nodal field at the point. With bilinear (Q1) functions this is APIC's
+     *   B_p D_p⁻¹ at the point where it is gathered; with GIMP and the B-splines the
+     *   gradient stands in for it. Angular momentum is therefore not conserved to
+     *   round-off (doc/mpm.md, "APIC"), but the local rotations and shears that PIC damps
+     *   are kept, without FLIP's noise.
      */
     enum class VelocityTransfer
     {

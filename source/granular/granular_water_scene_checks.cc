@@ -102,6 +102,21 @@ namespace slidewave
                          "= true': set one of them ('semi-implicit projected', the default, "
                          "takes the water's step as the grains', one skeleton step per water "
                          "step)");
+      // APIC hands the grid's velocities back to the points nearly unfiltered, and the
+      // projected grains take on their lumped nodal masses the increment of the water's
+      // consistent matrix, which is up to three times larger on the shortest waves: where
+      // the grains are permeable a standing wave of about four cells then grows
+      // (doc/granular-water.md, "APIC and the projected coupling").
+      if (parameters.projected_drag
+          && soil_parameters.velocity_transfer == engine::VelocityTransfer::apic)
+        throw InputError(soil_section + "/Velocity transfer",
+                         "apic",
+                         "flip with '" + section
+                           + "/Drag coupling = semi-implicit projected' (the default): "
+                             "with APIC the projected coupling lets a standing wave of about "
+                             "four cells grow where the grains are permeable; apic only with "
+                             "'semi-implicit' (lumped) or 'explicit' coupling "
+                             "(doc/granular-water.md, \"APIC and the projected coupling\")");
       // The grains are denser than the skeleton: 0 < n_0 <= 0.99.
       for (const auto &material : soil_parameters.materials)
         {

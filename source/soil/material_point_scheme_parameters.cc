@@ -27,14 +27,15 @@ namespace slidewave
                         "last, paper 000). 'musl': from nodal velocities re-mapped from the "
                         "updated particle velocities (less noisy for fast flows).");
       prm.declare_entry("FLIP fraction",
-                        "0.99", // default_flip_fraction
+                        "0.99", // default_flip_fraction (material_point_parameters.h)
                         Double(0., 1.),
                         "Blend of the particle velocity update: 1 is pure FLIP (increments "
                         "of the nodal velocities, no dissipation, noisy), 0 pure PIC (nodal "
                         "velocities, dissipative). The blend of a step at the default "
                         "multiplier 0.5 (dt_ref = 0.5 h / max_p (c_p + |v_p|)); a step dt "
                         "blends FLIP^(dt / dt_ref), so that PIC's damping is a rate and the "
-                        "results converge as the step shrinks (doc/mpm.md).");
+                        "results converge as the step shrinks (doc/mpm.md). With 'Velocity "
+                        "transfer = apic' only the default.");
       prm.declare_entry("Velocity transfer",
                         "flip",
                         Selection("flip|apic"),
@@ -45,7 +46,8 @@ namespace slidewave
                         "velocities (properties affine_xx, affine_xy, affine_yx, affine_yy), "
                         "scatters m_p N_I (v_p + C_p (x_I - xbar_p)) and takes back the nodal "
                         "velocity: PIC without PIC's damping of rotation and shear, and "
-                        "without FLIP's noise; 'FLIP fraction' is then unused (doc/mpm.md). "
+                        "without FLIP's noise; 'FLIP fraction' must then keep its default "
+                        "(there is no blend; doc/mpm.md). "
                         "With Physics = granular water only with 'Drag coupling' = "
                         "semi-implicit or explicit (doc/granular-water.md).");
       prm.declare_entry("Time step multiplier",
@@ -91,9 +93,10 @@ namespace slidewave
           && parameters.flip_fraction != default_flip_fraction)
         throw InputError(path + "/FLIP fraction",
                          prm.get("FLIP fraction"),
-                         "its default, 0.99, with 'Velocity transfer = apic' (APIC takes back "
-                         "the nodal velocity and its gradient, with no blend); set "
-                         "'Velocity transfer = flip' to use a FLIP fraction");
+                         "its default, " + to_string(default_flip_fraction)
+                           + ", with 'Velocity transfer = apic' (APIC takes back "
+                             "the nodal velocity and its gradient, with no blend); set "
+                             "'Velocity transfer = flip' to use a FLIP fraction");
       parameters.time_step_multiplier = prm.get_double("Time step multiplier");
       if (!(parameters.time_step_multiplier > 0.
             && parameters.time_step_multiplier <= max_time_step_multiplier))

@@ -38,6 +38,8 @@ namespace slidewave
     /** The default 'Time step multiplier', whose step the 'FLIP fraction' is the blend of
      *  (a step of another length blends FLIP^(dt / dt_ref), ParticleEngine::Settings). */
     constexpr double reference_time_step_multiplier = 0.5;
+    /** The default 'FLIP fraction' (the only one 'Velocity transfer = apic' accepts). */
+    constexpr double default_flip_fraction = 0.99;
 
     /** The velocity conditions of the sides of the grid. */
     using GridBoundary = grid::GridBoundary;
@@ -80,7 +82,7 @@ namespace slidewave
       unsigned int        particles_per_direction = 2;
       grid::ShapeFunction shape_function          = grid::ShapeFunction::q1;
       UpdateScheme        update_scheme           = UpdateScheme::usl;
-      double              flip_fraction           = 0.99;
+      double              flip_fraction           = default_flip_fraction;
       /** 'Velocity transfer': the FLIP blend or APIC (engine::VelocityTransfer). */
       engine::VelocityTransfer velocity_transfer    = engine::VelocityTransfer::flip;
       double                   time_step_multiplier = 0.5;

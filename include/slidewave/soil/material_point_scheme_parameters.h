@@ -10,9 +10,6 @@ namespace slidewave
   {
     struct MaterialPointParameters;
 
-    /** The default of 'FLIP fraction'. */
-    constexpr double default_flip_fraction = 0.99;
-
     /** Declares the transfer scheme ('Shape functions', 'Update scheme', 'FLIP fraction',
      *  'Velocity transfer'), the time step ('Time step multiplier', 'Fixed time step'),
      *  'B-bar' and 'Gravity' in the handler's current subsection. */

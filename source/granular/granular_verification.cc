@@ -232,6 +232,20 @@ namespace slidewave
 
 
 
+    double
+    GranularVerification::seepage_inflow(const fluid::FreeSurfaceParameters &fluid_parameters,
+                                         const double                        end_time)
+    {
+      dealii::FunctionParser<2> inflow(2, end_time);
+      inflow.initialize("x,y,t", fluid_parameters.boundaries.inflow_velocity, {}, true);
+      return inflow.value(
+        dealii::Point<2>(0.5 * (fluid_parameters.lower_left[0] + fluid_parameters.upper_right[0]),
+                         fluid_parameters.upper_right[1]),
+        1);
+    }
+
+
+
     std::array<double, 4>
     GranularVerification::seepage_gradients(const grid::FiniteElementField &flow) const
     {
@@ -264,14 +278,8 @@ namespace slidewave
       dealii::Vector<double> fit(3);
       normal.gauss_jordan();
       normal.vmult(fit, right);
-      const double measured = fit(1), odd_even = std::abs(fit(2));
-      // The superficial velocity: the top inflow's, at the middle of the top at the end.
-      dealii::FunctionParser<2> inflow(2, scene.end_time);
-      inflow.initialize("x,y,t", fluid_parameters.boundaries.inflow_velocity, {}, true);
-      const double  U = std::abs(inflow.value(
-        dealii::Point<2>(0.5 * (fluid_parameters.lower_left[0] + fluid_parameters.upper_right[0]),
-                         fluid_parameters.upper_right[1]),
-        1));
+      const double  measured = fit(1), odd_even = std::abs(fit(2));
+      const double  U = std::abs(seepage_inflow(fluid_parameters, scene.end_time));
       const DragLaw law(fluid_parameters.fluid.water_density,
                         fluid_parameters.fluid.water_viscosity,
                         parameters.d50);

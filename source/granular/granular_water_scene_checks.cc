@@ -1,5 +1,4 @@
 #include <cmath>
-#include <deal.II/base/function_parser.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/run_bounds.h>
 #include <slidewave/granular/granular_water_scene.h>
@@ -190,14 +189,8 @@ namespace slidewave
                                    + to_string(fluid_parameters.fluid.gravity[1]),
                                  "0, 0 with 'Exact solution = seepage' (the gradient compared "
                                  "is the drag's alone)");
-              // The exact gradient is that of the superficial velocity the verification
-              // reads: the inflow's at the middle of the top at the end.
-              dealii::FunctionParser<2> inflow(2, scene.end_time);
-              inflow.initialize("x,y,t", fluid_parameters.boundaries.inflow_velocity, {}, true);
-              const dealii::Point<2> top_middle(
-                0.5 * (fluid_parameters.lower_left[0] + fluid_parameters.upper_right[0]),
-                fluid_parameters.upper_right[1]);
-              if (!(inflow.value(top_middle, 1) < 0.))
+              // The exact gradient is that of this superficial velocity.
+              if (!(GranularVerification::seepage_inflow(fluid_parameters, scene.end_time) < 0.))
                 throw InputError(fluid_section + "/Boundary conditions/Inflow velocity",
                                  fluid_parameters.boundaries.inflow_velocity,
                                  "a downward velocity (a negative y component) at the middle "

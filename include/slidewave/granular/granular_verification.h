@@ -88,6 +88,12 @@ namespace slidewave
       void
       load(const io::CheckpointRecord &record);
 
+      /** Seepage: the vertical component of the top's 'Inflow velocity' at the middle of
+       *  the top at @p end_time (negative: downward), the superficial velocity whose exact
+       *  gradient the check compares with. */
+      static double
+      seepage_inflow(const fluid::FreeSurfaceParameters &fluid_parameters, double end_time);
+
     private:
       /** T_v of time @p t. */
       double

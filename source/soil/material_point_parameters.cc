@@ -88,7 +88,8 @@ namespace slidewave
                           "the nodal velocities are this field instead of the solution of the "
                           "momentum balance (Eqs. 18-19); the points move with it and their "
                           "stresses follow from it as usual (strain rate, Jaumann rate, "
-                          "B-bar).");
+                          "B-bar), and their velocities are the field's at their positions "
+                          "(PIC, whatever 'Velocity transfer' and 'FLIP fraction' say).");
       }
 
 

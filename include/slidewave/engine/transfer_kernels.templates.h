@@ -338,7 +338,8 @@ namespace slidewave
       // the velocity gradients come from the same nodal velocities, so the stresses are
       // updated in the same pass.
       grid::NodeWeights w;
-      const bool        apic = settings.affine != dealii::numbers::invalid_unsigned_int;
+      const bool        apic      = settings.affine != dealii::numbers::invalid_unsigned_int;
+      const bool        kinematic = settings.prescribed_velocity != nullptr;
       // The workspace's velocities as a plain pointer, taken once (see particles_to_grid).
       const double *const all_velocities = nodes.velocities(0);
       cloud.for_each_cell_with_particles([&](const auto &cell, const auto &particles_in_cell) {
@@ -371,8 +372,12 @@ namespace slidewave
             model.gather_fields(w, nodes, p, with_stresses);
             // A point whose nodes are all at rest (held by friction) is at rest with them
             // when the model says so: FLIP would keep its departure from their mean. APIC
-            // takes the nodal velocity and keeps its gradient.
-            const double f = apic || (Model::rests_with_its_nodes && !grid_moves) ? 0. : flip;
+            // takes the nodal velocity and keeps its gradient. In the kinematic mode the
+            // nodal velocities are the prescribed field's, not the points' momentum's: FLIP's
+            // increment (the field's change over the step) would leave the points' initial
+            // velocities where the field is steady, so they take the field (PIC).
+            const double f
+              = apic || kinematic || (Model::rests_with_its_nodes && !grid_moves) ? 0. : flip;
             if (apic)
               for (unsigned int i = 0; i < 2; ++i)
                 for (unsigned int j = 0; j < 2; ++j)

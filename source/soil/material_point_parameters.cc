@@ -474,6 +474,16 @@ namespace slidewave
       // subsections are read (and checked); the others are ignored.
       parse_regions(prm, path, *this);
       parse_used_materials(prm, path, *this);
+      // A finite-strain point's volume ratio is the J of its stress (FiniteStrainPoints).
+      if (own_volumes)
+        for (const auto &material : materials)
+          if (material.model == materials::MaterialModel::hencky_drucker_prager)
+            throw InputError(path + "/B-bar point volumes",
+                             "own",
+                             "cell mean with a 'hencky drucker prager' material ('"
+                               + material.name
+                               + "': its volume ratio is its stress's J, which takes "
+                                 "the cell's mean dilatation)");
       if (shape_function == grid::ShapeFunction::bspline && adaptivity.enabled)
         throw InputError(path + "/Shape functions",
                          "bspline",

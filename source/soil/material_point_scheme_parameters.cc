@@ -67,6 +67,16 @@ namespace slidewave
                         Bool(),
                         "Average the volumetric strain increment over each cell (B-bar / "
                         "mean dilatation, paper 000 §3.1) against volumetric locking.");
+      prm.declare_entry("B-bar point volumes",
+                        "cell mean",
+                        Selection("cell mean|own"),
+                        "With 'B-bar = true', how each point's volume changes. 'cell mean' "
+                        "(the default): by the cell's mean dilatation, as its stress. 'own': "
+                        "by its own tr L dt, while its stress keeps the cell's mean; per "
+                        "cell the volumes' sum changes alike to first order, only its share "
+                        "among the points differs, so a point's porosity follows its own "
+                        "motion (doc/mpm.md, \"B-bar\"). Small-strain materials only (a "
+                        "hencky drucker prager material's volume is its stress's J).");
       prm.declare_entry("Gravity", "0, -9.81", Anything(), "Gravity vector g_x, g_y [m/s^2].");
     }
 
@@ -107,6 +117,12 @@ namespace slidewave
                          "(doc/stability.md)");
       parameters.fixed_time_step = prm.get_double("Fixed time step");
       parameters.b_bar           = prm.get_bool("B-bar");
+      parameters.own_volumes     = prm.get("B-bar point volumes") == "own";
+      if (parameters.own_volumes && !parameters.b_bar)
+        throw InputError(path + "/B-bar point volumes",
+                         "own",
+                         "cell mean with 'B-bar = false' (without B-bar every point's "
+                         "volume follows its own tr L dt already)");
       const auto g
         = parse_number_list(path + "/Gravity", prm.get("Gravity"), "2 comma-separated numbers", 2);
       parameters.gravity[0] = g[0];

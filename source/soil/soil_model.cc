@@ -197,7 +197,9 @@ namespace slidewave
       p[property::stress_xy]                 = stress[0][1];
       p[property::stress_zz]                 = stress[2][2];
       p[property::equivalent_plastic_strain] = plastic;
-      p[property::volume] *= 1. + strain_increment[0][0] + strain_increment[1][1];
+      // (with B-bar's own volumes: the point's own dilatation, not the cell's mean)
+      p[property::volume] *= prm.own_volumes ? 1. + (L[0][0] + L[1][1]) * dt :
+                                               1. + strain_increment[0][0] + strain_increment[1][1];
     }
 
 

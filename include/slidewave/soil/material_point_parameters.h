@@ -88,6 +88,10 @@ namespace slidewave
       double                   time_step_multiplier = 0.5;
       double                   fixed_time_step      = 0.;
       bool                     b_bar                = true;
+      /** 'B-bar point volumes = own': with B-bar each small-strain point's volume follows
+       *  its own tr L dt while its stress takes the cell's mean dilatation (false: the
+       *  volume takes the mean too). */
+      bool own_volumes = false;
       bool                     detailed_timing      = false;
       bool                     step_timeline        = false;
       /** 'Particle relocation = full sort': deal.II's sort every step. */

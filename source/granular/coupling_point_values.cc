@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <slidewave/granular/coupling_point_values.h>
+#include <slidewave/linear_algebra/cell_evaluation.h>
 
 namespace slidewave
 {
@@ -10,7 +11,8 @@ namespace slidewave
                                              const grid::FiniteElementField     &flow,
                                              const grid::FiniteElementField     &phase,
                                              const SkeletonFields               &fields,
-                                             const bool                          with_old_pressure)
+                                             const bool                          with_old_pressure,
+                                             CouplingGathers                    *gathers)
       : parameters(parameters)
       , flow(flow)
       , phase(phase)
@@ -29,6 +31,70 @@ namespace slidewave
         v->resize(n_q);
       for (auto *v : {&u, &grad_p, &grad_p_old, &v_s})
         v->resize(n_q);
+      this->gathers = gathers;
+      if (gathers != nullptr)
+        {
+          gathers->prepare(
+            fields.fluid_fraction, fields.inverse_permeability, fields.solid_flux, &flow, &phase);
+          dofs_scalar.resize(phase.finite_element().n_dofs_per_cell());
+          AssertDimension(dofs_scalar.size(),
+                          fields.fluid_fraction->finite_element().n_dofs_per_cell());
+          const auto &fe_flow  = flow.finite_element();
+          const auto &fe_solid = fields.solid_flux->finite_element();
+          dofs_flow.resize(fe_flow.n_dofs_per_cell());
+          dofs_flow_old.resize(fe_flow.n_dofs_per_cell());
+          dofs_solid.resize(fe_solid.n_dofs_per_cell());
+          for (unsigned int i = 0; i < fe_flow.n_dofs_per_cell(); ++i)
+            flow_component.push_back(fe_flow.system_to_component_index(i).first);
+          for (unsigned int i = 0; i < fe_solid.n_dofs_per_cell(); ++i)
+            solid_component.push_back(fe_solid.system_to_component_index(i).first);
+        }
+    }
+
+
+
+    bool
+    CouplingPointValues::reinit(const dealii::DoFHandler<2>::active_cell_iterator &cell,
+                                const unsigned int                                 cell_number)
+    {
+      Assert(gathers != nullptr, dealii::ExcMessage("CouplingPointValues: no gathers"));
+      // (the fluid fraction and the phase field share the scalar element and its values)
+      fv_scalar.reinit(fields.fluid_fraction->cell_on(cell));
+      gathers->fraction.get(cell_number, fields.fluid_fraction->values(0), dofs_scalar.data());
+      linear_algebra::evaluate_scalar(fv_scalar, dofs_scalar, &n);
+      if (*std::min_element(n.begin(), n.end()) >= 1.)
+        return false; // no grains in the cell
+      gathers->permeability.get(cell_number,
+                                fields.inverse_permeability->values(0),
+                                dofs_scalar.data());
+      linear_algebra::evaluate_scalar(fv_scalar, dofs_scalar, &inverse_permeability);
+      fv_scalar.reinit(phase.cell_on(cell));
+      gathers->phase.get(cell_number, phase.values(0), dofs_scalar.data());
+      linear_algebra::evaluate_scalar(fv_scalar, dofs_scalar, &phi);
+      fv_flow.reinit(flow.cell_on(cell));
+      gathers->flow.get(cell_number, flow.values(0), dofs_flow.data());
+      if (with_old_pressure)
+        gathers->flow.get(cell_number, flow.values(1), dofs_flow_old.data());
+      // The pressure's gradients and the velocity, in FEValuesViews' order of summation.
+      const unsigned int n_q = n.size();
+      std::fill(grad_p.begin(), grad_p.end(), dealii::Tensor<1, 2>());
+      std::fill(grad_p_old.begin(), grad_p_old.end(), dealii::Tensor<1, 2>());
+      for (unsigned int i = 0; i < dofs_flow.size(); ++i)
+        if (flow_component[i] == 2)
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              if (dofs_flow[i] != 0.)
+                grad_p[q] += dofs_flow[i] * fv_flow.shape_grad(i, q);
+              if (with_old_pressure && dofs_flow_old[i] != 0.)
+                grad_p_old[q] += dofs_flow_old[i] * fv_flow.shape_grad(i, q);
+            }
+      linear_algebra::evaluate_velocity(fv_flow, flow_component, dofs_flow, &u);
+      fv_solid.reinit(fields.solid_flux->cell_on(cell));
+      gathers->solid.get(cell_number, fields.solid_flux->values(0), dofs_solid.data());
+      linear_algebra::evaluate_velocity(fv_solid, solid_component, dofs_solid, &v_s);
+      fv_grid.reinit(cell);
+      finish();
+      return true;
     }
 
 
@@ -53,13 +119,21 @@ namespace slidewave
       fv_solid.reinit(fields.solid_flux->cell_on(cell));
       fv_solid[velocity].get_function_values(fields.solid_flux->values(0), v_s);
       fv_grid.reinit(cell);
+      finish();
+      return true;
+    }
+
+
+
+    void
+    CouplingPointValues::finish()
+    {
       for (unsigned int q = 0; q < n.size(); ++q)
         {
           // The velocity from the flux (1 - n) v_s, and the water's drag coefficient.
           v_s[q]  = n[q] < 1. ? v_s[q] / (1. - n[q]) : dealii::Tensor<1, 2>();
           drag[q] = n[q] * n[q] * parameters.fluid.viscosity(phi[q]) * inverse_permeability[q];
         }
-      return true;
     }
   } // namespace granular
 } // namespace slidewave

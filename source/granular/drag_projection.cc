@@ -62,7 +62,7 @@ namespace slidewave
                              const double                    dt)
     {
       // The water's quadrature (Q1: 2 x 2 Gauss points), fields and coefficients.
-      CouplingPointValues        values(grid, parameters, flow, phase, fields, true);
+      CouplingPointValues        values(grid, parameters, flow, phase, fields, true, &gathers);
       const dealii::FEValues<2> &fv_grid = values.grid_values();
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
       AssertDimension(indices.size(), 4);
@@ -70,8 +70,9 @@ namespace slidewave
       for (unsigned int d = 0; d < 2; ++d)
         rhs[d] = 0.;
       // (in the tree's order: the conjugate gradients' sums repeat in a resumed run)
+      unsigned int cell_number = 0;
       grid::for_each_owned_cell_in_tree_order(grid.dof_handler(), [&](const auto &cell) {
-        if (!values.reinit(cell))
+        if (!values.reinit(cell, cell_number++))
           return;
         cell->get_dof_indices(indices);
         CellMatrix block;
@@ -171,8 +172,12 @@ namespace slidewave
     {
       workspace = &nodes;
       if (work.get_partitioner() != nodes.nodal_mass.get_partitioner())
-        for (Vector *v : {&free[0], &free[1], &inverse_diagonal, &rhs[0], &rhs[1], &work, &product})
-          v->reinit(nodes.nodal_mass);
+        {
+          for (Vector *v :
+               {&free[0], &free[1], &inverse_diagonal, &rhs[0], &rhs[1], &work, &product})
+            v->reinit(nodes.nodal_mass);
+          gathers.clear(); // the grid changed
+        }
       assemble(flow, phase, fields, nodes, dt);
 
       // The row sums (the lumped weighted mass): the preconditioner, and which nodes the

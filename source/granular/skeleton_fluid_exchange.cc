@@ -5,6 +5,7 @@
 #include <slidewave/granular/coupling_point_values.h>
 #include <slidewave/granular/skeleton_fluid_exchange.h>
 #include <slidewave/grid/tree_order.h>
+#include <slidewave/linear_algebra/cell_evaluation.h>
 #include <vector>
 
 namespace slidewave
@@ -39,9 +40,12 @@ namespace slidewave
     {
       using Vector = grid::NodalWorkspace::Vector;
       if (fraction.get_partitioner() != nodes.nodal_mass.get_partitioner())
-        for (Vector *v :
-             {&fraction, &inverse_permeability, &vx, &vy, &pressure_work[0], &pressure_work[1]})
-          v->reinit(nodes.nodal_mass);
+        {
+          for (Vector *v :
+               {&fraction, &inverse_permeability, &vx, &vy, &pressure_work[0], &pressure_work[1]})
+            v->reinit(nodes.nodal_mass);
+          gathers.clear(); // the grid changed
+        }
       const unsigned int n_owned = nodes.nodal_mass.locally_owned_size();
       const double       mu      = parameters.fluid.water_viscosity;
       const Vector      &solid   = nodes.fields[0];
@@ -117,39 +121,54 @@ namespace slidewave
     SkeletonFluidExchange::pressure_force(const grid::FiniteElementField              &flow,
                                           const SkeletonFields                        &fields,
                                           const grid::NodalWorkspace                  &nodes,
-                                          std::array<grid::NodalWorkspace::Vector, 2> &force) const
+                                          std::array<grid::NodalWorkspace::Vector, 2> &force)
     {
-      const dealii::QGauss<2>                  quadrature(flow.finite_element().degree + 1);
-      const unsigned int                       n_q = quadrature.size();
-      const dealii::FEValuesExtractors::Scalar pressure(2);
-      dealii::FEValues<2> fv_flow(flow.finite_element(), quadrature, dealii::update_gradients);
-      dealii::FEValues<2> fv_scalar(fields.fluid_fraction->finite_element(),
+      const dealii::QGauss<2> quadrature(flow.finite_element().degree + 1);
+      const unsigned int      n_q = quadrature.size();
+      dealii::FEValues<2>     fv_flow(flow.finite_element(), quadrature, dealii::update_gradients);
+      dealii::FEValues<2>     fv_scalar(fields.fluid_fraction->finite_element(),
                                     quadrature,
                                     dealii::update_values);
-      dealii::FEValues<2> fv_grid(grid.dof_handler().get_fe(),
+      dealii::FEValues<2>     fv_grid(grid.dof_handler().get_fe(),
                                   quadrature,
                                   dealii::update_values | dealii::update_JxW_values);
       std::vector<dealii::Tensor<1, 2>>            grad_p(n_q);
       std::vector<double>                          n(n_q);
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
+      // The cells' values read by the gathers, summed as FEValues sums them.
+      gathers.prepare(fields.fluid_fraction, nullptr, nullptr, &flow, nullptr);
+      const auto               &fe_flow = flow.finite_element();
+      std::vector<double>       dofs_n(fields.fluid_fraction->finite_element().n_dofs_per_cell());
+      std::vector<double>       dofs_flow(fe_flow.n_dofs_per_cell());
+      std::vector<unsigned int> local(indices.size());
       for (unsigned int d = 0; d < 2; ++d)
         force[d] = 0.;
       // (in the tree's order, as every sum into the nodes: a resumed run repeats it)
+      unsigned int cell_number = 0;
       grid::for_each_owned_cell_in_tree_order(grid.dof_handler(), [&](const auto &cell) {
+        const unsigned int number = cell_number++;
         fv_scalar.reinit(fields.fluid_fraction->cell_on(cell));
-        fv_scalar.get_function_values(fields.fluid_fraction->values(0), n);
+        gathers.fraction.get(number, fields.fluid_fraction->values(0), dofs_n.data());
+        linear_algebra::evaluate_scalar(fv_scalar, dofs_n, &n);
         if (*std::min_element(n.begin(), n.end()) >= 1.)
           return; // no grains in the cell
         fv_flow.reinit(flow.cell_on(cell));
-        fv_flow[pressure].get_function_gradients(flow.values(0), grad_p);
+        gathers.flow.get(number, flow.values(0), dofs_flow.data());
+        std::fill(grad_p.begin(), grad_p.end(), dealii::Tensor<1, 2>());
+        for (unsigned int i = 0; i < dofs_flow.size(); ++i)
+          if (fe_flow.system_to_component_index(i).first == 2 && dofs_flow[i] != 0.)
+            for (unsigned int q = 0; q < n_q; ++q)
+              grad_p[q] += dofs_flow[i] * fv_flow.shape_grad(i, q);
         fv_grid.reinit(cell);
         cell->get_dof_indices(indices);
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          local[i] = nodes.local_index(indices[i]);
         for (unsigned int q = 0; q < n_q; ++q)
           {
             const dealii::Tensor<1, 2> traction = -grad_p[q] * fv_grid.JxW(q);
             for (unsigned int i = 0; i < indices.size(); ++i)
               for (unsigned int d = 0; d < 2; ++d)
-                force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
+                force[d].local_element(local[i]) += traction[d] * fv_grid.shape_value(i, q);
           }
       });
       lump_on_grains(nodes, force);
@@ -185,9 +204,10 @@ namespace slidewave
                                        grid::NodalWorkspace::Vector                *water_drag)
     {
       // The same quadrature, fields and coefficients as the water's assembly.
-      CouplingPointValues                          values(grid, parameters, flow, phase, fields);
-      const dealii::FEValues<2>                   &fv_grid = values.grid_values();
+      CouplingPointValues        values(grid, parameters, flow, phase, fields, false, &gathers);
+      const dealii::FEValues<2> &fv_grid = values.grid_values();
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
+      std::vector<unsigned int>                    local(indices.size());
       for (unsigned int d = 0; d < 2; ++d)
         force[d] = pressure_work[d] = 0.;
       if (water_drag != nullptr)
@@ -195,10 +215,13 @@ namespace slidewave
       // Semi-implicit: the drag on the grains' side is - C v_s of the new step, which the
       // nodes take implicitly with W_I (PorousSkeletonModel::update_nodal_velocity).
       const double explicit_drag = water_drag != nullptr ? 0. : 1.;
+      unsigned int cell_number   = 0;
       grid::for_each_owned_cell_in_tree_order(grid.dof_handler(), [&](const auto &cell) {
-        if (!values.reinit(cell))
+        if (!values.reinit(cell, cell_number++))
           return;
         cell->get_dof_indices(indices);
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          local[i] = nodes.local_index(indices[i]);
         for (unsigned int q = 0; q < values.n_points(); ++q)
           {
             const double               C = values.drag[q];
@@ -209,12 +232,14 @@ namespace slidewave
             for (unsigned int i = 0; i < indices.size(); ++i)
               for (unsigned int d = 0; d < 2; ++d)
                 {
-                  force[d](indices[i]) += traction[d] * fv_grid.shape_value(i, q);
-                  pressure_work[d](indices[i]) += pressure_traction[d] * fv_grid.shape_value(i, q);
+                  force[d].local_element(local[i]) += traction[d] * fv_grid.shape_value(i, q);
+                  pressure_work[d].local_element(local[i])
+                    += pressure_traction[d] * fv_grid.shape_value(i, q);
                 }
             if (water_drag != nullptr)
               for (unsigned int i = 0; i < indices.size(); ++i)
-                (*water_drag)(indices[i]) += C * fv_grid.JxW(q) * fv_grid.shape_value(i, q);
+                water_drag->local_element(local[i])
+                  += C * fv_grid.JxW(q) * fv_grid.shape_value(i, q);
           }
       });
       // What landed on a hanging node belongs to its parents (the transpose of the

@@ -6,6 +6,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
 #include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/granular/coupling_gathers.h>
 #include <slidewave/granular/skeleton_fluid_exchange.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/finite_element_field.h>
@@ -24,6 +25,8 @@ namespace slidewave
      * its flux, (1 - n) v_s / (1 - n) (zero where n = 1). What the exchange's force on the
      * grains (SkeletonFluidExchange::to_skeleton) and the projected increment
      * (DragProjection) integrate, with the grid's own Q1 shape functions and weights.
+     * With @p gathers (kept by the caller, prepared here) a cell numbered in tree order
+     * is read through them (reinit() with its number): the same numbers, bit for bit.
      */
     class CouplingPointValues
     {
@@ -33,12 +36,18 @@ namespace slidewave
                           const grid::FiniteElementField     &flow,
                           const grid::FiniteElementField     &phase,
                           const SkeletonFields               &fields,
-                          bool                                with_old_pressure = false);
+                          bool                                with_old_pressure = false,
+                          CouplingGathers                    *gathers           = nullptr);
 
       /** The values on @p cell of the grid's DoFHandler; false (nothing evaluated) when
        *  the cell holds no grains (n = 1 at every point). */
       bool
       reinit(const dealii::DoFHandler<2>::active_cell_iterator &cell);
+
+      /** The same on the owned @p cell numbered @p cell_number in tree order
+       *  (grid::for_each_owned_cell_in_tree_order), read by the gathers. */
+      bool
+      reinit(const dealii::DoFHandler<2>::active_cell_iterator &cell, unsigned int cell_number);
 
       unsigned int
       n_points() const
@@ -65,6 +74,15 @@ namespace slidewave
       dealii::QGauss<2>                   quadrature;
       dealii::FEValues<2>                 fv_flow, fv_scalar, fv_solid, fv_grid;
       std::vector<double>                 inverse_permeability, phi;
+      CouplingGathers                    *gathers;
+      /** A cell's values of each field, and the flow's and the flux's shape functions'
+       *  components (with gathers). */
+      std::vector<double>       dofs_scalar, dofs_flow, dofs_flow_old, dofs_solid;
+      std::vector<unsigned int> flow_component, solid_component;
+
+      /** The drag and the solid's velocity from n, phi, 1/kappa and the flux. */
+      void
+      finish();
     };
   } // namespace granular
 } // namespace slidewave

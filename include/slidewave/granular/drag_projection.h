@@ -3,6 +3,7 @@
 
 #include <array>
 #include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/granular/coupling_gathers.h>
 #include <slidewave/granular/skeleton_fluid_exchange.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/finite_element_field.h>
@@ -85,7 +86,9 @@ namespace slidewave
       const grid::BackgroundGrid         &grid;
       const fluid::FreeSurfaceParameters &parameters;
       const double                        grain_density;
-      const grid::NodalWorkspace         *workspace = nullptr;
+      /** The exchange's fields' positions per cell (cleared when the grid changes). */
+      CouplingGathers             gathers;
+      const grid::NodalWorkspace *workspace = nullptr;
 
       /** A cell with grains: its nodes' local indices and its matrix (row-major). */
       struct CellMatrix

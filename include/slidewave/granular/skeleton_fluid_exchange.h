@@ -3,6 +3,7 @@
 
 #include <array>
 #include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/granular/coupling_gathers.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/finite_element_field.h>
 #include <slidewave/grid/nodal_workspace.h>
@@ -115,7 +116,7 @@ namespace slidewave
       pressure_force(const grid::FiniteElementField              &flow,
                      const SkeletonFields                        &fields,
                      const grid::NodalWorkspace                  &nodes,
-                     std::array<grid::NodalWorkspace::Vector, 2> &force) const;
+                     std::array<grid::NodalWorkspace::Vector, 2> &force);
 
       /** Completes @p force (integrals of N_I grad p; hanging nodes' shares to their
        *  parents, then compressed here) and scales each owned node's by its solid
@@ -129,6 +130,8 @@ namespace slidewave
       /** The nodal workspace's vectors of to_fluid() (kept between steps). */
       grid::NodalWorkspace::Vector                fraction, inverse_permeability, vx, vy;
       std::array<grid::NodalWorkspace::Vector, 2> pressure_work;
+      /** The fields' positions per cell (cleared when the grid changes). */
+      CouplingGathers gathers;
     };
   } // namespace granular
 } // namespace slidewave

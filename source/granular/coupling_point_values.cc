@@ -75,19 +75,11 @@ namespace slidewave
       gathers->flow.get(cell_number, flow.values(0), dofs_flow.data());
       if (with_old_pressure)
         gathers->flow.get(cell_number, flow.values(1), dofs_flow_old.data());
-      // The pressure's gradients and the velocity, in FEValuesViews' order of summation.
-      const unsigned int n_q = n.size();
-      std::fill(grad_p.begin(), grad_p.end(), dealii::Tensor<1, 2>());
-      std::fill(grad_p_old.begin(), grad_p_old.end(), dealii::Tensor<1, 2>());
-      for (unsigned int i = 0; i < dofs_flow.size(); ++i)
-        if (flow_component[i] == 2)
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              if (dofs_flow[i] != 0.)
-                grad_p[q] += dofs_flow[i] * fv_flow.shape_grad(i, q);
-              if (with_old_pressure && dofs_flow_old[i] != 0.)
-                grad_p_old[q] += dofs_flow_old[i] * fv_flow.shape_grad(i, q);
-            }
+      // The pressure's gradients (component 2) and the velocity.
+      linear_algebra::evaluate_component_gradient(fv_flow, flow_component, dofs_flow, 2, grad_p);
+      if (with_old_pressure)
+        linear_algebra::evaluate_component_gradient(
+          fv_flow, flow_component, dofs_flow_old, 2, grad_p_old);
       linear_algebra::evaluate_velocity(fv_flow, flow_component, dofs_flow, &u);
       fv_solid.reinit(fields.solid_flux->cell_on(cell));
       gathers->solid.get(cell_number, fields.solid_flux->values(0), dofs_solid.data());

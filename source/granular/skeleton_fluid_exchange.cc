@@ -140,7 +140,9 @@ namespace slidewave
       const auto               &fe_flow = flow.finite_element();
       std::vector<double>       dofs_n(fields.fluid_fraction->finite_element().n_dofs_per_cell());
       std::vector<double>       dofs_flow(fe_flow.n_dofs_per_cell());
-      std::vector<unsigned int> local(indices.size());
+      std::vector<unsigned int> local(indices.size()), component;
+      for (unsigned int i = 0; i < fe_flow.n_dofs_per_cell(); ++i)
+        component.push_back(fe_flow.system_to_component_index(i).first);
       for (unsigned int d = 0; d < 2; ++d)
         force[d] = 0.;
       // (in the tree's order, as every sum into the nodes: a resumed run repeats it)
@@ -154,11 +156,7 @@ namespace slidewave
           return; // no grains in the cell
         fv_flow.reinit(flow.cell_on(cell));
         gathers.flow.get(number, flow.values(0), dofs_flow.data());
-        std::fill(grad_p.begin(), grad_p.end(), dealii::Tensor<1, 2>());
-        for (unsigned int i = 0; i < dofs_flow.size(); ++i)
-          if (fe_flow.system_to_component_index(i).first == 2 && dofs_flow[i] != 0.)
-            for (unsigned int q = 0; q < n_q; ++q)
-              grad_p[q] += dofs_flow[i] * fv_flow.shape_grad(i, q);
+        linear_algebra::evaluate_component_gradient(fv_flow, component, dofs_flow, 2, grad_p);
         fv_grid.reinit(cell);
         cell->get_dof_indices(indices);
         for (unsigned int i = 0; i < indices.size(); ++i)

@@ -480,8 +480,7 @@ namespace slidewave
           if (material.model == materials::MaterialModel::hencky_drucker_prager)
             throw InputError(path + "/B-bar point volumes",
                              "own",
-                             "cell mean with a 'hencky drucker prager' material ('"
-                               + material.name
+                             "cell mean with a 'hencky drucker prager' material ('" + material.name
                                + "': its volume ratio is its stress's J, which takes "
                                  "the cell's mean dilatation)");
       if (shape_function == grid::ShapeFunction::bspline && adaptivity.enabled)

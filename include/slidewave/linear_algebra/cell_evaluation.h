@@ -79,6 +79,28 @@ namespace slidewave
             }
         }
     }
+
+
+
+    /**
+     * The gradient of the scalar component @p c of a primitive FESystem (@p component:
+     * each shape function's component) at a cell's quadrature points, in
+     * FEValuesViews::Scalar's order of summation (shape functions with a zero value
+     * skipped, as it skips them): the same numbers, bit for bit.
+     */
+    inline void
+    evaluate_component_gradient(const dealii::FEValues<2>         &fv,
+                                const std::vector<unsigned int>   &component,
+                                const std::vector<double>         &dofs,
+                                const unsigned int                 c,
+                                std::vector<dealii::Tensor<1, 2>> &gradients)
+    {
+      std::fill(gradients.begin(), gradients.end(), dealii::Tensor<1, 2>());
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        if (component[i] == c && dofs[i] != 0.)
+          for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+            gradients[q] += dofs[i] * fv.shape_grad(i, q);
+    }
   } // namespace linear_algebra
 } // namespace slidewave
 

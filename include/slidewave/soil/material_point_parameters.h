@@ -91,9 +91,9 @@ namespace slidewave
       /** 'B-bar point volumes = own': with B-bar each small-strain point's volume follows
        *  its own tr L dt while its stress takes the cell's mean dilatation (false: the
        *  volume takes the mean too). */
-      bool own_volumes = false;
-      bool                     detailed_timing      = false;
-      bool                     step_timeline        = false;
+      bool own_volumes     = false;
+      bool detailed_timing = false;
+      bool step_timeline   = false;
       /** 'Particle relocation = full sort': deal.II's sort every step. */
       bool                 full_sort_every_step = false;
       dealii::Tensor<1, 2> gravity;

@@ -62,7 +62,7 @@ namespace slidewave
                              const double                    dt)
     {
       // The water's quadrature (Q1: 2 x 2 Gauss points), fields and coefficients.
-      CouplingPointValues        values(grid, parameters, flow, phase, fields, true, &gathers);
+      CouplingPointValues        values(grid, parameters, flow, phase, fields, gathers, true);
       const dealii::FEValues<2> &fv_grid = values.grid_values();
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
       AssertDimension(indices.size(), 4);

@@ -202,7 +202,7 @@ namespace slidewave
                                        grid::NodalWorkspace::Vector                *water_drag)
     {
       // The same quadrature, fields and coefficients as the water's assembly.
-      CouplingPointValues        values(grid, parameters, flow, phase, fields, false, &gathers);
+      CouplingPointValues        values(grid, parameters, flow, phase, fields, gathers);
       const dealii::FEValues<2> &fv_grid = values.grid_values();
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
       std::vector<unsigned int>                    local(indices.size());

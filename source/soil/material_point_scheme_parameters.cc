@@ -73,7 +73,7 @@ namespace slidewave
                         "With 'B-bar = true', how each point's volume changes. 'cell mean' "
                         "(the default): by the cell's mean dilatation, as its stress. 'own': "
                         "by its own tr L dt, while its stress keeps the cell's mean; per "
-                        "cell the volumes' sum changes alike to first order, only its share "
+                        "cell the volumes' sum changes by the same amount, only its share "
                         "among the points differs, so a point's porosity follows its own "
                         "motion (doc/mpm.md, \"B-bar\"). Small-strain materials only (a "
                         "hencky drucker prager material's volume is its stress's J).");

@@ -3,6 +3,7 @@
 
 #include <slidewave/grid/finite_element_field.h>
 #include <slidewave/linear_algebra/cell_gather.h>
+#include <utility>
 
 namespace slidewave
 {

@@ -25,8 +25,10 @@ namespace slidewave
      * its flux, (1 - n) v_s / (1 - n) (zero where n = 1). What the exchange's force on the
      * grains (SkeletonFluidExchange::to_skeleton) and the projected increment
      * (DragProjection) integrate, with the grid's own Q1 shape functions and weights.
-     * With @p gathers (kept by the caller, prepared here) a cell numbered in tree order
-     * is read through them (reinit() with its number): the same numbers, bit for bit.
+     * The cells, numbered in tree order, are read through @p gathers (kept by the
+     * caller between steps, prepared here) and summed in FEValues' order: the numbers of
+     * FEValues::get_function_values(), bit for bit, without its lookups per degree of
+     * freedom in the Trilinos vectors.
      */
     class CouplingPointValues
     {
@@ -36,16 +38,12 @@ namespace slidewave
                           const grid::FiniteElementField     &flow,
                           const grid::FiniteElementField     &phase,
                           const SkeletonFields               &fields,
-                          bool                                with_old_pressure = false,
-                          CouplingGathers                    *gathers           = nullptr);
+                          CouplingGathers                    &gathers,
+                          bool                                with_old_pressure = false);
 
-      /** The values on @p cell of the grid's DoFHandler; false (nothing evaluated) when
-       *  the cell holds no grains (n = 1 at every point). */
-      bool
-      reinit(const dealii::DoFHandler<2>::active_cell_iterator &cell);
-
-      /** The same on the owned @p cell numbered @p cell_number in tree order
-       *  (grid::for_each_owned_cell_in_tree_order), read by the gathers. */
+      /** The values on the owned @p cell of the grid's DoFHandler numbered @p cell_number
+       *  in tree order (grid::for_each_owned_cell_in_tree_order); false (nothing more
+       *  evaluated) when the cell holds no grains (n = 1 at every point). */
       bool
       reinit(const dealii::DoFHandler<2>::active_cell_iterator &cell, unsigned int cell_number);
 
@@ -74,9 +72,9 @@ namespace slidewave
       dealii::QGauss<2>                   quadrature;
       dealii::FEValues<2>                 fv_flow, fv_scalar, fv_solid, fv_grid;
       std::vector<double>                 inverse_permeability, phi;
-      CouplingGathers                    *gathers;
+      CouplingGathers                    &gathers;
       /** A cell's values of each field, and the flow's and the flux's shape functions'
-       *  components (with gathers). */
+       *  components. */
       std::vector<double>       dofs_scalar, dofs_flow, dofs_flow_old, dofs_solid;
       std::vector<unsigned int> flow_component, solid_component;
 

@@ -85,8 +85,8 @@ namespace slidewave
     /**
      * The gradient of the scalar component @p c of a primitive FESystem (@p component:
      * each shape function's component) at a cell's quadrature points, in
-     * FEValuesViews::Scalar's order of summation (shape functions with a zero value
-     * skipped, as it skips them): the same numbers, bit for bit.
+     * FEValuesViews::Scalar's order of summation (shape functions whose degree of
+     * freedom is zero skipped, as it skips them): the same numbers, bit for bit.
      */
     inline void
     evaluate_component_gradient(const dealii::FEValues<2>         &fv,

@@ -45,6 +45,7 @@ namespace slidewave
       void
       get(unsigned int cell, const VectorType &vector, double *values) const
       {
+        AssertIndexRange(cell * n_dofs, positions.size());
         const double *local = vector.trilinos_vector()[0];
         const int    *p     = &positions[cell * n_dofs];
         for (unsigned int i = 0; i < n_dofs; ++i)

@@ -241,7 +241,8 @@ namespace slidewave
 
 
     void
-    FreeSurfaceSolver::enable_moving_solid(const double grain_density)
+    FreeSurfaceSolver::enable_moving_solid(const double       grain_density,
+                                           const NodalGrains *nodal_grains)
     {
       fluid_fraction       = std::make_unique<grid::FiniteElementField>(grid);
       inverse_permeability = std::make_unique<grid::FiniteElementField>(grid);
@@ -254,7 +255,9 @@ namespace slidewave
       medium.inverse_permeability = inverse_permeability.get();
       medium.solid_flux           = solid_flux.get();
       medium.grain_density        = grain_density;
+      medium.nodal_grains         = grain_density > 0. ? nodal_grains : nullptr;
       flow_system.set_porous_medium(medium);
+      medium.nodal_grains = nullptr;
       // With the solid's momentum eliminated its flux field holds the predicted v*; the
       // phase field's mixture divergence needs the flux the last flow solved with, that of
       // the step's start (PhaseFieldSystem).

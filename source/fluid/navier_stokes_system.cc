@@ -6,6 +6,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -105,6 +106,24 @@ namespace slidewave
 
 
 
+    namespace
+    {
+      /** The water's system with the grains' nodal momentum eliminated (GMRES' operator). */
+      struct SchurComplement
+      {
+        const dealii::TrilinosWrappers::SparseMatrix &water;
+        const NodalGrainsCoupling                    &grains;
+        void
+        vmult(NodalGrainsCoupling::VectorType &y, const NodalGrainsCoupling::VectorType &x) const
+        {
+          water.vmult(y, x);
+          grains.vmult_add(y, x);
+        }
+      };
+    } // namespace
+
+
+
     void
     NavierStokesSystem::setup_system()
     {
@@ -118,6 +137,7 @@ namespace slidewave
       for (linear_algebra::CellGather &gather : porous_gathers)
         gather.clear();
       flow.reinit_matrix(matrix, flow_constraints);
+      coupled_matrix_ready = false;
       rhs.reinit(flow.locally_owned_dofs(), grid.communicator());
       solution.reinit(flow.locally_owned_dofs(), grid.communicator());
     }
@@ -189,6 +209,18 @@ namespace slidewave
             solution.sadd(1. + ratio, -ratio, flow.locally_owned_values(1));
           }
         dealii::SolverControl control(parameters.max_iterations, std::max(target, 1e-300));
+        if (grains_coupling)
+          {
+            // The Schur complement of the grains' nodal coupling, A_w + B (M / dt + D)^-1 L
+            // (NodalGrainsCoupling), without a matrix; preconditioned by the pointwise
+            // elimination's matrix, which approximates it. Right preconditioning: GMRES
+            // stops at the true residual.
+            const SchurComplement           schur{coupled_matrix, *grains_coupling};
+            dealii::SolverGMRES<VectorType> gmres(
+              control, dealii::SolverGMRES<VectorType>::AdditionalData(52, true));
+            gmres.solve(schur, solution, rhs, *preconditioner);
+            return SolveReport{control.last_step(), control.last_value()};
+          }
         dealii::TrilinosWrappers::SolverGMRES gmres(
           control, dealii::TrilinosWrappers::SolverGMRES::AdditionalData(false, 50));
         try
@@ -258,6 +290,8 @@ namespace slidewave
         preconditioner.reset();
       ++preconditioner_age;
       flow_constraints.distribute(solution);
+      if (grains_coupling)
+        grains_coupling->compute_increment(solution);
 
       flow.locally_owned_values(1) = flow.locally_owned_values(0);
       flow.values_changed(1);

@@ -53,9 +53,12 @@ namespace slidewave
       std::vector<double>               phi_new(n_q), phi_old(n_q);
       std::vector<double>               value(n_dofs), advect(n_dofs);
       std::vector<dealii::Tensor<1, 2>> gradient(n_dofs);
-      std::vector<unsigned int>         component(n_dofs);
+      std::vector<unsigned int>         component(n_dofs), vertex(n_dofs);
       for (unsigned int i = 0; i < n_dofs; ++i)
-        component[i] = fe.system_to_component_index(i).first;
+        {
+          component[i] = fe.system_to_component_index(i).first;
+          vertex[i]    = fe.system_to_component_index(i).second;
+        }
       dealii::FullMatrix<double>                   local_matrix(n_dofs, n_dofs);
       dealii::Vector<double>                       local_rhs(n_dofs);
       std::vector<dealii::types::global_dof_index> indices(n_dofs);
@@ -83,6 +86,27 @@ namespace slidewave
       std::vector<double> dofs_n(n_dofs), dofs_old(n_dofs), phase_dofs_new(n_phase_dofs),
         phase_dofs_old(n_phase_dofs);
 
+      // The grains' nodal coupling (NodalGrainsCoupling): the preconditioner's matrix, the
+      // pointwise elimination, into `matrix`, and A_w = that minus the terms the coupling
+      // replaces (nodal_delta) into coupled_matrix.
+      NodalGrainsCoupling *const nodal = grains_coupling.get();
+      dealii::FullMatrix<double> nodal_delta(nodal != nullptr ? n_dofs : 0,
+                                             nodal != nullptr ? n_dofs : 0);
+      dealii::Vector<double>            nodal_delta_rhs(nodal != nullptr ? n_dofs : 0);
+      std::vector<double>               nodal_drag(n_q);
+      std::vector<dealii::Tensor<1, 2>> nodal_v_s(n_q);
+      if (nodal != nullptr)
+        {
+          if (!coupled_matrix_ready)
+            {
+              coupled_matrix.reinit(matrix); // the same sparsity: the scatter's positions
+              unused_rhs.reinit(rhs);
+              coupled_matrix_ready = true;
+            }
+          coupled_matrix = 0.;
+          unused_rhs     = 0.;
+          nodal->begin(*porous.nodal_grains, dt);
+        }
       matrix                   = 0.;
       rhs                      = 0.;
       unsigned int cell_number = 0;
@@ -112,6 +136,12 @@ namespace slidewave
 
         local_matrix = 0.;
         local_rhs    = 0.;
+        if (nodal != nullptr)
+          {
+            nodal_delta     = 0.;
+            nodal_delta_rhs = 0.;
+          }
+        bool with_grains = false;
         for (unsigned int q = 0; q < n_q; ++q)
           {
             const double phi = theta * phi_new[q] + (1. - theta) * phi_old[q];
@@ -156,6 +186,12 @@ namespace slidewave
             const double tau_cont
               = parameters.grad_div ? 0.5 * h * speed * std::min(reynolds / 3., 1.) : 0.;
             const double JxW = fv.JxW(q);
+            if (nodal != nullptr)
+              {
+                nodal_drag[q] = medium.drag_coefficient;
+                nodal_v_s[q]  = v_s;
+                with_grains   = with_grains || n < 1.;
+              }
 
             // Every shape function of FESystem(Q1^2, Q1) lives in one component
             // (component[i]: 0, 1 velocity, 2 pressure) with the scalar value N_i and
@@ -167,6 +203,9 @@ namespace slidewave
                 gradient[i] = fv.shape_grad(i, q);
                 advect[i]   = u_bar * gradient[i];
               }
+            if (nodal != nullptr)
+              add_nodal_delta(
+                medium, grad_p_n, value, gradient, component, JxW, nodal_delta, nodal_delta_rhs);
             // The explicit part of the momentum residual: rho u^n / dt minus the
             // (1 - theta) share of the advection, plus gravity.
             const dealii::Tensor<1, 2> advect_n = grad_u_n[q] * u_bar;
@@ -261,13 +300,96 @@ namespace slidewave
                                 lengths,
                                 porous_values.get(),
                                 local_matrix,
-                                local_rhs);
+                                local_rhs,
+                                nodal != nullptr ? &nodal_delta : nullptr,
+                                nodal != nullptr ? &nodal_delta_rhs : nullptr);
         cell->get_dof_indices(indices);
-        scatter.add(cell_number, local_matrix, local_rhs, indices, flow_constraints, matrix, rhs);
+        if (nodal != nullptr)
+          {
+            scatter.add(
+              cell_number, local_matrix, local_rhs, indices, flow_constraints, matrix, unused_rhs);
+            local_matrix.add(-1., nodal_delta);
+            local_rhs.add(-1., nodal_delta_rhs);
+            scatter.add(
+              cell_number, local_matrix, local_rhs, indices, flow_constraints, coupled_matrix, rhs);
+            if (with_grains)
+              nodal->add_cell(
+                cell_number,
+                dealii::DoFHandler<2>::active_cell_iterator(
+                  &cell->get_triangulation(), cell->level(), cell->index(), &grid.dof_handler()),
+                fv,
+                component,
+                vertex,
+                nodal_drag,
+                nodal_v_s,
+                porous_values->vertex_fluid_fraction(),
+                indices);
+          }
+        else
+          scatter.add(cell_number, local_matrix, local_rhs, indices, flow_constraints, matrix, rhs);
         ++cell_number;
       });
       matrix.compress(dealii::VectorOperation::add);
       rhs.compress(dealii::VectorOperation::add);
+      if (nodal != nullptr)
+        {
+          coupled_matrix.compress(dealii::VectorOperation::add);
+          unused_rhs.compress(dealii::VectorOperation::add);
+          nodal->finish(flow_constraints, flow_gather, flow.values(0), rhs);
+        }
+    }
+
+
+
+    void
+    NavierStokesSystem::add_nodal_delta(const PorousCoefficients                &medium,
+                                        const dealii::Tensor<1, 2>              &grad_p_n,
+                                        const std::vector<double>               &value,
+                                        const std::vector<dealii::Tensor<1, 2>> &gradient,
+                                        const std::vector<unsigned int>         &component,
+                                        const double                             JxW,
+                                        dealii::FullMatrix<double>              &delta,
+                                        dealii::Vector<double>                  &delta_rhs)
+    {
+      // The Galerkin terms of the pointwise elimination that the grains' nodal coupling
+      // replaces: its drag C (1 - s) against C, the share s (1 - n) of the grains'
+      // pressure gradient, the correction flux and the Darcy diffusion (PorousMedium).
+      // The stabilization keeps the eliminated residual.
+      const double extra_drag = medium.drag - medium.drag_coefficient;
+      if (extra_drag == 0. && medium.pressure_share == 0. && medium.pressure_diffusion == 0.)
+        return;
+      const unsigned int n_dofs = value.size();
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          const unsigned int          a  = component[i];
+          const double                Ni = value[i];
+          const dealii::Tensor<1, 2> &Gi = gradient[i];
+          if (a < 2)
+            {
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                {
+                  const unsigned int b = component[j];
+                  const double       m = b == a ? extra_drag * Ni * value[j] :
+                                         b == 2 ? medium.pressure_share * Ni * gradient[j][a] :
+                                                  0.;
+                  delta(i, j) += m * JxW;
+                }
+              delta_rhs(i)
+                += Ni * (extra_drag * medium.v_s[a] + medium.pressure_share * grad_p_n[a]) * JxW;
+            }
+          else
+            {
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                {
+                  const unsigned int b = component[j];
+                  const double       m = b < 2 ? -medium.pressure_share * Gi[b] * value[j] :
+                                                 medium.pressure_diffusion * (Gi * gradient[j]);
+                  delta(i, j) += m * JxW;
+                }
+              delta_rhs(i)
+                += Gi * (medium.correction_flux + medium.pressure_diffusion * grad_p_n) * JxW;
+            }
+        }
     }
 
 
@@ -281,7 +403,9 @@ namespace slidewave
                                                 const StepLengths          &lengths,
                                                 PorousMediumValues         *porous_values,
                                                 dealii::FullMatrix<double> &local_matrix,
-                                                dealii::Vector<double>     &local_rhs) const
+                                                dealii::Vector<double>     &local_rhs,
+                                                dealii::FullMatrix<double> *nodal_delta,
+                                                dealii::Vector<double>     *nodal_delta_rhs) const
     {
       // On an open side the symmetric viscous stress would hold the whole traction
       // (2 mu eps(u) - p I) n at zero, which a fully developed outflow (Poiseuille) does
@@ -347,6 +471,11 @@ namespace slidewave
               std::vector<dealii::Tensor<1, 2>> grad_p_n(n_q);
               fv_face[pressure].get_function_gradients(flow.values(0), grad_p_n);
               porous_values->add_open_side_flux(fv_face, grad_p_n, local_matrix, local_rhs);
+              if (nodal_delta != nullptr)
+                porous_values->add_open_side_flux(fv_face,
+                                                  grad_p_n,
+                                                  *nodal_delta,
+                                                  *nodal_delta_rhs);
             }
         }
     }

@@ -151,6 +151,7 @@ namespace slidewave
           const double solid = 1. - n[q];
           c.solid_divergence = div_flux[q];
           c.drag             = C;
+          c.drag_coefficient = C;
           if (rho_s > 0.)
             {
               // The skeleton's momentum eliminated (PorousMedium): no grains (solid = 0)

@@ -57,34 +57,45 @@ namespace slidewave
                         "coefficients), each point's relative speed that of the last step at "
                         "its nodes. 'Darcy': C = n^2 mu / k, linear in the relative velocity "
                         "(the limit of slow seepage, Re_p << 10).");
-      prm.declare_entry("Drag coupling",
-                        "semi-implicit projected",
-                        Selection("semi-implicit projected|semi-implicit|explicit"),
-                        "How the water's pressure and drag of the new step act on the "
-                        "skeleton. 'semi-implicit projected' (the default): the skeleton's "
-                        "nodal velocity of the new step, with the drag and the pressure "
-                        "gradient implicit, is eliminated from the water's equations (the "
-                        "drag against the skeleton's predicted velocity, the Darcy flow "
-                        "through the grains as a pressure diffusion); the skeleton's nodes "
-                        "then take the projection, on a weighted mass matrix (conjugate "
-                        "gradients), of the increment that elimination assumed. Stable at "
-                        "any ratio of the step to rho^s (1 - n) k / mu, so low "
-                        "permeabilities and fine grains do not limit the step; without "
-                        "the lumped drag's smoothing, so the locked mixture's motion "
-                        "converges in the step (doc/granular-water.md: the undrained "
-                        "vortex); with 'Velocity transfer = flip' only (with apic a short "
-                        "standing wave grows where the grains are permeable). "
-                        "'semi-implicit': the same water; the skeleton's nodes take the "
-                        "drag implicitly, lumped: v_I = (m_I v_I^trial + dt integral of N_I "
-                        "C u) / (m_I + dt integral of N_I C). Where the drag is stiff this "
-                        "smooths the grains' velocity once per step, a damping that grows "
-                        "as the step shrinks (the undrained vortex loses its energy at a "
-                        "rate that rises as the step falls); with 'Sub-cycling' this or "
-                        "'explicit'. "
-                        "'explicit': the water sees the skeleton's velocity of the old step "
-                        "and the skeleton the water's force of the new one (paper 002, "
-                        "§3.5); stable only for steps below about rho^s (1 - n) k / mu, "
-                        "which then limits the step.");
+      prm.declare_entry(
+        "Drag coupling",
+        "semi-implicit projected",
+        Selection("semi-implicit projected|semi-implicit consistent|semi-implicit|explicit"),
+        "How the water's pressure and drag of the new step act on the "
+        "skeleton. 'semi-implicit projected' (the default): the skeleton's "
+        "nodal velocity of the new step, with the drag and the pressure "
+        "gradient implicit, is eliminated from the water's equations (the "
+        "drag against the skeleton's predicted velocity, the Darcy flow "
+        "through the grains as a pressure diffusion); the skeleton's nodes "
+        "then take the projection, on a weighted mass matrix (conjugate "
+        "gradients), of the increment that elimination assumed. Stable at "
+        "any ratio of the step to rho^s (1 - n) k / mu, so low "
+        "permeabilities and fine grains do not limit the step; without "
+        "the lumped drag's smoothing, so the locked mixture's motion "
+        "converges in the step (doc/granular-water.md: the undrained "
+        "vortex); with 'Velocity transfer = flip' only (with apic a short "
+        "standing wave grows where the grains are permeable). "
+        "'semi-implicit consistent': the skeleton's nodal velocity is solved "
+        "with the water's (GMRES on the water's system with the grains' "
+        "nodal momentum eliminated, a conjugate-gradient solve of the grains' "
+        "nodes per product, preconditioned by the projected coupling's "
+        "matrix): the grains, on their lumped nodal masses, take exactly the "
+        "drag and pressure the water loses. Toward the undrained limit less "
+        "accurate than the projected coupling (its grains' lumped mass "
+        "against the water's consistent one), and with 'Velocity transfer = "
+        "flip' only (with apic a mode grows there; doc/granular-water.md, "
+        "\"The consistent coupling\"). "
+        "'semi-implicit': the same water as the projected; the skeleton's nodes take the "
+        "drag implicitly, lumped: v_I = (m_I v_I^trial + dt integral of N_I "
+        "C u) / (m_I + dt integral of N_I C). Where the drag is stiff this "
+        "smooths the grains' velocity once per step, a damping that grows "
+        "as the step shrinks (the undrained vortex loses its energy at a "
+        "rate that rises as the step falls); with 'Sub-cycling' this or "
+        "'explicit'. "
+        "'explicit': the water sees the skeleton's velocity of the old step "
+        "and the skeleton the water's force of the new one (paper 002, "
+        "§3.5); stable only for steps below about rho^s (1 - n) k / mu, "
+        "which then limits the step.");
       prm.declare_entry("Top load",
                         "0",
                         Double(0.),
@@ -175,6 +186,7 @@ namespace slidewave
       const std::string coupling = prm.get("Drag coupling");
       implicit_drag              = coupling != "explicit";
       projected_drag             = coupling == "semi-implicit projected";
+      consistent_drag            = coupling == "semi-implicit consistent";
       for (const auto &[name, value] :
            {std::pair<std::string, double>{"Grain density", grain_density},
             {"Permeability", permeability},

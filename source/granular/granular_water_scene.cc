@@ -10,6 +10,7 @@
 #include <slidewave/granular/granular_water_scene.h>
 #include <slidewave/soil/particle_properties.h>
 #include <sstream>
+#include <stdexcept>
 
 namespace slidewave
 {
@@ -77,7 +78,10 @@ namespace slidewave
       // unknowns per node; the semi-implicit coupling's projection (DragProjection) seven
       // vectors per node and a 4 x 4 matrix per cell, about 25 per node at most.
       estimate.add("water unknowns",
-                   (parameters.implicit_drag ? (parameters.projected_drag ? 35. : 10.) : 8.)
+                   (parameters.implicit_drag ? (parameters.projected_drag  ? 35. :
+                                                parameters.consistent_drag ? 45. :
+                                                                             10.) :
+                                               8.)
                      * (nx + 1.) * (ny + 1.),
                    core::MemoryEstimate::bytes_per_dof,
                    fluid_section + "/Grid/Cell size",
@@ -105,7 +109,8 @@ namespace slidewave
       grid         = fluid::FreeSurfaceSolver::make_grid(fluid_parameters);
       fluid_solver = std::make_unique<fluid::FreeSurfaceSolver>(fluid_parameters, *grid);
       // Semi-implicit drag: the water eliminates the skeleton's momentum (PorousMedium).
-      fluid_solver->enable_moving_solid(parameters.implicit_drag ? parameters.grain_density : 0.);
+      fluid_solver->enable_moving_solid(parameters.implicit_drag ? parameters.grain_density : 0.,
+                                        parameters.consistent_drag ? &nodal_grains : nullptr);
       model = std::make_unique<PorousSkeletonModel>(soil_parameters,
                                                     parameters,
                                                     fluid_parameters.fluid.water_density,
@@ -349,6 +354,8 @@ namespace slidewave
           }
           if (k == 0)
             {
+              if (parameters.consistent_drag)
+                prepare_nodal_grains();
               dealii::TimerOutput::Scope scope(*timer, "granular: water");
               last_report = fluid_solver->advance(info.dt);
             }
@@ -358,10 +365,10 @@ namespace slidewave
               {
                 for (auto *f : {&water_force[0], &water_force[1]})
                   f->reinit(nodes.nodal_mass);
-                if (!projection) // the lumped drag's W_I
+                if (!projection && !parameters.consistent_drag) // the lumped drag's W_I
                   water_drag.reinit(nodes.nodal_mass);
               }
-            if (projection)
+            if (projection || parameters.consistent_drag)
               project_water_force(fields, dt);
             else
               exchange->to_skeleton(fluid_solver->flow_field(),
@@ -371,7 +378,7 @@ namespace slidewave
                                     water_force,
                                     parameters.implicit_drag ? &water_drag : nullptr);
             engine->add_nodal_forces(water_force);
-            if (parameters.implicit_drag && !projection)
+            if (parameters.implicit_drag && !projection && !parameters.consistent_drag)
               {
                 // The owned nodes of this step's points (the others stay as the scatter
                 // leaves them).
@@ -399,27 +406,55 @@ namespace slidewave
     void
     GranularWaterScene::project_water_force(const SkeletonFields &fields, const double dt)
     {
-      // The grains' velocity of the new step is v* + dv (DragProjection): the force that
-      // takes the grid update from momentum / m there is the old pressure's, which v* holds
+      // The grains' velocity of the new step is v* + dv (DragProjection, or the water's
+      // solve: fluid::NodalGrainsCoupling): the force that takes the grid update from
+      // momentum / m there is the old pressure's, which v* holds
       // (SkeletonFluidExchange::to_fluid), and m dv / dt.
       const grid::NodalWorkspace &nodes = engine->nodal_workspace();
-      projection->increment(fluid_solver->flow_field(),
-                            fluid_solver->phase_field(),
-                            fields,
-                            nodes,
-                            engine->velocity_constraints(),
-                            dt,
-                            water_force);
-      const auto        &pressure = exchange->predictor_pressure_force();
-      const unsigned int n_owned  = nodes.nodal_mass.locally_owned_size();
+      if (projection)
+        projection->increment(fluid_solver->flow_field(),
+                              fluid_solver->phase_field(),
+                              fields,
+                              nodes,
+                              engine->velocity_constraints(),
+                              dt,
+                              water_force);
+      const fluid::NodalGrainsCoupling *coupling = fluid_solver->nodal_grains_coupling();
+      if (!projection && coupling == nullptr)
+        throw std::logic_error("GranularWaterScene: no grains' nodal coupling");
+      const auto        &increment = projection ? water_force : coupling->increment();
+      const auto        &pressure  = exchange->predictor_pressure_force();
+      const unsigned int n_owned   = nodes.nodal_mass.locally_owned_size();
       for (unsigned int d = 0; d < 2; ++d)
         {
           for (unsigned int i = 0; i < n_owned; ++i)
             water_force[d].local_element(i)
               = pressure[d].local_element(i)
-                + nodes.nodal_mass.local_element(i) * water_force[d].local_element(i) / dt;
+                + nodes.nodal_mass.local_element(i) * increment[d].local_element(i) / dt;
           water_force[d].zero_out_ghost_values();
         }
+    }
+
+
+
+    void
+    GranularWaterScene::prepare_nodal_grains()
+    {
+      const grid::NodalWorkspace &nodes = engine->nodal_workspace();
+      if (grains_free[0].get_partitioner() != nodes.nodal_mass.get_partitioner())
+        for (auto *f : {&grains_free[0], &grains_free[1]})
+          f->reinit(nodes.nodal_mass);
+      const unsigned int n_owned = nodes.nodal_mass.locally_owned_size();
+      const double       empty   = model->empty_node_mass();
+      for (unsigned int i = 0; i < n_owned; ++i)
+        grains_free[0].local_element(i) = grains_free[1].local_element(i)
+          = nodes.nodal_mass.local_element(i) > empty ? 1. : 0.;
+      engine->velocity_constraints().apply(grains_free[0], grains_free[1]);
+      for (const unsigned int i : nodes.hanging_nodes())
+        if (i < n_owned)
+          grains_free[0].local_element(i) = grains_free[1].local_element(i) = 0.;
+      nodal_grains.nodes = &nodes;
+      nodal_grains.free  = {{&grains_free[0], &grains_free[1]}};
     }
 
 
@@ -499,9 +534,10 @@ namespace slidewave
           << fluid_parameters.upper_right << ", cell size " << fluid_parameters.cell_size
           << "; grains " << parameters.grain_density << "; drag "
           << (parameters.forchheimer ? "Forchheimer" : "Darcy") << " coupled "
-          << (!parameters.implicit_drag ? "explicitly" :
-              parameters.projected_drag ? "semi-implicitly, projected" :
-                                          "semi-implicitly, lumped")
+          << (!parameters.implicit_drag  ? "explicitly" :
+              parameters.projected_drag  ? "semi-implicitly, projected" :
+              parameters.consistent_drag ? "semi-implicitly, consistent" :
+                                           "semi-implicitly, lumped")
           << "; suspension above n = " << parameters.suspension_porosity
           << (fluid_parameters.dynamic_subscales ? "; dynamic subscales" : "") << "; materials";
       // (a material's model decides its points' properties: Hencky's carry b^e)

@@ -94,14 +94,16 @@ namespace slidewave
         throw InputError(soil_section + "/Prescribed velocity",
                          "(set)",
                          "none with Physics = granular water");
-      // The projection takes the water's step as the grains' (DragProjection).
-      if (parameters.projected_drag && parameters.sub_cycling)
+      // The projection and the consistent coupling take the water's step as the grains'
+      // (DragProjection, fluid::NodalGrainsCoupling).
+      if ((parameters.projected_drag || parameters.consistent_drag) && parameters.sub_cycling)
         throw InputError(section + "/Drag coupling",
-                         "semi-implicit projected",
+                         parameters.projected_drag ? "semi-implicit projected" :
+                                                     "semi-implicit consistent",
                          "'semi-implicit' (the lumped coupling) or 'explicit' with 'Sub-cycling "
-                         "= true': set one of them ('semi-implicit projected', the default, "
-                         "takes the water's step as the grains', one skeleton step per water "
-                         "step)");
+                         "= true': set one of them (the projected coupling, the default, and "
+                         "the consistent one take the water's step as the grains', one "
+                         "skeleton step per water step)");
       // APIC hands the grid's velocities back to the points nearly unfiltered, and the
       // projected grains take on their lumped nodal masses the increment of the water's
       // consistent matrix, which is up to three times larger on the shortest waves: where
@@ -117,6 +119,20 @@ namespace slidewave
                              "four cells grow where the grains are permeable; apic only with "
                              "'semi-implicit' (lumped) or 'explicit' coupling "
                              "(doc/granular-water.md, \"APIC and the projected coupling\")");
+      // The consistent coupling gives the grains, on their lumped masses, exactly what the
+      // water loses, but toward the undrained limit (Terzaghi at k = 1e-12 m^2) APIC lets a
+      // mode grow after about 2000 steps: the locked mixture's water has its consistent
+      // mass, its grains the lumped one (doc/granular-water.md, "The consistent coupling").
+      if (parameters.consistent_drag
+          && soil_parameters.velocity_transfer == engine::VelocityTransfer::apic)
+        throw InputError(soil_section + "/Velocity transfer",
+                         "apic",
+                         "flip with '" + section
+                           + "/Drag coupling = semi-implicit consistent': with APIC the "
+                             "consistent coupling grows without bound toward the undrained "
+                             "limit (the grains' lumped and the water's consistent mass); apic "
+                             "only with 'semi-implicit' (lumped) or 'explicit' coupling "
+                             "(doc/granular-water.md, \"The consistent coupling\")");
       // The grains are denser than the skeleton: 0 < n_0 <= 0.99.
       for (const auto &material : soil_parameters.materials)
         {

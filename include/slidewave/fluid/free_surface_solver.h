@@ -56,10 +56,20 @@ namespace slidewave
        * physics (advance() then changes nothing). Call before setup() or load(), instead
        * of a fixed porous structure. @p grain_density > 0: the solid's flux field is
        * (1 - n) v* of its predicted velocity and the flow eliminates its momentum (PorousMedium,
-       * the semi-implicit drag); 0: of its velocity (explicit drag).
+       * the semi-implicit drag); 0: of its velocity (explicit drag). @p nodal_grains (with
+       * grain_density > 0; kept by the caller, filled before each step): the grains' nodal
+       * momentum is solved with the water (NodalGrainsCoupling).
        */
       void
-      enable_moving_solid(double grain_density = 0.);
+      enable_moving_solid(double grain_density = 0., const NodalGrains *nodal_grains = nullptr);
+
+      /** The grains' nodal coupling (enable_moving_solid() with nodal grains; null
+       *  otherwise): after advance(), the grains' increment of the step. */
+      const NodalGrainsCoupling *
+      nodal_grains_coupling() const
+      {
+        return flow_system.nodal_grains_coupling();
+      }
 
       /** The initial pressure is that of the initial fluids at rest (hydrostatic in the
        *  water) instead of 0 (a moving solid resting on the water's

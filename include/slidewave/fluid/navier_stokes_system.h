@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <slidewave/fluid/free_surface_parameters.h>
+#include <slidewave/fluid/nodal_grains_coupling.h>
 #include <slidewave/fluid/porous_medium.h>
 #include <slidewave/fluid/velocity_subscales.h>
 #include <slidewave/grid/finite_element_field.h>
@@ -100,6 +101,17 @@ namespace slidewave
         porous = medium;
         for (linear_algebra::CellGather &gather : porous_gathers)
           gather.clear();
+        grains_coupling.reset();
+        if (medium.nodal_grains != nullptr)
+          grains_coupling = std::make_unique<NodalGrainsCoupling>(grid);
+      }
+
+      /** The grains' nodal coupling of the porous medium (PorousMedium::nodal_grains; null
+       *  without): after step(), the grains' increment of the step. */
+      const NodalGrainsCoupling *
+      nodal_grains_coupling() const
+      {
+        return grains_coupling.get();
       }
 
       /** Sets the walls', the inflow sides' (at @p time) and the hanging nodes' values in
@@ -146,7 +158,9 @@ namespace slidewave
       /** The open sides' share of a cell's matrix and right-hand side: the viscous
        *  traction's transposed part, so that (mu grad u - p I) n = 0 there, the backflow
        *  term, and the flux of the drained water relative to a skeleton whose momentum
-       *  is eliminated (@p porous_values, null without a porous medium). */
+       *  is eliminated (@p porous_values, null without a porous medium; with the grains'
+       *  nodal coupling also into @p nodal_delta and @p nodal_delta_rhs, the terms that
+       *  coupling replaces). */
       template <class FlowCell, class PhaseCell>
       void
       add_open_boundary_terms(const FlowCell             &cell,
@@ -156,7 +170,22 @@ namespace slidewave
                               const StepLengths          &lengths,
                               PorousMediumValues         *porous_values,
                               dealii::FullMatrix<double> &local_matrix,
-                              dealii::Vector<double>     &local_rhs) const;
+                              dealii::Vector<double>     &local_rhs,
+                              dealii::FullMatrix<double> *nodal_delta,
+                              dealii::Vector<double>     *nodal_delta_rhs) const;
+
+      /** The Galerkin terms at one quadrature point (@p value, @p gradient, @p component:
+       *  the shape functions') of the pointwise elimination that the grains' nodal
+       *  coupling replaces, into @p delta and @p delta_rhs. */
+      static void
+      add_nodal_delta(const PorousCoefficients                &medium,
+                      const dealii::Tensor<1, 2>              &grad_p_n,
+                      const std::vector<double>               &value,
+                      const std::vector<dealii::Tensor<1, 2>> &gradient,
+                      const std::vector<unsigned int>         &component,
+                      double                                   JxW,
+                      dealii::FullMatrix<double>              &delta,
+                      dealii::Vector<double>                  &delta_rhs);
 
       /** The matrix and right-hand side of one step. */
       void
@@ -185,6 +214,13 @@ namespace slidewave
       linear_algebra::CellScatter scatter;
       linear_algebra::CellGather  flow_gather, phase_gather;
       PorousMediumGathers         porous_gathers;
+      /** With the grains' nodal coupling: the coupling, the water's matrix with the Galerkin
+       *  drag against u (A_w; `matrix` then holds the pointwise elimination, the
+       *  preconditioner's) and the right-hand side of `matrix`, unused. */
+      std::unique_ptr<NodalGrainsCoupling>   grains_coupling;
+      dealii::TrilinosWrappers::SparseMatrix coupled_matrix;
+      VectorType                             unused_rhs;
+      bool                                   coupled_matrix_ready = false;
       /** The positions of u_x and u_y of the vertices this rank owns in the owned flow
        *  vector (max_speed(); cleared on grid changes, rebuilt by the next call). */
       mutable std::vector<std::array<int, 2>> vertex_velocity;

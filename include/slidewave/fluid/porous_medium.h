@@ -12,6 +12,7 @@
 #include <memory>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/finite_element_field.h>
+#include <slidewave/grid/nodal_workspace.h>
 #include <slidewave/linear_algebra/cell_gather.h>
 #include <vector>
 
@@ -70,6 +71,18 @@ namespace slidewave
      * it is weak; the explicit coupling (v_s of the old step) is stable only for dt below about
      * rho^s (1 - n) k / mu (doc/granular-water.md).
      */
+    /** The grains' nodes of a skeleton whose nodal momentum the water's solve takes with it
+     *  (NodalGrainsCoupling): their layout, hanging nodes and masses m_I (nodal_mass), and
+     *  per component 1 on the owned nodes solved for, 0 on the held, hanging and empty
+     *  ones. */
+    struct NodalGrains
+    {
+      const grid::NodalWorkspace                         *nodes = nullptr;
+      std::array<const grid::NodalWorkspace::Vector *, 2> free{};
+    };
+
+
+
     struct PorousMedium
     {
       const grid::FiniteElementField *fluid_fraction       = nullptr;
@@ -77,6 +90,10 @@ namespace slidewave
       const grid::FiniteElementField *solid_flux           = nullptr;
       /** rho^s [kg/m^3] of a skeleton whose momentum the flow eliminates; 0: v_s given. */
       double grain_density = 0.;
+      /** With grain_density: the grains' nodes, whose momentum the water's solve takes
+       *  with it (NodalGrainsCoupling); null: the grains' momentum eliminated at the
+       *  quadrature points only. */
+      const NodalGrains *nodal_grains = nullptr;
 
       bool
       active() const
@@ -102,6 +119,8 @@ namespace slidewave
       dealii::Tensor<1, 2> grad_n;
       /** The drag coefficient of the water's momentum [kg/(m^3 s)]: C, or C (1 - s). */
       double drag = 0.;
+      /** C = n^2 mu / kappa itself. */
+      double drag_coefficient = 0.;
       /** The solid's velocity the drag acts against: v_s, or v*. */
       dealii::Tensor<1, 2> v_s;
       /** div((1 - n) v_s), known (v_s or v*; tested by q). */
@@ -170,6 +189,13 @@ namespace slidewave
       operator[](const unsigned int q) const
       {
         return coefficients[q];
+      }
+
+      /** The fluid fraction at the cell's vertices (after a reinit() with a cell number). */
+      const std::vector<double> &
+      vertex_fluid_fraction() const
+      {
+        return dofs_fraction;
       }
 
       const PorousCoefficients &

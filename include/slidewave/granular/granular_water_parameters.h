@@ -59,6 +59,9 @@ namespace slidewave
        *  (DragProjection, 'semi-implicit projected'; implies implicit_drag); false: the
        *  lumped nodal drag W_I ('semi-implicit') or the explicit coupling. */
       bool projected_drag = true;
+      /** The grains' nodal momentum solved with the water (fluid::NodalGrainsCoupling,
+       *  'semi-implicit consistent'; implies implicit_drag). */
+      bool consistent_drag = false;
       /** n_s: where a cell's points together are looser, their grains are out of
        *  contact, a suspension without effective stress or stiffness
        *  (soil::SoilModel::update_cell). */

@@ -126,11 +126,16 @@ namespace slidewave
       void
       apply_top_load();
 
-      /** The water's force on the grains of the semi-implicit coupling (projected) into
-       *  water_force, after the water's step of length @p dt, with the skeleton's fields
-       *  @p fields of this step. */
+      /** The water's force on the grains of the semi-implicit coupling (projected or
+       *  consistent) into water_force, after the water's step of length @p dt, with the
+       *  skeleton's fields @p fields of this step. */
       void
       project_water_force(const SkeletonFields &fields, double dt);
+
+      /** The grains' nodes of this step for the consistent coupling: 1 on the owned nodes
+       *  with more than the empty mass, 0 on held components and hanging nodes. */
+      void
+      prepare_nodal_grains();
 
       /** The water's fields the skeleton hands over (SkeletonFluidExchange::to_fluid()). */
       SkeletonFields
@@ -171,10 +176,14 @@ namespace slidewave
       std::array<grid::NodalWorkspace::Vector, 2> water_force;
       /** The water's nodal drag W_I of the semi-implicit coupling. */
       grid::NodalWorkspace::Vector water_drag;
-      io::ParticleOutput           particle_output;
-      fluid::FreeSurfaceOutput     fluid_output;
-      dealii::TimerOutput         *timer = nullptr;
-      fluid::FluidStepReport       last_report;
+      /** The grains' nodes the water's solve takes with it ('semi-implicit consistent';
+       *  prepare_nodal_grains()), and which of their components it solves for. */
+      fluid::NodalGrains                          nodal_grains;
+      std::array<grid::NodalWorkspace::Vector, 2> grains_free;
+      io::ParticleOutput                          particle_output;
+      fluid::FreeSurfaceOutput                    fluid_output;
+      dealii::TimerOutput                        *timer = nullptr;
+      fluid::FluidStepReport                      last_report;
       /** The water's volume against its start and what left through the sides. */
       fluid::WaterBalance balance{fluid_parameters};
       unsigned int        check_interval = 10;

@@ -1,0 +1,166 @@
+#ifndef slidewave_fluid_nodal_grains_coupling_h
+#define slidewave_fluid_nodal_grains_coupling_h
+
+#include <array>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <slidewave/fluid/porous_medium.h>
+#include <slidewave/grid/background_grid.h>
+#include <slidewave/linear_algebra/cell_gather.h>
+#include <vector>
+
+namespace slidewave
+{
+  namespace fluid
+  {
+    /**
+     * The grains' nodal momentum of a moving skeleton solved together with the water
+     * (`Granular water/Drag coupling = semi-implicit consistent`, PorousMedium::nodal_grains).
+     *
+     * The grains' nodes (the grid's Q1 vertices, masses m_I of the points) take the
+     * increment dv = v - v* over their predicted velocity v* (which holds the old
+     * pressure's force) from the drag of the new step and the pressure's increment:
+     *
+     *   (M / dt + D) dv = D u - F v*_s - G (p - p^n),
+     *
+     * with M = diag(m_I), D_IJ = integral of C N_I N_J (the drag, consistent),
+     * (F v*_s)_I = integral of C N_I v*_s and (G p)_I = (1 - n_I) integral of N_I grad p
+     * (the pressure's force lumped on the node's grains, as on the old pressure in v*). The
+     * water's equations see the same grains: the drag C (u - v*_s - dv_h) with
+     * dv_h = sum_J N_J dv_J, and in the continuity the divergence of the grains' flux
+     * sum_J N_J (1 - n_J)(v*_J + dv_J), whose increment's part is the adjoint of G up to
+     * the open sides' flux. The drag the water loses is exactly what the grains gain, and the
+     * pressure's work on the grains is what the continuity counts.
+     *
+     * dv is eliminated without a matrix: the water's system is A_w x + B dv(x) = f, with
+     * A_w the water's matrix with the Galerkin drag against u (NavierStokesSystem), B the
+     * drag's and the flux's columns of dv and dv(x) = (M / dt + D)^-1 (L x + r_0). GMRES
+     * iterates on this Schur complement, each product solving the grains' system by
+     * conjugate gradients per component (the cells with grains, their row sums as the
+     * preconditioner); the held components, the hanging and the empty nodes (free = 0) are
+     * rows of the identity. The constrained rows of the water (walls, inflow, hanging
+     * nodes) take no coupling term, and their columns enter through the constraints
+     * (homogeneous in the products, inhomogeneous in the right-hand side).
+     *
+     * Filled by the water's assembly (begin(), add_cell()), used by its solve (finish(),
+     * vmult()), read by the skeleton (increment()).
+     */
+    class NodalGrainsCoupling
+    {
+    public:
+      using VectorType  = dealii::TrilinosWrappers::MPI::Vector;
+      using NodalVector = grid::NodalWorkspace::Vector;
+
+      explicit NodalGrainsCoupling(const grid::BackgroundGrid &grid);
+
+      /** Starts an assembly of a step of length @p dt with the grains @p grains. */
+      void
+      begin(const NodalGrains &grains, double dt);
+
+      /** The owned cell @p grid_cell (of the grid's DoFHandler) numbered @p cell_number in
+       *  tree order, with grains: @p fv the flow's FEValues on it, @p component and
+       *  @p vertex each flow shape function's component and vertex, @p drag and @p v_s the
+       *  drag coefficient C and the grains' predicted velocity at its quadrature points,
+       *  @p fluid_fraction the fluid fraction at its vertices, @p indices its flow
+       *  degrees of freedom. */
+      void
+      add_cell(unsigned int                                        cell_number,
+               const dealii::DoFHandler<2>::active_cell_iterator  &grid_cell,
+               const dealii::FEValues<2>                          &fv,
+               const std::vector<unsigned int>                    &component,
+               const std::vector<unsigned int>                    &vertex,
+               const std::vector<double>                          &drag,
+               const std::vector<dealii::Tensor<1, 2>>            &v_s,
+               const std::vector<double>                          &fluid_fraction,
+               const std::vector<dealii::types::global_dof_index> &indices);
+
+      /** After the assembly: the constraints @p constraints of the flow (and their
+       *  kept until the solve is done), the flow's cell gather @p gather and a ghosted vector of
+       * its layout @p ghosted_layout; the old pressure from @p flow_old (ghosted, the flow's state
+       * 0 before the solve). Subtracts B dv(g) (g: the constraints' values) from
+       *  @p rhs (collective). */
+      void
+      finish(const dealii::AffineConstraints<double> &constraints,
+             const linear_algebra::CellGather        &gather,
+             const VectorType                        &flow_old,
+             VectorType                              &rhs);
+
+      /** y += B dv(x) - B dv(0): the coupling's share of the Schur complement's product
+       *  (collective). */
+      void
+      vmult_add(VectorType &y, const VectorType &x) const;
+
+      /** The grains' increment dv of the solved flow @p solution (constraints
+       *  distributed; collective): into increment(). */
+      void
+      compute_increment(const VectorType &solution);
+
+      /** The last compute_increment()'s dv (the nodal workspace's layout, ghosts and
+       *  hanging nodes set). */
+      const std::array<NodalVector, 2> &
+      increment() const
+      {
+        return dv;
+      }
+
+      /** The conjugate gradients' iterations since the last begin(). */
+      unsigned int
+      inner_iterations() const
+      {
+        return n_inner;
+      }
+
+    private:
+      /** r = L x (+ r_0 with @p with_known) at the owned nodes, from the ghosted flow
+       *  vector @p x (its constrained values set). */
+      void
+      grains_load(const VectorType &x, bool with_known) const;
+
+      /** dv = (M / dt + D)^-1 r, per component. */
+      void
+      solve_grains() const;
+
+      /** out = B dv (owned; the constrained rows' shares to their parents or dropped). */
+      void
+      water_load(VectorType &out) const;
+
+      /** y = (M / dt + D) x for component @p d (free nodes; identity elsewhere). */
+      void
+      grains_vmult(unsigned int d, NodalVector &y, const NodalVector &x) const;
+
+      const grid::BackgroundGrid &grid;
+      NodalGrains                 grains;
+      double                      dt = 0.;
+      /** A cell with grains: its number in tree order, its nodes' local indices, its flow
+       *  degrees of freedom, D_IJ, the pressure's force on the grains (G p)_I = sum_J
+       *  pressure(d, I, J) p_J, the continuity's flux sum_J flux(d, I, J) dv_J(d) in row I,
+       *  and F v*_s (d, I). */
+      struct CellData
+      {
+        unsigned int                                    cell_number;
+        std::array<unsigned int, 4>                     nodes;
+        std::array<dealii::types::global_dof_index, 12> indices;
+        std::array<double, 16>                          drag;
+        std::array<double, 32>                          pressure, flux;
+        std::array<double, 8>                           known;
+      };
+      std::vector<CellData> cells;
+      /** The flow's local degree of freedom of component c at vertex I: position[3 I + c]. */
+      std::array<unsigned int, 12>             position{};
+      const linear_algebra::CellGather        *gather           = nullptr;
+      const dealii::AffineConstraints<double> *flow_constraints = nullptr;
+      /** The old pressure at each cell's vertices (per cell with grains, 4 each). */
+      std::vector<double> old_pressure;
+      /** The constraints' values g (distribute() of zero). */
+      VectorType                         values;
+      mutable VectorType                 x_owned, x_ghosted, out;
+      mutable std::array<NodalVector, 2> load, dv;
+      mutable NodalVector                work, product, inverse_diagonal;
+      mutable unsigned int               n_inner = 0;
+    };
+  } // namespace fluid
+} // namespace slidewave
+
+#endif

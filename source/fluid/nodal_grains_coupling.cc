@@ -8,36 +8,6 @@ namespace slidewave
 {
   namespace fluid
   {
-    namespace
-    {
-      /** One component's grains' operator, as the conjugate gradients call it. */
-      template <class Coupling>
-      struct ComponentOperator
-      {
-        const Coupling &coupling;
-        unsigned int    d;
-        void
-        vmult(NodalGrainsCoupling::NodalVector &y, const NodalGrainsCoupling::NodalVector &x) const
-        {
-          coupling(d, y, x);
-        }
-      };
-
-      /** Jacobi: the inverse row sums. */
-      struct InverseDiagonal
-      {
-        const NodalGrainsCoupling::NodalVector &inverse;
-        void
-        vmult(NodalGrainsCoupling::NodalVector &y, const NodalGrainsCoupling::NodalVector &x) const
-        {
-          for (unsigned int i = 0; i < y.locally_owned_size(); ++i)
-            y.local_element(i) = inverse.local_element(i) * x.local_element(i);
-        }
-      };
-    } // namespace
-
-
-
     NodalGrainsCoupling::NodalGrainsCoupling(const grid::BackgroundGrid &grid)
       : grid(grid)
     {
@@ -51,11 +21,11 @@ namespace slidewave
       grains = nodal_grains;
       dt     = step;
       cells.clear();
+      grains_operator.cells.clear();
       n_inner                 = 0;
       const NodalVector &mass = grains.nodes->nodal_mass;
-      if (work.get_partitioner() != mass.get_partitioner())
-        for (NodalVector *v :
-             {&load[0], &load[1], &dv[0], &dv[1], &work, &product, &inverse_diagonal})
+      if (sums.get_partitioner() != mass.get_partitioner())
+        for (NodalVector *v : {&load[0], &load[1], &dv[0], &dv[1], &sums, &inverse_diagonal})
           v->reinit(mass);
     }
 
@@ -73,13 +43,14 @@ namespace slidewave
                                   const std::vector<dealii::types::global_dof_index> &indices)
     {
       AssertDimension(indices.size(), 12);
-      CellData data;
+      CellData                            data;
+      grid::NodalCellOperator::CellMatrix block;
       data.cell_number = cell_number;
       std::vector<dealii::types::global_dof_index> grid_indices(4);
       grid_cell->get_dof_indices(grid_indices);
       for (unsigned int I = 0; I < 4; ++I)
-        data.nodes[I] = grains.nodes->local_index(grid_indices[I]);
-      data.drag.fill(0.);
+        block.nodes[I] = grains.nodes->local_index(grid_indices[I]);
+      block.matrix.fill(0.);
       data.pressure.fill(0.);
       data.flux.fill(0.);
       data.known.fill(0.);
@@ -101,7 +72,7 @@ namespace slidewave
                 {
                   const unsigned int         j  = position[3 * J + 2];
                   const dealii::Tensor<1, 2> Gj = fv.shape_grad(j, q);
-                  data.drag[4 * I + J] += drag[q] * Ni * fv.shape_value(j, q) * JxW;
+                  block.matrix[4 * I + J] += drag[q] * Ni * fv.shape_value(j, q) * JxW;
                   // (G p)_I = (1 - n_I) integral of N_I grad p, lumped on the node's grains;
                   // the continuity's div(N_J (1 - n_J) dv_J) tested by N_I
                   for (unsigned int d = 0; d < 2; ++d)
@@ -114,6 +85,7 @@ namespace slidewave
             }
         }
       cells.push_back(data);
+      grains_operator.cells.push_back(block);
     }
 
 
@@ -148,16 +120,12 @@ namespace slidewave
         }
       // The grains' row sums: the conjugate gradients' preconditioner.
       const grid::NodalWorkspace &nodes = *grains.nodes;
-      product                           = 0.;
-      for (const CellData &cell : cells)
-        for (unsigned int I = 0; I < 4; ++I)
-          for (unsigned int J = 0; J < 4; ++J)
-            product.local_element(cell.nodes[I]) += cell.drag[4 * I + J];
-      nodes.condense_hanging_nodes(product);
-      product.compress(dealii::VectorOperation::add);
-      for (unsigned int i = 0; i < product.locally_owned_size(); ++i)
+      grains_operator.reinit(nodes, grains.free);
+      grains_operator.set_diagonal(&nodes.nodal_mass, 1. / dt);
+      grains_operator.row_sums(sums);
+      for (unsigned int i = 0; i < sums.locally_owned_size(); ++i)
         {
-          const double sum = nodes.nodal_mass.local_element(i) / dt + product.local_element(i);
+          const double sum = nodes.nodal_mass.local_element(i) / dt + sums.local_element(i);
           inverse_diagonal.local_element(i) = sum > 0. ? 1. / sum : 1.;
         }
       // The known part: B dv(g) with the constraints' values g (and r_0).
@@ -207,7 +175,8 @@ namespace slidewave
       std::array<double, 12> dofs;
       for (unsigned int k = 0; k < cells.size(); ++k)
         {
-          const CellData &cell = cells[k];
+          const CellData                            &cell  = cells[k];
+          const grid::NodalCellOperator::CellMatrix &block = grains_operator.cells[k];
           gather->get(cell.cell_number, x, dofs.data());
           std::array<double, 4> p;
           for (unsigned int J = 0; J < 4; ++J)
@@ -218,9 +187,9 @@ namespace slidewave
                 // D u - (1 - n_I) K (p - p^n) (- F v*_s)
                 double r = with_known ? -cell.known[4 * d + I] : 0.;
                 for (unsigned int J = 0; J < 4; ++J)
-                  r += cell.drag[4 * I + J] * dofs[position[3 * J + d]]
+                  r += block.matrix[4 * I + J] * dofs[position[3 * J + d]]
                        - cell.pressure[16 * d + 4 * I + J] * p[J];
-                load[d].local_element(cell.nodes[I]) += r;
+                load[d].local_element(block.nodes[I]) += r;
               }
         }
       for (unsigned int d = 0; d < 2; ++d)
@@ -237,79 +206,9 @@ namespace slidewave
     void
     NodalGrainsCoupling::solve_grains() const
     {
-      const grid::NodalWorkspace &nodes = *grains.nodes;
       for (unsigned int d = 0; d < 2; ++d)
-        {
-          NodalVector &x = dv[d];
-          x.zero_out_ghost_values();
-          x                 = 0.;
-          const double norm = load[d].l2_norm();
-          if (norm > 0.)
-            {
-              dealii::SolverControl         control(500, 1e-12 * norm);
-              dealii::SolverCG<NodalVector> cg(control);
-              const auto                    apply
-                = [this](const unsigned int c, NodalVector &y, const NodalVector &v) {
-                    grains_vmult(c, y, v);
-                  };
-              try
-                {
-                  cg.solve(ComponentOperator<decltype(apply)>{apply, d},
-                           x,
-                           load[d],
-                           InverseDiagonal{inverse_diagonal});
-                }
-              catch (const dealii::SolverControl::NoConvergence &failure)
-                {
-                  throw RunFailure("the grains' nodal drag system (conjugate gradients) did "
-                                   "not converge: residual "
-                                   + to_string(failure.last_residual) + " after "
-                                   + std::to_string(failure.last_step)
-                                   + " iterations (reduce the time step)");
-                }
-              n_inner += control.last_step();
-            }
-          x.update_ghost_values();
-          nodes.interpolate_hanging_nodes(x);
-        }
-    }
-
-
-
-    void
-    NodalGrainsCoupling::grains_vmult(const unsigned int d,
-                                      NodalVector       &y,
-                                      const NodalVector &x) const
-    {
-      const grid::NodalWorkspace &nodes   = *grains.nodes;
-      const NodalVector          &free    = *grains.free[d];
-      const unsigned int          n_owned = x.locally_owned_size();
-      // x on the free nodes, the hanging ones from their parents.
-      for (unsigned int i = 0; i < n_owned; ++i)
-        work.local_element(i) = free.local_element(i) * x.local_element(i);
-      work.update_ghost_values();
-      nodes.interpolate_hanging_nodes(work);
-      product = 0.;
-      for (const CellData &cell : cells)
-        for (unsigned int I = 0; I < 4; ++I)
-          {
-            double sum = 0.;
-            for (unsigned int J = 0; J < 4; ++J)
-              sum += cell.drag[4 * I + J] * work.local_element(cell.nodes[J]);
-            product.local_element(cell.nodes[I]) += sum;
-          }
-      nodes.condense_hanging_nodes(product);
-      product.compress(dealii::VectorOperation::add);
-      work.zero_out_ghost_values();
-      // M / dt + D on the free nodes, the identity elsewhere: symmetric, positive definite.
-      for (unsigned int i = 0; i < n_owned; ++i)
-        {
-          const double f     = free.local_element(i);
-          y.local_element(i) = f
-                                 * (nodes.nodal_mass.local_element(i) / dt * x.local_element(i)
-                                    + product.local_element(i))
-                               + (1. - f) * x.local_element(i);
-        }
+        n_inner += grains_operator.solve(
+          d, dv[d], load[d], inverse_diagonal, 1e-12, 500, "the grains' nodal drag system");
     }
 
 
@@ -320,18 +219,20 @@ namespace slidewave
       result = 0.;
       dealii::Vector<double>                       local(12);
       std::vector<dealii::types::global_dof_index> indices(12);
-      for (const CellData &cell : cells)
+      for (unsigned int k = 0; k < cells.size(); ++k)
         {
-          local = 0.;
+          const CellData                            &cell  = cells[k];
+          const grid::NodalCellOperator::CellMatrix &block = grains_operator.cells[k];
+          local                                            = 0.;
           for (unsigned int I = 0; I < 4; ++I)
             for (unsigned int J = 0; J < 4; ++J)
               {
-                const unsigned int node = cell.nodes[J];
+                const unsigned int node = block.nodes[J];
                 // - D dv in the momentum; div(N_J (1 - n_J) dv_J) in the continuity
                 for (unsigned int d = 0; d < 2; ++d)
                   {
                     const double v = dv[d].local_element(node);
-                    local[position[3 * I + d]] -= cell.drag[4 * I + J] * v;
+                    local[position[3 * I + d]] -= block.matrix[4 * I + J] * v;
                     local[position[3 * I + 2]] += cell.flux[16 * d + 4 * I + J] * v;
                   }
               }

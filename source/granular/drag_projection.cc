@@ -14,35 +14,6 @@ namespace slidewave
 {
   namespace granular
   {
-    namespace
-    {
-      /** One component's operator, as the conjugate gradients call it. */
-      struct ComponentOperator
-      {
-        const DragProjection &projection;
-        unsigned int          d;
-        void
-        vmult(DragProjection::Vector &y, const DragProjection::Vector &x) const
-        {
-          projection.vmult(d, y, x);
-        }
-      };
-
-      /** Jacobi: the inverse row sums. */
-      struct InverseDiagonal
-      {
-        const DragProjection::Vector &inverse;
-        void
-        vmult(DragProjection::Vector &y, const DragProjection::Vector &x) const
-        {
-          for (unsigned int i = 0; i < y.locally_owned_size(); ++i)
-            y.local_element(i) = inverse.local_element(i) * x.local_element(i);
-        }
-      };
-    } // namespace
-
-
-
     DragProjection::DragProjection(const grid::BackgroundGrid         &grid,
                                    const fluid::FreeSurfaceParameters &parameters,
                                    const double                        grain_density)
@@ -66,6 +37,7 @@ namespace slidewave
       const dealii::FEValues<2> &fv_grid = values.grid_values();
       std::vector<dealii::types::global_dof_index> indices(fv_grid.dofs_per_cell);
       AssertDimension(indices.size(), 4);
+      std::vector<grid::NodalCellOperator::CellMatrix> &cells = projection.cells;
       cells.clear();
       for (unsigned int d = 0; d < 2; ++d)
         rhs[d] = 0.;
@@ -75,7 +47,7 @@ namespace slidewave
         if (!values.reinit(cell, cell_number++))
           return;
         cell->get_dof_indices(indices);
-        CellMatrix block;
+        grid::NodalCellOperator::CellMatrix block;
         for (unsigned int i = 0; i < 4; ++i)
           block.nodes[i] = nodes.local_index(indices[i]);
         block.matrix.fill(0.);
@@ -130,38 +102,6 @@ namespace slidewave
 
 
     void
-    DragProjection::vmult(const unsigned int d, Vector &y, const Vector &x) const
-    {
-      const grid::NodalWorkspace &nodes   = *workspace;
-      const unsigned int          n_owned = x.locally_owned_size();
-      // x on the free nodes, the hanging ones from their parents.
-      for (unsigned int i = 0; i < n_owned; ++i)
-        work.local_element(i) = free[d].local_element(i) * x.local_element(i);
-      work.update_ghost_values();
-      nodes.interpolate_hanging_nodes(work);
-      product = 0.;
-      for (const CellMatrix &cell : cells)
-        for (unsigned int i = 0; i < 4; ++i)
-          {
-            double sum = 0.;
-            for (unsigned int j = 0; j < 4; ++j)
-              sum += cell.matrix[4 * i + j] * work.local_element(cell.nodes[j]);
-            product.local_element(cell.nodes[i]) += sum;
-          }
-      nodes.condense_hanging_nodes(product);
-      product.compress(dealii::VectorOperation::add);
-      work.zero_out_ghost_values();
-      // The identity on the held, hanging and empty nodes: symmetric, positive definite.
-      for (unsigned int i = 0; i < n_owned; ++i)
-        {
-          const double f     = free[d].local_element(i);
-          y.local_element(i) = f * product.local_element(i) + (1. - f) * x.local_element(i);
-        }
-    }
-
-
-
-    void
     DragProjection::increment(const grid::FiniteElementField  &flow,
                               const grid::FiniteElementField  &phase,
                               const SkeletonFields            &fields,
@@ -170,26 +110,19 @@ namespace slidewave
                               const double                     dt,
                               std::array<Vector, 2>           &increment)
     {
-      workspace = &nodes;
-      if (work.get_partitioner() != nodes.nodal_mass.get_partitioner())
+      if (sums.get_partitioner() != nodes.nodal_mass.get_partitioner())
         {
-          for (Vector *v :
-               {&free[0], &free[1], &inverse_diagonal, &rhs[0], &rhs[1], &work, &product})
+          for (Vector *v : {&free[0], &free[1], &inverse_diagonal, &rhs[0], &rhs[1], &sums})
             v->reinit(nodes.nodal_mass);
           gathers.clear(); // the grid changed
         }
+      projection.reinit(nodes, {{&free[0], &free[1]}});
       assemble(flow, phase, fields, nodes, dt);
 
       // The row sums (the lumped weighted mass): the preconditioner, and which nodes the
       // cells with grains reach.
-      product = 0.;
-      for (const CellMatrix &cell : cells)
-        for (unsigned int i = 0; i < 4; ++i)
-          for (unsigned int j = 0; j < 4; ++j)
-            product.local_element(cell.nodes[i]) += cell.matrix[4 * i + j];
-      nodes.condense_hanging_nodes(product);
-      product.compress(dealii::VectorOperation::add);
-      const unsigned int n_owned = product.locally_owned_size();
+      projection.row_sums(sums);
+      const unsigned int n_owned = sums.locally_owned_size();
       for (unsigned int i = 0; i < n_owned; ++i)
         free[0].local_element(i) = free[1].local_element(i) = 1.;
       constraints.apply(free[0], free[1]); // the held components
@@ -198,7 +131,7 @@ namespace slidewave
           free[0].local_element(i) = free[1].local_element(i) = 0.;
       for (unsigned int i = 0; i < n_owned; ++i)
         {
-          const double sum = product.local_element(i);
+          const double sum = sums.local_element(i);
           if (!(sum > 0.))
             free[0].local_element(i) = free[1].local_element(i) = 0.;
           inverse_diagonal.local_element(i) = sum > 0. ? 1. / sum : 1.;
@@ -212,27 +145,7 @@ namespace slidewave
           Vector &x = increment[d];
           if (x.get_partitioner() != nodes.nodal_mass.get_partitioner())
             x.reinit(nodes.nodal_mass);
-          x                 = 0.;
-          const double norm = b.l2_norm();
-          if (norm > 0.)
-            {
-              dealii::SolverControl    control(200, 1e-10 * norm);
-              dealii::SolverCG<Vector> cg(control);
-              try
-                {
-                  cg.solve(ComponentOperator{*this, d}, x, b, InverseDiagonal{inverse_diagonal});
-                }
-              catch (const dealii::SolverControl::NoConvergence &failure)
-                {
-                  throw RunFailure("the skeleton's drag increment (conjugate gradients) did "
-                                   "not converge: residual "
-                                   + to_string(failure.last_residual) + " after "
-                                   + std::to_string(failure.last_step)
-                                   + " iterations (reduce the time step)");
-                }
-            }
-          x.update_ghost_values();
-          nodes.interpolate_hanging_nodes(x);
+          projection.solve(d, x, b, inverse_diagonal, 1e-10, 200, "the skeleton's drag increment");
         }
     }
   } // namespace granular

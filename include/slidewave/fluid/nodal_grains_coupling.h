@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <slidewave/fluid/porous_medium.h>
 #include <slidewave/grid/background_grid.h>
+#include <slidewave/grid/nodal_cell_operator.h>
 #include <slidewave/linear_algebra/cell_gather.h>
 #include <vector>
 
@@ -126,23 +127,17 @@ namespace slidewave
       void
       water_load(VectorType &out) const;
 
-      /** y = (M / dt + D) x for component @p d (free nodes; identity elsewhere). */
-      void
-      grains_vmult(unsigned int d, NodalVector &y, const NodalVector &x) const;
-
       const grid::BackgroundGrid &grid;
       NodalGrains                 grains;
       double                      dt = 0.;
-      /** A cell with grains: its number in tree order, its nodes' local indices, its flow
-       *  degrees of freedom, D_IJ, the pressure's force on the grains (G p)_I = sum_J
-       *  pressure(d, I, J) p_J, the continuity's flux sum_J flux(d, I, J) dv_J(d) in row I,
-       *  and F v*_s (d, I). */
+      /** A cell with grains: its number in tree order, its flow degrees of freedom (its
+       *  nodes and D_IJ are grains_operator's cell of the same index), the pressure's force
+       *  on the grains (G p)_I = sum_J pressure(d, I, J) p_J, the continuity's flux sum_J
+       *  flux(d, I, J) dv_J(d) in row I, and F v*_s (d, I). */
       struct CellData
       {
         unsigned int                                    cell_number;
-        std::array<unsigned int, 4>                     nodes;
         std::array<dealii::types::global_dof_index, 12> indices;
-        std::array<double, 16>                          drag;
         std::array<double, 32>                          pressure, flux;
         std::array<double, 8>                           known;
       };
@@ -157,8 +152,10 @@ namespace slidewave
       VectorType                         values;
       mutable VectorType                 x_owned, x_ghosted, out;
       mutable std::array<NodalVector, 2> load, dv;
-      mutable NodalVector                work, product, inverse_diagonal;
-      mutable unsigned int               n_inner = 0;
+      /** M / dt + D, the grains' operator (its cells' matrices D). */
+      grid::NodalCellOperator grains_operator;
+      NodalVector             sums, inverse_diagonal;
+      mutable unsigned int    n_inner = 0;
     };
   } // namespace fluid
 } // namespace slidewave

@@ -7,6 +7,7 @@
 #include <slidewave/granular/skeleton_fluid_exchange.h>
 #include <slidewave/grid/background_grid.h>
 #include <slidewave/grid/finite_element_field.h>
+#include <slidewave/grid/nodal_cell_operator.h>
 #include <slidewave/grid/nodal_workspace.h>
 #include <slidewave/grid/velocity_constraints.h>
 #include <vector>
@@ -70,10 +71,6 @@ namespace slidewave
                 double                           dt,
                 std::array<Vector, 2>           &increment);
 
-      /** y = A x for component @p d (the operator of the conjugate gradients). */
-      void
-      vmult(unsigned int d, Vector &y, const Vector &x) const;
-
     private:
       /** The cell matrices and right-hand sides of the cells with grains. */
       void
@@ -87,22 +84,14 @@ namespace slidewave
       const fluid::FreeSurfaceParameters &parameters;
       const double                        grain_density;
       /** The exchange's fields' positions per cell (cleared when the grid changes). */
-      CouplingGathers             gathers;
-      const grid::NodalWorkspace *workspace = nullptr;
-
-      /** A cell with grains: its nodes' local indices and its matrix (row-major). */
-      struct CellMatrix
-      {
-        std::array<unsigned int, 4> nodes;
-        std::array<double, 16>      matrix;
-      };
-      std::vector<CellMatrix> cells;
+      CouplingGathers gathers;
+      /** The weighted mass matrix of the cells with grains. */
+      grid::NodalCellOperator projection;
       /** Per component: 1 on the owned nodes solved for, 0 on held, hanging and empty ones. */
       std::array<Vector, 2> free;
-      /** 1 / the row sums (free nodes), 1 elsewhere. */
-      Vector                inverse_diagonal;
+      /** 1 / the row sums (free nodes), 1 elsewhere; the row sums. */
+      Vector                inverse_diagonal, sums;
       std::array<Vector, 2> rhs;
-      mutable Vector        work, product;
     };
   } // namespace granular
 } // namespace slidewave

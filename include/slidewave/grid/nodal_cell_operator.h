@@ -1,0 +1,79 @@
+#ifndef slidewave_grid_nodal_cell_operator_h
+#define slidewave_grid_nodal_cell_operator_h
+
+#include <array>
+#include <slidewave/grid/nodal_workspace.h>
+#include <string>
+#include <vector>
+
+namespace slidewave
+{
+  namespace grid
+  {
+    /**
+     * A symmetric operator on the nodes of the nodal workspace, assembled from 4 x 4 cell
+     * matrices (the same for each component), plus optionally a nodal diagonal, with per
+     * component the nodes it solves for (free = 1) and the identity on the others (the
+     * held components, the hanging nodes, which take their parents' values, and the empty
+     * nodes): the weighted mass matrices of the granular couplings
+     * (granular::DragProjection, fluid::NodalGrainsCoupling), applied without a global
+     * matrix and solved per component by conjugate gradients with the inverse row sums.
+     */
+    class NodalCellOperator
+    {
+    public:
+      using Vector = NodalWorkspace::Vector;
+
+      /** A cell: its nodes' local indices and its matrix (row-major). */
+      struct CellMatrix
+      {
+        std::array<unsigned int, 4> nodes;
+        std::array<double, 16>      matrix;
+      };
+
+      /** Binds the operator to @p nodes (its work vectors to their layout) and to the
+       *  masks @p free of the two components (that layout; kept by the caller). */
+      void
+      reinit(const NodalWorkspace &nodes, const std::array<const Vector *, 2> &free);
+
+      /** The cells' matrices (filled by the owner after reinit()). */
+      std::vector<CellMatrix> cells;
+
+      /** With @p diagonal (the layout's owned values, kept by the caller) times
+       *  @p scale added on the free nodes; null: none. */
+      void
+      set_diagonal(const Vector *diagonal, double scale);
+
+      /** The row sums of the cells' matrices at the owned nodes (hanging nodes' to their
+       *  parents) into @p sums (the layout; collective). */
+      void
+      row_sums(Vector &sums) const;
+
+      /** y = A x for component @p d (collective). */
+      void
+      vmult(unsigned int d, Vector &y, const Vector &x) const;
+
+      /** x = A^-1 b for component @p d (b zero on the non-free nodes) by conjugate
+       *  gradients to @p relative_tolerance of |b| within @p max_iterations, preconditioned
+       *  by @p inverse_diagonal; x's ghosts and hanging nodes then set. Throws RunFailure
+       *  naming @p what when they do not converge. Returns the iterations (collective). */
+      unsigned int
+      solve(unsigned int       d,
+            Vector            &x,
+            const Vector      &b,
+            const Vector      &inverse_diagonal,
+            double             relative_tolerance,
+            unsigned int       max_iterations,
+            const std::string &what) const;
+
+    private:
+      const NodalWorkspace         *workspace = nullptr;
+      std::array<const Vector *, 2> free{};
+      const Vector                 *diagonal       = nullptr;
+      double                        diagonal_scale = 0.;
+      mutable Vector                work, product;
+    };
+  } // namespace grid
+} // namespace slidewave
+
+#endif

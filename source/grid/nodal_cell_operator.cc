@@ -1,0 +1,156 @@
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <slidewave/core/input_error.h>
+#include <slidewave/grid/nodal_cell_operator.h>
+
+namespace slidewave
+{
+  namespace grid
+  {
+    namespace
+    {
+      /** One component's operator, as the conjugate gradients call it. */
+      struct ComponentOperator
+      {
+        const NodalCellOperator &op;
+        unsigned int             d;
+        void
+        vmult(NodalCellOperator::Vector &y, const NodalCellOperator::Vector &x) const
+        {
+          op.vmult(d, y, x);
+        }
+      };
+
+      /** Jacobi: the inverse row sums. */
+      struct InverseDiagonal
+      {
+        const NodalCellOperator::Vector &inverse;
+        void
+        vmult(NodalCellOperator::Vector &y, const NodalCellOperator::Vector &x) const
+        {
+          for (unsigned int i = 0; i < y.locally_owned_size(); ++i)
+            y.local_element(i) = inverse.local_element(i) * x.local_element(i);
+        }
+      };
+    } // namespace
+
+
+
+    void
+    NodalCellOperator::reinit(const NodalWorkspace                &nodes,
+                              const std::array<const Vector *, 2> &free_nodes)
+    {
+      workspace = &nodes;
+      free      = free_nodes;
+      if (work.get_partitioner() != nodes.nodal_mass.get_partitioner())
+        {
+          work.reinit(nodes.nodal_mass);
+          product.reinit(nodes.nodal_mass);
+        }
+    }
+
+
+
+    void
+    NodalCellOperator::set_diagonal(const Vector *nodal_diagonal, const double scale)
+    {
+      diagonal       = nodal_diagonal;
+      diagonal_scale = scale;
+    }
+
+
+
+    void
+    NodalCellOperator::row_sums(Vector &sums) const
+    {
+      sums = 0.;
+      for (const CellMatrix &cell : cells)
+        for (unsigned int i = 0; i < 4; ++i)
+          for (unsigned int j = 0; j < 4; ++j)
+            sums.local_element(cell.nodes[i]) += cell.matrix[4 * i + j];
+      workspace->condense_hanging_nodes(sums);
+      sums.compress(dealii::VectorOperation::add);
+    }
+
+
+
+    void
+    NodalCellOperator::vmult(const unsigned int d, Vector &y, const Vector &x) const
+    {
+      const NodalWorkspace &nodes   = *workspace;
+      const Vector         &mask    = *free[d];
+      const unsigned int    n_owned = x.locally_owned_size();
+      // x on the free nodes, the hanging ones from their parents.
+      for (unsigned int i = 0; i < n_owned; ++i)
+        work.local_element(i) = mask.local_element(i) * x.local_element(i);
+      work.update_ghost_values();
+      nodes.interpolate_hanging_nodes(work);
+      product = 0.;
+      for (const CellMatrix &cell : cells)
+        for (unsigned int i = 0; i < 4; ++i)
+          {
+            double sum = 0.;
+            for (unsigned int j = 0; j < 4; ++j)
+              sum += cell.matrix[4 * i + j] * work.local_element(cell.nodes[j]);
+            product.local_element(cell.nodes[i]) += sum;
+          }
+      nodes.condense_hanging_nodes(product);
+      product.compress(dealii::VectorOperation::add);
+      work.zero_out_ghost_values();
+      // The identity on the other nodes: symmetric, positive definite.
+      if (diagonal == nullptr)
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            const double f     = mask.local_element(i);
+            y.local_element(i) = f * product.local_element(i) + (1. - f) * x.local_element(i);
+          }
+      else
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            const double f = mask.local_element(i);
+            y.local_element(i)
+              = f
+                  * (diagonal_scale * diagonal->local_element(i) * x.local_element(i)
+                     + product.local_element(i))
+                + (1. - f) * x.local_element(i);
+          }
+    }
+
+
+
+    unsigned int
+    NodalCellOperator::solve(const unsigned int d,
+                             Vector            &x,
+                             const Vector      &b,
+                             const Vector      &inverse_diagonal,
+                             const double       relative_tolerance,
+                             const unsigned int max_iterations,
+                             const std::string &what) const
+    {
+      x.zero_out_ghost_values();
+      x                       = 0.;
+      unsigned int iterations = 0;
+      const double norm       = b.l2_norm();
+      if (norm > 0.)
+        {
+          dealii::SolverControl    control(max_iterations, relative_tolerance * norm);
+          dealii::SolverCG<Vector> cg(control);
+          try
+            {
+              cg.solve(ComponentOperator{*this, d}, x, b, InverseDiagonal{inverse_diagonal});
+            }
+          catch (const dealii::SolverControl::NoConvergence &failure)
+            {
+              throw RunFailure(what + " (conjugate gradients) did not converge: residual "
+                               + to_string(failure.last_residual) + " after "
+                               + std::to_string(failure.last_step)
+                               + " iterations (reduce the time step)");
+            }
+          iterations = control.last_step();
+        }
+      x.update_ghost_values();
+      workspace->interpolate_hanging_nodes(x);
+      return iterations;
+    }
+  } // namespace grid
+} // namespace slidewave

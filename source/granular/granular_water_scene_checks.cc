@@ -60,10 +60,10 @@ namespace slidewave
                            + "/Adaptive grid/Enable = true' (a B-spline's domain is a cell of "
                              "the point's own cell's size, which would jump where the cells "
                              "change size)");
-      // The consistent coupling on an adaptive grid hung twice in four two-rank runs (one
-      // rank in the grains' conjugate gradients of one component, the other in the other
-      // component's), not understood yet: refused there until it is (doc/granular-water.md,
-      // "The consistent coupling"). One rank, or a uniform grid on any number, runs.
+      // The consistent coupling on an adaptive grid on two ranks ran about ten times slower
+      // than alone beside other tests (many collectives per step), which first looked like a
+      // deadlock: refused for now (doc/granular-water.md, "The consistent coupling"). One
+      // rank, or a uniform grid on any number, runs.
       if (fluid_parameters.adaptive && parameters.consistent_drag
           && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
         throw InputError(section + "/Drag coupling",

@@ -22,7 +22,6 @@ namespace slidewave
       dt     = step;
       cells.clear();
       grains_operator.cells.clear();
-      n_inner                 = 0;
       const NodalVector &mass = grains.nodes->nodal_mass;
       if (sums.get_partitioner() != mass.get_partitioner())
         for (NodalVector *v : {&load[0], &load[1], &dv[0], &dv[1], &sums, &inverse_diagonal})
@@ -207,7 +206,7 @@ namespace slidewave
     NodalGrainsCoupling::solve_grains() const
     {
       for (unsigned int d = 0; d < 2; ++d)
-        n_inner += grains_operator.solve(
+        grains_operator.solve(
           d, dv[d], load[d], inverse_diagonal, 1e-12, 500, "the grains' nodal drag system");
     }
 

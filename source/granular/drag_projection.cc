@@ -1,11 +1,7 @@
 #include <algorithm>
-#include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_control.h>
 #include <limits>
-#include <slidewave/core/input_error.h>
 #include <slidewave/granular/coupling_point_values.h>
 #include <slidewave/granular/drag_projection.h>
 #include <slidewave/grid/tree_order.h>

@@ -41,12 +41,13 @@ namespace slidewave
      * iterates on this Schur complement, each product solving the grains' system by
      * conjugate gradients per component (the cells with grains, their row sums as the
      * preconditioner); the held components, the hanging and the empty nodes (free = 0) are
-     * rows of the identity. The constrained rows of the water (walls, inflow, hanging
-     * nodes) take no coupling term, and their columns enter through the constraints
-     * (homogeneous in the products, inhomogeneous in the right-hand side).
+     * rows of the identity (dv = 0), the hanging nodes take their parents' values. The
+     * constrained rows of the water (walls, inflow, hanging nodes) take no coupling term,
+     * and their columns enter through the constraints (without their values in the
+     * products, with them in the right-hand side).
      *
      * Filled by the water's assembly (begin(), add_cell()), used by its solve (finish(),
-     * vmult()), read by the skeleton (increment()).
+     * vmult_add(), compute_increment()), read by the skeleton (increment()).
      */
     class NodalGrainsCoupling
     {
@@ -77,11 +78,11 @@ namespace slidewave
                const std::vector<double>                          &fluid_fraction,
                const std::vector<dealii::types::global_dof_index> &indices);
 
-      /** After the assembly: the constraints @p constraints of the flow (and their
-       *  kept until the solve is done), the flow's cell gather @p gather and a ghosted vector of
-       * its layout @p ghosted_layout; the old pressure from @p flow_old (ghosted, the flow's state
-       * 0 before the solve). Subtracts B dv(g) (g: the constraints' values) from
-       *  @p rhs (collective). */
+      /** After the assembly: the flow's constraints @p constraints (kept by the caller
+       *  until the solve is done), its cell gather @p gather and the old pressure from
+       *  @p flow_old (ghosted, the flow's state 0 before the solve, of the gather's
+       *  layout). Subtracts B dv(g) (g: the constraints' values) from @p rhs
+       *  (collective). */
       void
       finish(const dealii::AffineConstraints<double> &constraints,
              const linear_algebra::CellGather        &gather,
@@ -106,12 +107,6 @@ namespace slidewave
         return dv;
       }
 
-      /** The conjugate gradients' iterations since the last begin(). */
-      unsigned int
-      inner_iterations() const
-      {
-        return n_inner;
-      }
 
     private:
       /** r = L x (+ r_0 with @p with_known) at the owned nodes, from the ghosted flow
@@ -155,7 +150,6 @@ namespace slidewave
       /** M / dt + D, the grains' operator (its cells' matrices D). */
       grid::NodalCellOperator grains_operator;
       NodalVector             sums, inverse_diagonal;
-      mutable unsigned int    n_inner = 0;
     };
   } // namespace fluid
 } // namespace slidewave

@@ -20,6 +20,18 @@ namespace slidewave
 {
   namespace fluid
   {
+    /** The grains' nodes of a skeleton whose nodal momentum the water's solve takes with it
+     *  (NodalGrainsCoupling): their layout, hanging nodes and masses m_I (nodal_mass), and
+     *  per component 1 on the owned nodes solved for, 0 on the held, hanging and empty
+     *  ones. */
+    struct NodalGrains
+    {
+      const grid::NodalWorkspace                         *nodes = nullptr;
+      std::array<const grid::NodalWorkspace::Vector *, 2> free{};
+    };
+
+
+
     /**
      * A porous solid in the flow: what the granular skeleton of issue 27 (or a fixed porous
      * structure) gives the fluid. Every field is optional (nullptr: none, and nothing of it
@@ -71,18 +83,6 @@ namespace slidewave
      * it is weak; the explicit coupling (v_s of the old step) is stable only for dt below about
      * rho^s (1 - n) k / mu (doc/granular-water.md).
      */
-    /** The grains' nodes of a skeleton whose nodal momentum the water's solve takes with it
-     *  (NodalGrainsCoupling): their layout, hanging nodes and masses m_I (nodal_mass), and
-     *  per component 1 on the owned nodes solved for, 0 on the held, hanging and empty
-     *  ones. */
-    struct NodalGrains
-    {
-      const grid::NodalWorkspace                         *nodes = nullptr;
-      std::array<const grid::NodalWorkspace::Vector *, 2> free{};
-    };
-
-
-
     struct PorousMedium
     {
       const grid::FiniteElementField *fluid_fraction       = nullptr;

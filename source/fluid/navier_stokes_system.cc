@@ -214,7 +214,7 @@ namespace slidewave
             // The Schur complement of the grains' nodal coupling, A_w + B (M / dt + D)^-1 L
             // (NodalGrainsCoupling), without a matrix; preconditioned by the pointwise
             // elimination's matrix, which approximates it. Right preconditioning: GMRES
-            // stops at the true residual.
+            // monitors the unpreconditioned residual (up to the inner solves' 1e-12).
             const SchurComplement           schur{coupled_matrix, *grains_coupling};
             dealii::SolverGMRES<VectorType> gmres(
               control, dealii::SolverGMRES<VectorType>::AdditionalData(52, true));

@@ -97,6 +97,9 @@ namespace slidewave
       std::vector<dealii::Tensor<1, 2>> nodal_v_s(n_q);
       if (nodal != nullptr)
         {
+          // (the grains' nodes are the Q1 vertices; the scene refuses Q2 with them)
+          AssertThrow(n_dofs == 12,
+                      dealii::ExcMessage("the consistent coupling needs the Q1 water element"));
           if (!coupled_matrix_ready)
             {
               coupled_matrix.reinit(matrix); // the same sparsity: the scatter's positions

@@ -10,6 +10,7 @@ namespace slidewave
   {
     NodalGrainsCoupling::NodalGrainsCoupling(const grid::BackgroundGrid &grid)
       : grid(grid)
+      , grid_indices(4)
     {
     }
 
@@ -24,8 +25,10 @@ namespace slidewave
       grains_operator.cells.clear();
       const NodalVector &mass = grains.nodes->nodal_mass;
       if (sums.get_partitioner() != mass.get_partitioner())
-        for (NodalVector *v : {&load[0], &load[1], &dv[0], &dv[1], &sums, &inverse_diagonal})
+        for (NodalVector *v : {&sums, &inverse_diagonal})
           v->reinit(mass);
+      grid::NodalCellOperator::reinit_pair(load, mass);
+      grid::NodalCellOperator::reinit_pair(dv, mass);
     }
 
 
@@ -45,7 +48,6 @@ namespace slidewave
       CellData                            data;
       grid::NodalCellOperator::CellMatrix block;
       data.cell_number = cell_number;
-      std::vector<dealii::types::global_dof_index> grid_indices(4);
       grid_cell->get_dof_indices(grid_indices);
       for (unsigned int I = 0; I < 4; ++I)
         block.nodes[I] = grains.nodes->local_index(grid_indices[I]);
@@ -170,7 +172,7 @@ namespace slidewave
     {
       const grid::NodalWorkspace &nodes = *grains.nodes;
       for (unsigned int d = 0; d < 2; ++d)
-        load[d] = 0.;
+        load.block(d) = 0.;
       std::array<double, 12> dofs;
       for (unsigned int k = 0; k < cells.size(); ++k)
         {
@@ -188,16 +190,15 @@ namespace slidewave
                 for (unsigned int J = 0; J < 4; ++J)
                   r += block.matrix[4 * I + J] * dofs[position[3 * J + d]]
                        - cell.pressure[16 * d + 4 * I + J] * p[J];
-                load[d].local_element(block.nodes[I]) += r;
+                load.block(d).local_element(block.nodes[I]) += r;
               }
         }
       for (unsigned int d = 0; d < 2; ++d)
-        {
-          nodes.condense_hanging_nodes(load[d]);
-          load[d].compress(dealii::VectorOperation::add);
-          for (unsigned int i = 0; i < load[d].locally_owned_size(); ++i)
-            load[d].local_element(i) *= grains.free[d]->local_element(i);
-        }
+        nodes.condense_hanging_nodes(load.block(d));
+      load.compress(dealii::VectorOperation::add);
+      for (unsigned int d = 0; d < 2; ++d)
+        for (unsigned int i = 0; i < load.block(d).locally_owned_size(); ++i)
+          load.block(d).local_element(i) *= grains.free[d]->local_element(i);
     }
 
 
@@ -205,9 +206,8 @@ namespace slidewave
     void
     NodalGrainsCoupling::solve_grains() const
     {
-      for (unsigned int d = 0; d < 2; ++d)
-        grains_operator.solve(
-          d, dv[d], load[d], inverse_diagonal, 1e-12, 500, "the grains' nodal drag system");
+      grains_operator.solve(
+        dv, load, inverse_diagonal, 1e-12, 500, "the grains' nodal drag system");
     }
 
 
@@ -230,7 +230,7 @@ namespace slidewave
                 // - D dv in the momentum; div(N_J (1 - n_J) dv_J) in the continuity
                 for (unsigned int d = 0; d < 2; ++d)
                   {
-                    const double v = dv[d].local_element(node);
+                    const double v = dv.block(d).local_element(node);
                     local[position[3 * I + d]] -= block.matrix[4 * I + J] * v;
                     local[position[3 * I + 2]] += cell.flux[16 * d + 4 * I + J] * v;
                   }

@@ -60,20 +60,6 @@ namespace slidewave
                            + "/Adaptive grid/Enable = true' (a B-spline's domain is a cell of "
                              "the point's own cell's size, which would jump where the cells "
                              "change size)");
-      // The consistent coupling on an adaptive grid on two ranks ran about ten times slower
-      // than alone beside other tests (many collectives per step), which first looked like a
-      // deadlock: refused for now (doc/granular-water.md, "The consistent coupling"). One
-      // rank, or a uniform grid on any number, runs.
-      if (fluid_parameters.adaptive && parameters.consistent_drag
-          && dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-        throw InputError(section + "/Drag coupling",
-                         "semi-implicit consistent",
-                         "semi-implicit projected (the default), semi-implicit or explicit "
-                         "with '"
-                           + fluid_section
-                           + "/Adaptive grid/Enable = true' on more than one MPI rank (the "
-                             "consistent coupling runs there on one rank, or on a uniform "
-                             "grid; doc/granular-water.md, \"The consistent coupling\")");
       for (const auto &solid : fluid_parameters.solids)
         if (fluid_parameters.adaptive)
           throw InputError(solid.path + "/Type",

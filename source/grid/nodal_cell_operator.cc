@@ -32,6 +32,29 @@ namespace slidewave
             y.local_element(i) = inverse.local_element(i) * x.local_element(i);
         }
       };
+      /** Both components' operator. */
+      struct PairOperator
+      {
+        const NodalCellOperator &op;
+        void
+        vmult(NodalCellOperator::PairVector &y, const NodalCellOperator::PairVector &x) const
+        {
+          op.vmult(y, x);
+        }
+      };
+
+      /** Jacobi on both components: the same inverse row sums. */
+      struct PairInverseDiagonal
+      {
+        const NodalCellOperator::Vector &inverse;
+        void
+        vmult(NodalCellOperator::PairVector &y, const NodalCellOperator::PairVector &x) const
+        {
+          for (unsigned int d = 0; d < 2; ++d)
+            for (unsigned int i = 0; i < y.block(d).locally_owned_size(); ++i)
+              y.block(d).local_element(i) = inverse.local_element(i) * x.block(d).local_element(i);
+        }
+      };
     } // namespace
 
 
@@ -150,6 +173,106 @@ namespace slidewave
         }
       x.update_ghost_values();
       workspace->interpolate_hanging_nodes(x);
+      return iterations;
+    }
+
+
+
+    void
+    NodalCellOperator::reinit_pair(PairVector &v, const Vector &layout)
+    {
+      if (v.n_blocks() == 2 && v.block(0).get_partitioner() == layout.get_partitioner())
+        return;
+      v.reinit(2);
+      for (unsigned int d = 0; d < 2; ++d)
+        v.block(d).reinit(layout);
+      v.collect_sizes();
+    }
+
+
+
+    void
+    NodalCellOperator::vmult(PairVector &y, const PairVector &x) const
+    {
+      const NodalWorkspace &nodes = *workspace;
+      reinit_pair(pair_work, work);
+      reinit_pair(pair_product, work);
+      const unsigned int n_owned = work.locally_owned_size();
+      // As vmult(d, ...), the two components' exchanges overlapped and one pass over the
+      // cells' matrices for both.
+      for (unsigned int d = 0; d < 2; ++d)
+        for (unsigned int i = 0; i < n_owned; ++i)
+          pair_work.block(d).local_element(i)
+            = free[d]->local_element(i) * x.block(d).local_element(i);
+      pair_work.update_ghost_values();
+      for (unsigned int d = 0; d < 2; ++d)
+        nodes.interpolate_hanging_nodes(pair_work.block(d));
+      pair_product        = 0.;
+      const Vector &work0 = pair_work.block(0), &work1 = pair_work.block(1);
+      Vector       &product0 = pair_product.block(0), &product1 = pair_product.block(1);
+      for (const CellMatrix &cell : cells)
+        for (unsigned int i = 0; i < 4; ++i)
+          {
+            double sum0 = 0., sum1 = 0.;
+            for (unsigned int j = 0; j < 4; ++j)
+              {
+                sum0 += cell.matrix[4 * i + j] * work0.local_element(cell.nodes[j]);
+                sum1 += cell.matrix[4 * i + j] * work1.local_element(cell.nodes[j]);
+              }
+            product0.local_element(cell.nodes[i]) += sum0;
+            product1.local_element(cell.nodes[i]) += sum1;
+          }
+      for (unsigned int d = 0; d < 2; ++d)
+        nodes.condense_hanging_nodes(pair_product.block(d));
+      pair_product.compress(dealii::VectorOperation::add);
+      pair_work.zero_out_ghost_values();
+      for (unsigned int d = 0; d < 2; ++d)
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            const double f = free[d]->local_element(i);
+            const double diagonal
+              = this->diagonal == nullptr ? 0. : diagonal_scale * this->diagonal->local_element(i);
+            y.block(d).local_element(i) = f
+                                            * (diagonal * x.block(d).local_element(i)
+                                               + pair_product.block(d).local_element(i))
+                                          + (1. - f) * x.block(d).local_element(i);
+          }
+    }
+
+
+
+    unsigned int
+    NodalCellOperator::solve(PairVector        &x,
+                             const PairVector  &b,
+                             const Vector      &inverse_diagonal,
+                             const double       relative_tolerance,
+                             const unsigned int max_iterations,
+                             const std::string &what) const
+    {
+      x.zero_out_ghost_values();
+      x                       = 0.;
+      unsigned int iterations = 0;
+      const double norm       = b.l2_norm();
+      if (norm > 0.)
+        {
+          dealii::SolverControl        control(max_iterations, relative_tolerance * norm);
+          dealii::SolverCG<PairVector> cg(control);
+          try
+            {
+              cg.solve(PairOperator{*this}, x, b, PairInverseDiagonal{inverse_diagonal});
+            }
+          catch (const dealii::SolverControl::NoConvergence &failure)
+            {
+              throw RunFailure(what + " (conjugate gradients) did not converge: residual "
+                               + to_string(failure.last_residual) + " after "
+                               + std::to_string(failure.last_step)
+                               + " iterations (reduce the time step)");
+            }
+          iterations = control.last_step();
+        }
+      x.update_ghost_values();
+      for (unsigned int d = 0; d < 2; ++d)
+        workspace->interpolate_hanging_nodes(x.block(d));
       return iterations;
     }
   } // namespace grid

@@ -99,9 +99,9 @@ namespace slidewave
       void
       compute_increment(const VectorType &solution);
 
-      /** The last compute_increment()'s dv (the nodal workspace's layout, ghosts and
-       *  hanging nodes set). */
-      const std::array<NodalVector, 2> &
+      /** The last compute_increment()'s dv (component d in block d, of the nodal
+       *  workspace's layout, ghosts and hanging nodes set). */
+      const grid::NodalCellOperator::PairVector &
       increment() const
       {
         return dv;
@@ -114,7 +114,7 @@ namespace slidewave
       void
       grains_load(const VectorType &x, bool with_known) const;
 
-      /** dv = (M / dt + D)^-1 r, per component. */
+      /** dv = (M / dt + D)^-1 r, both components in one solve. */
       void
       solve_grains() const;
 
@@ -138,15 +138,18 @@ namespace slidewave
       };
       std::vector<CellData> cells;
       /** The flow's local degree of freedom of component c at vertex I: position[3 I + c]. */
-      std::array<unsigned int, 12>             position{};
-      const linear_algebra::CellGather        *gather           = nullptr;
-      const dealii::AffineConstraints<double> *flow_constraints = nullptr;
+      std::array<unsigned int, 12> position{};
+      /** A cell's grid degrees of freedom (add_cell()'s work space). */
+      std::vector<dealii::types::global_dof_index> grid_indices;
+      const linear_algebra::CellGather            *gather           = nullptr;
+      const dealii::AffineConstraints<double>     *flow_constraints = nullptr;
       /** The old pressure at each cell's vertices (per cell with grains, 4 each). */
       std::vector<double> old_pressure;
       /** The constraints' values g (distribute() of zero). */
-      VectorType                         values;
-      mutable VectorType                 x_owned, x_ghosted, out;
-      mutable std::array<NodalVector, 2> load, dv;
+      VectorType         values;
+      mutable VectorType x_owned, x_ghosted, out;
+      /** The grains' load and increment, a component per block (dv ghosted). */
+      mutable grid::NodalCellOperator::PairVector load, dv;
       /** M / dt + D, the grains' operator (its cells' matrices D). */
       grid::NodalCellOperator grains_operator;
       NodalVector             sums, inverse_diagonal;

@@ -2,6 +2,7 @@
 #define slidewave_grid_nodal_cell_operator_h
 
 #include <array>
+#include <deal.II/lac/la_parallel_block_vector.h>
 #include <slidewave/grid/nodal_workspace.h>
 #include <string>
 #include <vector>
@@ -23,6 +24,8 @@ namespace slidewave
     {
     public:
       using Vector = NodalWorkspace::Vector;
+      /** The two components as blocks 0 and 1 of one vector (each of the layout). */
+      using PairVector = dealii::LinearAlgebra::distributed::BlockVector<double>;
 
       /** A cell: its nodes' local indices and its matrix (row-major). */
       struct CellMatrix
@@ -66,12 +69,37 @@ namespace slidewave
             unsigned int       max_iterations,
             const std::string &what) const;
 
+      /** @p v a pair of vectors of @p layout's layout, unless it is one already. */
+      static void
+      reinit_pair(PairVector &v, const Vector &layout);
+
+      /** y = A x for both components (blocks 0 and 1), their ghost exchanges overlapped
+       *  (collective). */
+      void
+      vmult(PairVector &y, const PairVector &x) const;
+
+      /** x = A^-1 b for both components at once: one conjugate-gradient run on the pair,
+       *  whose global sums and ghost exchanges serve the two components (half those of
+       *  two solve() runs, which matters where ranks share cores), to
+       *  @p relative_tolerance of the pair's norm |b|, each component preconditioned by
+       *  @p inverse_diagonal; x's ghosts and hanging nodes then set. Throws RunFailure
+       *  naming @p what when it does not converge. Returns the iterations (collective). */
+      unsigned int
+      solve(PairVector        &x,
+            const PairVector  &b,
+            const Vector      &inverse_diagonal,
+            double             relative_tolerance,
+            unsigned int       max_iterations,
+            const std::string &what) const;
+
     private:
       const NodalWorkspace         *workspace = nullptr;
       std::array<const Vector *, 2> free{};
       const Vector                 *diagonal       = nullptr;
       double                        diagonal_scale = 0.;
       mutable Vector                work, product;
+      /** The pair's work vectors (made by the first paired product of a layout). */
+      mutable PairVector pair_work, pair_product;
     };
   } // namespace grid
 } // namespace slidewave

@@ -103,11 +103,9 @@ namespace slidewave
           if (!coupled_matrix_ready)
             {
               coupled_matrix.reinit(matrix); // the same sparsity: the scatter's positions
-              unused_rhs.reinit(rhs);
               coupled_matrix_ready = true;
             }
           coupled_matrix = 0.;
-          unused_rhs     = 0.;
           nodal->begin(*porous.nodal_grains, dt);
         }
       matrix                   = 0.;
@@ -309,8 +307,7 @@ namespace slidewave
         cell->get_dof_indices(indices);
         if (nodal != nullptr)
           {
-            scatter.add(
-              cell_number, local_matrix, local_rhs, indices, flow_constraints, matrix, unused_rhs);
+            scatter.add_matrix(cell_number, local_matrix, indices, flow_constraints, matrix);
             local_matrix.add(-1., nodal_delta);
             local_rhs.add(-1., nodal_delta_rhs);
             scatter.add(
@@ -337,7 +334,6 @@ namespace slidewave
       if (nodal != nullptr)
         {
           coupled_matrix.compress(dealii::VectorOperation::add);
-          unused_rhs.compress(dealii::VectorOperation::add);
           nodal->finish(flow_constraints, flow_gather, flow.values(0), rhs);
         }
     }

@@ -95,6 +95,34 @@ namespace slidewave
 
 
 
+    void
+    CellScatter::add_matrix(const unsigned int                                  cell,
+                            const dealii::FullMatrix<double>                   &local_matrix,
+                            const std::vector<dealii::types::global_dof_index> &indices,
+                            const dealii::AffineConstraints<double>            &constraints,
+                            dealii::TrilinosWrappers::SparseMatrix             &matrix) const
+    {
+      const int first = first_row[cell];
+      if (first < 0)
+        {
+          constraints.distribute_local_to_global(local_matrix, indices, matrix);
+          return;
+        }
+      const Epetra_CrsMatrix &A        = matrix.trilinos_matrix();
+      const std::uint16_t    *position = &columns[static_cast<std::size_t>(first) * n_dofs];
+      for (unsigned int i = 0; i < n_dofs; ++i, position += n_dofs)
+        {
+          int     n_entries = 0;
+          double *values    = nullptr;
+          int    *row       = nullptr;
+          A.ExtractMyRowView(rows[first + i], n_entries, values, row);
+          for (unsigned int j = 0; j < n_dofs; ++j)
+            values[position[j]] += local_matrix(i, j);
+        }
+    }
+
+
+
     double
     CellScatter::direct_fraction() const
     {

@@ -214,12 +214,11 @@ namespace slidewave
       linear_algebra::CellScatter scatter;
       linear_algebra::CellGather  flow_gather, phase_gather;
       PorousMediumGathers         porous_gathers;
-      /** With the grains' nodal coupling: the coupling, the water's matrix with the Galerkin
-       *  drag against u (A_w; `matrix` then holds the pointwise elimination, the
-       *  preconditioner's) and the right-hand side of `matrix`, unused. */
+      /** With the grains' nodal coupling: the coupling and the water's matrix with the
+       *  Galerkin drag against u (A_w; `matrix` then holds the pointwise elimination, the
+       *  preconditioner's, assembled without its right-hand side). */
       std::unique_ptr<NodalGrainsCoupling>   grains_coupling;
       dealii::TrilinosWrappers::SparseMatrix coupled_matrix;
-      VectorType                             unused_rhs;
       bool                                   coupled_matrix_ready = false;
       /** The positions of u_x and u_y of the vertices this rank owns in the owned flow
        *  vector (max_speed(); cleared on grid changes, rebuilt by the next call). */

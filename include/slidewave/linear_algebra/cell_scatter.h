@@ -66,6 +66,16 @@ namespace slidewave
           dealii::TrilinosWrappers::SparseMatrix             &matrix,
           VectorType                                         &rhs) const;
 
+      /** Adds owned cell number @p cell's @p local_matrix alone (as add() does; the
+       *  constrained cells through the constraints' matrix-only distribution, whose
+       *  entries are add()'s). */
+      void
+      add_matrix(unsigned int                                        cell,
+                 const dealii::FullMatrix<double>                   &local_matrix,
+                 const std::vector<dealii::types::global_dof_index> &indices,
+                 const dealii::AffineConstraints<double>            &constraints,
+                 dealii::TrilinosWrappers::SparseMatrix             &matrix) const;
+
       /** The share of the owned cells that add directly. */
       double
       direct_fraction() const;

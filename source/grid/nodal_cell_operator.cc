@@ -55,6 +55,39 @@ namespace slidewave
               y.block(d).local_element(i) = inverse.local_element(i) * x.block(d).local_element(i);
         }
       };
+      /** x = A^-1 b by preconditioned conjugate gradients to @p relative_tolerance of
+       *  |b| (x zero where b is), its ghosts left to the caller; throws RunFailure naming
+       *  @p what. Returns the iterations. */
+      template <class VectorType, class OperatorType, class PreconditionerType>
+      unsigned int
+      conjugate_gradients(const OperatorType       &op,
+                          VectorType               &x,
+                          const VectorType         &b,
+                          const PreconditionerType &preconditioner,
+                          const double              relative_tolerance,
+                          const unsigned int        max_iterations,
+                          const std::string        &what)
+      {
+        x.zero_out_ghost_values();
+        x                 = 0.;
+        const double norm = b.l2_norm();
+        if (norm == 0.)
+          return 0;
+        dealii::SolverControl        control(max_iterations, relative_tolerance * norm);
+        dealii::SolverCG<VectorType> cg(control);
+        try
+          {
+            cg.solve(op, x, b, preconditioner);
+          }
+        catch (const dealii::SolverControl::NoConvergence &failure)
+          {
+            throw RunFailure(what + " (conjugate gradients) did not converge: residual "
+                             + to_string(failure.last_residual) + " after "
+                             + std::to_string(failure.last_step)
+                             + " iterations (reduce the time step)");
+          }
+        return control.last_step();
+      }
     } // namespace
 
 
@@ -150,27 +183,13 @@ namespace slidewave
                              const unsigned int max_iterations,
                              const std::string &what) const
     {
-      x.zero_out_ghost_values();
-      x                       = 0.;
-      unsigned int iterations = 0;
-      const double norm       = b.l2_norm();
-      if (norm > 0.)
-        {
-          dealii::SolverControl    control(max_iterations, relative_tolerance * norm);
-          dealii::SolverCG<Vector> cg(control);
-          try
-            {
-              cg.solve(ComponentOperator{*this, d}, x, b, InverseDiagonal{inverse_diagonal});
-            }
-          catch (const dealii::SolverControl::NoConvergence &failure)
-            {
-              throw RunFailure(what + " (conjugate gradients) did not converge: residual "
-                               + to_string(failure.last_residual) + " after "
-                               + std::to_string(failure.last_step)
-                               + " iterations (reduce the time step)");
-            }
-          iterations = control.last_step();
-        }
+      const unsigned int iterations = conjugate_gradients(ComponentOperator{*this, d},
+                                                          x,
+                                                          b,
+                                                          InverseDiagonal{inverse_diagonal},
+                                                          relative_tolerance,
+                                                          max_iterations,
+                                                          what);
       x.update_ghost_values();
       workspace->interpolate_hanging_nodes(x);
       return iterations;
@@ -249,27 +268,13 @@ namespace slidewave
                              const unsigned int max_iterations,
                              const std::string &what) const
     {
-      x.zero_out_ghost_values();
-      x                       = 0.;
-      unsigned int iterations = 0;
-      const double norm       = b.l2_norm();
-      if (norm > 0.)
-        {
-          dealii::SolverControl        control(max_iterations, relative_tolerance * norm);
-          dealii::SolverCG<PairVector> cg(control);
-          try
-            {
-              cg.solve(PairOperator{*this}, x, b, PairInverseDiagonal{inverse_diagonal});
-            }
-          catch (const dealii::SolverControl::NoConvergence &failure)
-            {
-              throw RunFailure(what + " (conjugate gradients) did not converge: residual "
-                               + to_string(failure.last_residual) + " after "
-                               + std::to_string(failure.last_step)
-                               + " iterations (reduce the time step)");
-            }
-          iterations = control.last_step();
-        }
+      const unsigned int iterations = conjugate_gradients(PairOperator{*this},
+                                                          x,
+                                                          b,
+                                                          PairInverseDiagonal{inverse_diagonal},
+                                                          relative_tolerance,
+                                                          max_iterations,
+                                                          what);
       x.update_ghost_values();
       for (unsigned int d = 0; d < 2; ++d)
         workspace->interpolate_hanging_nodes(x.block(d));

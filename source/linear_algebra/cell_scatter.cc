@@ -78,19 +78,10 @@ namespace slidewave
           constraints.distribute_local_to_global(local_matrix, local_rhs, indices, matrix, rhs);
           return;
         }
-      const Epetra_CrsMatrix &A         = matrix.trilinos_matrix();
-      double                 *rhs_local = rhs.trilinos_vector()[0];
-      const std::uint16_t    *position  = &columns[static_cast<std::size_t>(first) * n_dofs];
-      for (unsigned int i = 0; i < n_dofs; ++i, position += n_dofs)
-        {
-          int     n_entries = 0;
-          double *values    = nullptr;
-          int    *row       = nullptr;
-          A.ExtractMyRowView(rows[first + i], n_entries, values, row);
-          for (unsigned int j = 0; j < n_dofs; ++j)
-            values[position[j]] += local_matrix(i, j);
-          rhs_local[rhs_rows[first + i]] += local_rhs(i);
-        }
+      add_rows(first, local_matrix, matrix);
+      double *rhs_local = rhs.trilinos_vector()[0];
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        rhs_local[rhs_rows[first + i]] += local_rhs(i);
     }
 
 
@@ -104,10 +95,18 @@ namespace slidewave
     {
       const int first = first_row[cell];
       if (first < 0)
-        {
-          constraints.distribute_local_to_global(local_matrix, indices, matrix);
-          return;
-        }
+        constraints.distribute_local_to_global(local_matrix, indices, matrix);
+      else
+        add_rows(first, local_matrix, matrix);
+    }
+
+
+
+    void
+    CellScatter::add_rows(const int                               first,
+                          const dealii::FullMatrix<double>       &local_matrix,
+                          dealii::TrilinosWrappers::SparseMatrix &matrix) const
+    {
       const Epetra_CrsMatrix &A        = matrix.trilinos_matrix();
       const std::uint16_t    *position = &columns[static_cast<std::size_t>(first) * n_dofs];
       for (unsigned int i = 0; i < n_dofs; ++i, position += n_dofs)

@@ -81,6 +81,13 @@ namespace slidewave
       direct_fraction() const;
 
     private:
+      /** Adds @p local_matrix to the rows of the direct cell whose first entry is
+       *  @p first. */
+      void
+      add_rows(int                                     first,
+               const dealii::FullMatrix<double>       &local_matrix,
+               dealii::TrilinosWrappers::SparseMatrix &matrix) const;
+
       unsigned int n_dofs = 0;
       /** Per cell: its first entry in rows and rhs_rows, or -1 (through the constraints). */
       std::vector<int> first_row;

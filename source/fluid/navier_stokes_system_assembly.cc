@@ -98,8 +98,9 @@ namespace slidewave
       if (nodal != nullptr)
         {
           // (the grains' nodes are the Q1 vertices; the scene refuses Q2 with them)
-          AssertThrow(n_dofs == 12,
-                      dealii::ExcMessage("the consistent coupling needs the Q1 water element"));
+          if (n_dofs != 12)
+            throw std::logic_error(
+              "NavierStokesSystem::assemble: the grains' nodal coupling needs the Q1 element");
           if (!coupled_matrix_ready)
             {
               coupled_matrix.reinit(matrix); // the same sparsity: the scatter's positions

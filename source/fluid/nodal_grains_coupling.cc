@@ -1,7 +1,4 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_control.h>
-#include <slidewave/core/input_error.h>
 #include <slidewave/fluid/nodal_grains_coupling.h>
 
 namespace slidewave

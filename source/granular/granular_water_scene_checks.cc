@@ -1,5 +1,4 @@
 #include <cmath>
-#include <deal.II/base/mpi.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/run_bounds.h>
 #include <slidewave/granular/granular_water_scene.h>

@@ -21,17 +21,6 @@ namespace slidewave
         }
       };
 
-      /** Jacobi: the inverse row sums. */
-      struct InverseDiagonal
-      {
-        const NodalCellOperator::Vector &inverse;
-        void
-        vmult(NodalCellOperator::Vector &y, const NodalCellOperator::Vector &x) const
-        {
-          for (unsigned int i = 0; i < y.locally_owned_size(); ++i)
-            y.local_element(i) = inverse.local_element(i) * x.local_element(i);
-        }
-      };
       /** Both components' operator. */
       struct PairOperator
       {
@@ -43,18 +32,24 @@ namespace slidewave
         }
       };
 
-      /** Jacobi on both components: the same inverse row sums. */
-      struct PairInverseDiagonal
+      /** Jacobi: the inverse row sums, the same for both components. */
+      struct InverseDiagonal
       {
         const NodalCellOperator::Vector &inverse;
+        void
+        vmult(NodalCellOperator::Vector &y, const NodalCellOperator::Vector &x) const
+        {
+          for (unsigned int i = 0; i < y.locally_owned_size(); ++i)
+            y.local_element(i) = inverse.local_element(i) * x.local_element(i);
+        }
         void
         vmult(NodalCellOperator::PairVector &y, const NodalCellOperator::PairVector &x) const
         {
           for (unsigned int d = 0; d < 2; ++d)
-            for (unsigned int i = 0; i < y.block(d).locally_owned_size(); ++i)
-              y.block(d).local_element(i) = inverse.local_element(i) * x.block(d).local_element(i);
+            vmult(y.block(d), x.block(d));
         }
       };
+
       /** x = A^-1 b by preconditioned conjugate gradients to @p relative_tolerance of
        *  |b| (x zero where b is), its ghosts left to the caller; throws RunFailure naming
        *  @p what. Returns the iterations. */
@@ -98,10 +93,10 @@ namespace slidewave
     {
       workspace = &nodes;
       free      = free_nodes;
-      if (work.get_partitioner() != nodes.nodal_mass.get_partitioner())
+      if (work[0].get_partitioner() != nodes.nodal_mass.get_partitioner())
         {
-          work.reinit(nodes.nodal_mass);
-          product.reinit(nodes.nodal_mass);
+          work[0].reinit(nodes.nodal_mass);
+          product[0].reinit(nodes.nodal_mass);
         }
     }
 
@@ -130,46 +125,77 @@ namespace slidewave
 
 
 
+    template <unsigned int n>
     void
-    NodalCellOperator::vmult(const unsigned int d, Vector &y, const Vector &x) const
+    NodalCellOperator::apply(const std::array<unsigned int, n>   &component,
+                             const std::array<Vector *, n>       &y,
+                             const std::array<const Vector *, n> &x) const
     {
       const NodalWorkspace &nodes   = *workspace;
-      const Vector         &mask    = *free[d];
-      const unsigned int    n_owned = x.locally_owned_size();
+      const unsigned int    n_owned = x[0]->locally_owned_size();
       // x on the free nodes, the hanging ones from their parents.
-      for (unsigned int i = 0; i < n_owned; ++i)
-        work.local_element(i) = mask.local_element(i) * x.local_element(i);
-      work.update_ghost_values();
-      nodes.interpolate_hanging_nodes(work);
-      product = 0.;
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          const Vector &mask = *free[component[c]];
+          for (unsigned int i = 0; i < n_owned; ++i)
+            work[c].local_element(i) = mask.local_element(i) * x[c]->local_element(i);
+          work[c].update_ghost_values_start(c);
+        }
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          work[c].update_ghost_values_finish();
+          nodes.interpolate_hanging_nodes(work[c]);
+          product[c] = 0.;
+        }
+      // One pass over the cells' matrices for the n components.
       for (const CellMatrix &cell : cells)
         for (unsigned int i = 0; i < 4; ++i)
           {
-            double sum = 0.;
+            double sum[n] = {};
             for (unsigned int j = 0; j < 4; ++j)
-              sum += cell.matrix[4 * i + j] * work.local_element(cell.nodes[j]);
-            product.local_element(cell.nodes[i]) += sum;
+              for (unsigned int c = 0; c < n; ++c)
+                sum[c] += cell.matrix[4 * i + j] * work[c].local_element(cell.nodes[j]);
+            for (unsigned int c = 0; c < n; ++c)
+              product[c].local_element(cell.nodes[i]) += sum[c];
           }
-      nodes.condense_hanging_nodes(product);
-      product.compress(dealii::VectorOperation::add);
-      work.zero_out_ghost_values();
-      // The identity on the other nodes: symmetric, positive definite.
-      if (diagonal == nullptr)
-        for (unsigned int i = 0; i < n_owned; ++i)
-          {
-            const double f     = mask.local_element(i);
-            y.local_element(i) = f * product.local_element(i) + (1. - f) * x.local_element(i);
-          }
-      else
-        for (unsigned int i = 0; i < n_owned; ++i)
-          {
-            const double f = mask.local_element(i);
-            y.local_element(i)
-              = f
-                  * (diagonal_scale * diagonal->local_element(i) * x.local_element(i)
-                     + product.local_element(i))
-                + (1. - f) * x.local_element(i);
-          }
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          nodes.condense_hanging_nodes(product[c]);
+          product[c].compress_start(c, dealii::VectorOperation::add);
+        }
+      for (unsigned int c = 0; c < n; ++c)
+        {
+          product[c].compress_finish(dealii::VectorOperation::add);
+          work[c].zero_out_ghost_values();
+          // The identity on the other nodes: symmetric, positive definite.
+          const Vector &mask = *free[component[c]];
+          const Vector &xc = *x[c], &pc = product[c];
+          Vector       &yc = *y[c];
+          if (diagonal == nullptr)
+            for (unsigned int i = 0; i < n_owned; ++i)
+              {
+                const double f      = mask.local_element(i);
+                yc.local_element(i) = f * pc.local_element(i) + (1. - f) * xc.local_element(i);
+              }
+          else
+            for (unsigned int i = 0; i < n_owned; ++i)
+              {
+                const double f = mask.local_element(i);
+                yc.local_element(i)
+                  = f
+                      * (diagonal_scale * diagonal->local_element(i) * xc.local_element(i)
+                         + pc.local_element(i))
+                    + (1. - f) * xc.local_element(i);
+              }
+        }
+    }
+
+
+
+    void
+    NodalCellOperator::vmult(const unsigned int d, Vector &y, const Vector &x) const
+    {
+      apply<1>({{d}}, {{&y}}, {{&x}});
     }
 
 
@@ -213,49 +239,12 @@ namespace slidewave
     void
     NodalCellOperator::vmult(PairVector &y, const PairVector &x) const
     {
-      const NodalWorkspace &nodes = *workspace;
-      reinit_pair(pair_work, work);
-      reinit_pair(pair_product, work);
-      const unsigned int n_owned = work.locally_owned_size();
-      // As vmult(d, ...), the two components' exchanges overlapped and one pass over the
-      // cells' matrices for both.
-      for (unsigned int d = 0; d < 2; ++d)
-        for (unsigned int i = 0; i < n_owned; ++i)
-          pair_work.block(d).local_element(i)
-            = free[d]->local_element(i) * x.block(d).local_element(i);
-      pair_work.update_ghost_values();
-      for (unsigned int d = 0; d < 2; ++d)
-        nodes.interpolate_hanging_nodes(pair_work.block(d));
-      pair_product        = 0.;
-      const Vector &work0 = pair_work.block(0), &work1 = pair_work.block(1);
-      Vector       &product0 = pair_product.block(0), &product1 = pair_product.block(1);
-      for (const CellMatrix &cell : cells)
-        for (unsigned int i = 0; i < 4; ++i)
-          {
-            double sum0 = 0., sum1 = 0.;
-            for (unsigned int j = 0; j < 4; ++j)
-              {
-                sum0 += cell.matrix[4 * i + j] * work0.local_element(cell.nodes[j]);
-                sum1 += cell.matrix[4 * i + j] * work1.local_element(cell.nodes[j]);
-              }
-            product0.local_element(cell.nodes[i]) += sum0;
-            product1.local_element(cell.nodes[i]) += sum1;
-          }
-      for (unsigned int d = 0; d < 2; ++d)
-        nodes.condense_hanging_nodes(pair_product.block(d));
-      pair_product.compress(dealii::VectorOperation::add);
-      pair_work.zero_out_ghost_values();
-      for (unsigned int d = 0; d < 2; ++d)
-        for (unsigned int i = 0; i < n_owned; ++i)
-          {
-            const double f = free[d]->local_element(i);
-            const double diagonal
-              = this->diagonal == nullptr ? 0. : diagonal_scale * this->diagonal->local_element(i);
-            y.block(d).local_element(i) = f
-                                            * (diagonal * x.block(d).local_element(i)
-                                               + pair_product.block(d).local_element(i))
-                                          + (1. - f) * x.block(d).local_element(i);
-          }
+      if (work[1].get_partitioner() != work[0].get_partitioner())
+        {
+          work[1].reinit(work[0]);
+          product[1].reinit(work[0]);
+        }
+      apply<2>({{0, 1}}, {{&y.block(0), &y.block(1)}}, {{&x.block(0), &x.block(1)}});
     }
 
 
@@ -271,7 +260,7 @@ namespace slidewave
       const unsigned int iterations = conjugate_gradients(PairOperator{*this},
                                                           x,
                                                           b,
-                                                          PairInverseDiagonal{inverse_diagonal},
+                                                          InverseDiagonal{inverse_diagonal},
                                                           relative_tolerance,
                                                           max_iterations,
                                                           what);

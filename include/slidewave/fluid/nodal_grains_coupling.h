@@ -39,9 +39,9 @@ namespace slidewave
      * A_w the water's matrix with the Galerkin drag against u (NavierStokesSystem), B the
      * drag's and the flux's columns of dv and dv(x) = (M / dt + D)^-1 (L x + r_0). GMRES
      * iterates on this Schur complement, each product solving the grains' system by
-     * conjugate gradients per component (the cells with grains, their row sums as the
-     * preconditioner); the held components, the hanging and the empty nodes (free = 0) are
-     * rows of the identity (dv = 0), the hanging nodes take their parents' values. The
+     * conjugate gradients, both components in one run (the cells with grains, their row
+     * sums as the preconditioner); the held components, the hanging and the empty nodes (free = 0)
+     * are rows of the identity (dv = 0), the hanging nodes take their parents' values. The
      * constrained rows of the water (walls, inflow, hanging nodes) take no coupling term,
      * and their columns enter through the constraints (without their values in the
      * products, with them in the right-hand side).

@@ -18,7 +18,9 @@ namespace slidewave
      * held components, the hanging nodes, which take their parents' values, and the empty
      * nodes): the weighted mass matrices of the granular couplings
      * (granular::DragProjection, fluid::NodalGrainsCoupling), applied without a global
-     * matrix and solved per component by conjugate gradients with the inverse row sums.
+     * matrix and solved by conjugate gradients with the inverse row sums, per component
+     * (solve(d, ...): DragProjection) or both components in one run (solve() of a pair:
+     * NodalGrainsCoupling).
      */
     class NodalCellOperator
     {
@@ -79,8 +81,8 @@ namespace slidewave
       vmult(PairVector &y, const PairVector &x) const;
 
       /** x = A^-1 b for both components at once: one conjugate-gradient run on the pair,
-       *  whose global sums and ghost exchanges serve the two components (half those of
-       *  two solve() runs, which matters where ranks share cores), to
+       *  whose global sums serve the two components and whose ghost exchanges overlap
+       *  (two solve() runs would make a set each), to
        *  @p relative_tolerance of the pair's norm |b|, each component preconditioned by
        *  @p inverse_diagonal; x's ghosts and hanging nodes then set. Throws RunFailure
        *  naming @p what when it does not converge. Returns the iterations (collective). */
@@ -97,9 +99,17 @@ namespace slidewave
       std::array<const Vector *, 2> free{};
       const Vector                 *diagonal       = nullptr;
       double                        diagonal_scale = 0.;
-      mutable Vector                work, product;
-      /** The pair's work vectors (made by the first paired product of a layout). */
-      mutable PairVector pair_work, pair_product;
+      /** Work vectors per component of a product (the second made by the first paired
+       *  product of a layout). */
+      mutable std::array<Vector, 2> work, product;
+
+      /** y[c] = A x[c] for the @p n components @p component[c]: their ghost exchanges
+       *  overlapped and one pass over the cells (collective). */
+      template <unsigned int n>
+      void
+      apply(const std::array<unsigned int, n>   &component,
+            const std::array<Vector *, n>       &y,
+            const std::array<const Vector *, n> &x) const;
     };
   } // namespace grid
 } // namespace slidewave

@@ -120,12 +120,7 @@ namespace slidewave
       const grid::NodalWorkspace &nodes = *grains.nodes;
       grains_operator.reinit(nodes, grains.free);
       grains_operator.set_diagonal(&nodes.nodal_mass, 1. / dt);
-      grains_operator.row_sums(sums);
-      for (unsigned int i = 0; i < sums.locally_owned_size(); ++i)
-        {
-          const double sum = nodes.nodal_mass.local_element(i) / dt + sums.local_element(i);
-          inverse_diagonal.local_element(i) = sum > 0. ? 1. / sum : 1.;
-        }
+      grains_operator.row_sums(sums, inverse_diagonal);
       // The known part: B dv(g) with the constraints' values g (and r_0).
       values = 0.;
       constraints.distribute(values);

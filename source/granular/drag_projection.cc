@@ -117,7 +117,7 @@ namespace slidewave
 
       // The row sums (the lumped weighted mass): the preconditioner, and which nodes the
       // cells with grains reach.
-      projection.row_sums(sums);
+      projection.row_sums(sums, inverse_diagonal);
       const unsigned int n_owned = sums.locally_owned_size();
       for (unsigned int i = 0; i < n_owned; ++i)
         free[0].local_element(i) = free[1].local_element(i) = 1.;
@@ -130,7 +130,6 @@ namespace slidewave
           const double sum = sums.local_element(i);
           if (!(sum > 0.))
             free[0].local_element(i) = free[1].local_element(i) = 0.;
-          inverse_diagonal.local_element(i) = sum > 0. ? 1. / sum : 1.;
         }
 
       for (unsigned int d = 0; d < 2; ++d)

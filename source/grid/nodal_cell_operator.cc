@@ -112,7 +112,7 @@ namespace slidewave
 
 
     void
-    NodalCellOperator::row_sums(Vector &sums) const
+    NodalCellOperator::row_sums(Vector &sums, Vector &inverse_diagonal) const
     {
       sums = 0.;
       for (const CellMatrix &cell : cells)
@@ -121,6 +121,13 @@ namespace slidewave
             sums.local_element(cell.nodes[i]) += cell.matrix[4 * i + j];
       workspace->condense_hanging_nodes(sums);
       sums.compress(dealii::VectorOperation::add);
+      for (unsigned int i = 0; i < sums.locally_owned_size(); ++i)
+        {
+          double &sum = sums.local_element(i);
+          if (diagonal != nullptr)
+            sum += diagonal_scale * diagonal->local_element(i);
+          inverse_diagonal.local_element(i) = sum > 0. ? 1. / sum : 1.;
+        }
     }
 
 

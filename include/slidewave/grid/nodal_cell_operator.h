@@ -49,10 +49,12 @@ namespace slidewave
       void
       set_diagonal(const Vector *diagonal, double scale);
 
-      /** The row sums of the cells' matrices at the owned nodes (hanging nodes' to their
-       *  parents) into @p sums (the layout; collective). */
+      /** The operator's row sums at the owned nodes into @p sums: the cells' matrices'
+       *  (hanging nodes' to their parents) plus the diagonal (on every owned node); and
+       *  the conjugate gradients' preconditioner from them into @p inverse_diagonal:
+       *  1 / sum where the sum is positive, 1 elsewhere (the layout; collective). */
       void
-      row_sums(Vector &sums) const;
+      row_sums(Vector &sums, Vector &inverse_diagonal) const;
 
       /** y = A x for component @p d (collective). */
       void

@@ -69,8 +69,8 @@ namespace slidewave
                           "Resume from the newest checkpoint in the output directory (same as "
                           "the command-line option --resume). The scene may change its end "
                           "time, output and checkpoint settings, and the number of MPI ranks; "
-                          "the physics, grid and materials must be those of the checkpoint. "
-                          "Material points only, for now.");
+                          "the physics, grid and materials must be those of the checkpoint "
+                          "(every physics; doc/checkpoints.md).");
       }
       prm.leave_subsection();
     }

@@ -1,6 +1,7 @@
 #include <cmath>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/run_bounds.h>
+#include <slidewave/granular/drag_law.h>
 #include <slidewave/granular/granular_water_scene.h>
 
 namespace slidewave
@@ -133,11 +134,11 @@ namespace slidewave
                              "limit; apic only with 'semi-implicit' (lumped) or 'explicit' "
                              "coupling "
                              "(doc/granular-water.md, \"The consistent coupling\")");
-      // The grains are denser than the skeleton: 0 < n_0 <= 0.99.
+      // The grains are denser than the skeleton: 0 < n_0 <= the porosity's cap (0.99).
       for (const auto &material : soil_parameters.materials)
         {
           const double n0 = 1. - material.density / parameters.grain_density;
-          if (!(n0 > 0. && n0 <= 0.99))
+          if (!(n0 > 0. && n0 <= DragLaw::porosity_cap))
             throw InputError(soil_section + "/Material '" + material.name + "'/Density",
                              to_string(material.density),
                              "a dry density (1 - n_0) rho^s between 0.01 and 1 times '" + section

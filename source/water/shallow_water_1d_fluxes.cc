@@ -1,6 +1,7 @@
 #include <cmath>
 #include <slidewave/water/numerical_flux.h>
 #include <slidewave/water/shallow_water_1d.h>
+#include <type_traits>
 
 // ShallowWater1D, its spatial discretization: the reconstruction of the face values
 // (first order or MUSCL with a limiter), the numerical fluxes through the interfaces and
@@ -283,55 +284,33 @@ namespace slidewave
             }
           return;
         }
+      // The limiter is a template argument (inlined in the cell loop): one call per value.
+      const auto second_order = [&](auto limiter) {
+        reconstruct_second_order<decltype(limiter)::value>(depth,
+                                                           discharge,
+                                                           bed_elevation,
+                                                           inverse_spacing,
+                                                           inverse_width,
+                                                           prm.dry_depth,
+                                                           prm.gravity,
+                                                           half_step,
+                                                           h_left_face,
+                                                           h_right_face,
+                                                           u_left_face,
+                                                           u_right_face,
+                                                           bed_left_face,
+                                                           bed_right_face);
+      };
       switch (prm.limiter)
         {
           case Limiter::minmod:
-            reconstruct_second_order<Limiter::minmod>(depth,
-                                                      discharge,
-                                                      bed_elevation,
-                                                      inverse_spacing,
-                                                      inverse_width,
-                                                      prm.dry_depth,
-                                                      prm.gravity,
-                                                      half_step,
-                                                      h_left_face,
-                                                      h_right_face,
-                                                      u_left_face,
-                                                      u_right_face,
-                                                      bed_left_face,
-                                                      bed_right_face);
+            second_order(std::integral_constant<Limiter, Limiter::minmod>());
             break;
           case Limiter::van_leer:
-            reconstruct_second_order<Limiter::van_leer>(depth,
-                                                        discharge,
-                                                        bed_elevation,
-                                                        inverse_spacing,
-                                                        inverse_width,
-                                                        prm.dry_depth,
-                                                        prm.gravity,
-                                                        half_step,
-                                                        h_left_face,
-                                                        h_right_face,
-                                                        u_left_face,
-                                                        u_right_face,
-                                                        bed_left_face,
-                                                        bed_right_face);
+            second_order(std::integral_constant<Limiter, Limiter::van_leer>());
             break;
           case Limiter::superbee:
-            reconstruct_second_order<Limiter::superbee>(depth,
-                                                        discharge,
-                                                        bed_elevation,
-                                                        inverse_spacing,
-                                                        inverse_width,
-                                                        prm.dry_depth,
-                                                        prm.gravity,
-                                                        half_step,
-                                                        h_left_face,
-                                                        h_right_face,
-                                                        u_left_face,
-                                                        u_right_face,
-                                                        bed_left_face,
-                                                        bed_right_face);
+            second_order(std::integral_constant<Limiter, Limiter::superbee>());
             break;
         }
     }

@@ -49,7 +49,6 @@ namespace slidewave
       for (unsigned int I = 0; I < 4; ++I)
         block.nodes[I] = grains.nodes->local_index(grid_indices[I]);
       block.matrix.fill(0.);
-      data.pressure.fill(0.);
       data.flux.fill(0.);
       data.known.fill(0.);
       for (unsigned int i = 0; i < 12; ++i)
@@ -71,14 +70,10 @@ namespace slidewave
                   const unsigned int         j  = position[3 * J + 2];
                   const dealii::Tensor<1, 2> Gj = fv.shape_grad(j, q);
                   block.matrix[4 * I + J] += drag[q] * Ni * fv.shape_value(j, q) * JxW;
-                  // (G p)_I = (1 - n_I) integral of N_I grad p, lumped on the node's grains;
-                  // the continuity's div(N_J (1 - n_J) dv_J) tested by N_I
+                  // the continuity's div(N_J (1 - n_J) dv_J) tested by N_I (its transpose
+                  // is the pressure's force on the grains: grains_load())
                   for (unsigned int d = 0; d < 2; ++d)
-                    {
-                      data.pressure[16 * d + 4 * I + J]
-                        += (1. - fluid_fraction[I]) * Ni * Gj[d] * JxW;
-                      data.flux[16 * d + 4 * I + J] += Ni * Gj[d] * (1. - fluid_fraction[J]) * JxW;
-                    }
+                    data.flux[16 * d + 4 * I + J] += Ni * Gj[d] * (1. - fluid_fraction[J]) * JxW;
                 }
             }
         }
@@ -177,11 +172,11 @@ namespace slidewave
           for (unsigned int I = 0; I < 4; ++I)
             for (unsigned int d = 0; d < 2; ++d)
               {
-                // D u - (1 - n_I) K (p - p^n) (- F v*_s)
+                // D u - G (p - p^n) (- F v*_s), G = -(the continuity's flux)^T
                 double r = with_known ? -cell.known[4 * d + I] : 0.;
                 for (unsigned int J = 0; J < 4; ++J)
                   r += block.matrix[4 * I + J] * dofs[position[3 * J + d]]
-                       - cell.pressure[16 * d + 4 * I + J] * p[J];
+                       + cell.flux[16 * d + 4 * J + I] * p[J];
                 load.block(d).local_element(block.nodes[I]) += r;
               }
         }

@@ -120,20 +120,6 @@ namespace slidewave
                              "four cells grow where the grains are permeable; apic only with "
                              "'semi-implicit' (lumped) or 'explicit' coupling "
                              "(doc/granular-water.md, \"APIC and the projected coupling\")");
-      // The consistent coupling gives the grains, on their lumped masses, exactly what the
-      // water loses, but toward the undrained limit (Terzaghi at k = 1e-12 m^2) APIC lets a
-      // mode grow after about 2000 steps, with the grains' mass lumped or consistent like
-      // the water's (doc/granular-water.md, "The consistent coupling", "Not done yet").
-      if (parameters.consistent_drag
-          && soil_parameters.velocity_transfer == engine::VelocityTransfer::apic)
-        throw InputError(soil_section + "/Velocity transfer",
-                         "apic",
-                         "flip with '" + section
-                           + "/Drag coupling = semi-implicit consistent': with APIC the "
-                             "consistent coupling grows without bound toward the undrained "
-                             "limit; apic only with 'semi-implicit' (lumped) or 'explicit' "
-                             "coupling "
-                             "(doc/granular-water.md, \"The consistent coupling\")");
       // The grains are denser than the skeleton: 0 < n_0 <= the porosity's cap (0.99).
       for (const auto &material : soil_parameters.materials)
         {

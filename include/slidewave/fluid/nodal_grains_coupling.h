@@ -27,13 +27,17 @@ namespace slidewave
      *   (M / dt + D) dv = D u - F v*_s - G (p - p^n),
      *
      * with M = diag(m_I), D_IJ = integral of C N_I N_J (the drag, consistent),
-     * (F v*_s)_I = integral of C N_I v*_s and (G p)_I = (1 - n_I) integral of N_I grad p
-     * (the pressure's force lumped on the node's grains, as on the old pressure in v*). The
-     * water's equations see the same grains: the drag C (u - v*_s - dv_h) with
+     * (F v*_s)_I = integral of C N_I v*_s and (G p)_I = -(1 - n_I) integral of p grad N_I.
+     * The water's equations see the same grains: the drag C (u - v*_s - dv_h) with
      * dv_h = sum_J N_J dv_J, and in the continuity the divergence of the grains' flux
-     * sum_J N_J (1 - n_J)(v*_J + dv_J), whose increment's part is the adjoint of G up to
-     * the open sides' flux. The drag the water loses is exactly what the grains gain, and the
-     * pressure's work on the grains is what the continuity counts.
+     * sum_J N_J (1 - n_J)(v*_J + dv_J), tested by the pressure's functions, whose
+     * increment's part is -G^T. The drag the water loses is exactly what the grains gain,
+     * and the pressure's work on the grains is what the continuity counts, through the
+     * open sides too. (G differs from the lumped (1 - n_I) integral of N_I grad p, which
+     * the old pressure's force in v* keeps, by (1 - n_I) times the integral of p N_I n
+     * over the open sides. Without it a tilt of the pressure across a drained top fed a
+     * shear of the column that APIC, which hands the grid's velocities back unfiltered,
+     * let grow: doc/granular-water.md, "The consistent coupling".)
      *
      * dv is eliminated without a matrix: the water's system is A_w x + B dv(x) = f, with
      * A_w the water's matrix with the Galerkin drag against u (NavierStokesSystem), B the
@@ -126,14 +130,14 @@ namespace slidewave
       NodalGrains                 grains;
       double                      dt = 0.;
       /** A cell with grains: its number in tree order, its flow degrees of freedom (its
-       *  nodes and D_IJ are grains_operator's cell of the same index), the pressure's force
-       *  on the grains (G p)_I = sum_J pressure(d, I, J) p_J, the continuity's flux sum_J
-       *  flux(d, I, J) dv_J(d) in row I, and F v*_s (d, I). */
+       *  nodes and D_IJ are grains_operator's cell of the same index), the continuity's
+       *  flux sum_J flux(d, I, J) dv_J(d) in row I (the pressure's force on the grains
+       *  (G p)_I = -sum_J flux(d, J, I) p_J), and F v*_s (d, I). */
       struct CellData
       {
         unsigned int                                    cell_number;
         std::array<dealii::types::global_dof_index, 12> indices;
-        std::array<double, 32>                          pressure, flux;
+        std::array<double, 32>                          flux;
         std::array<double, 8>                           known;
       };
       std::vector<CellData> cells;

@@ -118,7 +118,8 @@ namespace slidewave
                            + "/Drag coupling = semi-implicit projected' (the default): "
                              "with APIC the projected coupling lets a standing wave of about "
                              "four cells grow where the grains are permeable; apic only with "
-                             "'semi-implicit' (lumped) or 'explicit' coupling "
+                             "'semi-implicit consistent', 'semi-implicit' (lumped) or "
+                             "'explicit' coupling "
                              "(doc/granular-water.md, \"APIC and the projected coupling\")");
       // The grains are denser than the skeleton: 0 < n_0 <= the porosity's cap (0.99).
       for (const auto &material : soil_parameters.materials)

@@ -48,8 +48,8 @@ namespace slidewave
                         "velocity: PIC without PIC's damping of rotation and shear, and "
                         "without FLIP's noise; 'FLIP fraction' must then keep its default "
                         "(there is no blend; doc/mpm.md). "
-                        "With Physics = granular water only with 'Drag coupling' = "
-                        "semi-implicit or explicit (doc/granular-water.md).");
+                        "With Physics = granular water not with 'Drag coupling' = "
+                        "semi-implicit projected, the default (doc/granular-water.md).");
       prm.declare_entry("Time step multiplier",
                         "0.5",
                         Double(),

@@ -32,12 +32,14 @@ namespace slidewave
      * dv_h = sum_J N_J dv_J, and in the continuity the divergence of the grains' flux
      * sum_J N_J (1 - n_J)(v*_J + dv_J), tested by the pressure's functions, whose
      * increment's part is -G^T. The drag the water loses is exactly what the grains gain,
-     * and the pressure's work on the grains is what the continuity counts, through the
-     * open sides too. (G differs from the lumped (1 - n_I) integral of N_I grad p, which
-     * the old pressure's force in v* keeps, by (1 - n_I) times the integral of p N_I n
-     * over the open sides. Without it a tilt of the pressure across a drained top fed a
-     * shear of the column that APIC, which hands the grid's velocities back unfiltered,
-     * let grow: doc/granular-water.md, "The consistent coupling".)
+     * and the work of the pressure's increment on the grains is what the continuity
+     * counts, through the open sides too. (The force -G p is the lumped
+     * -(1 - n_I) integral of N_I grad p, which the old pressure's force in v* keeps, plus
+     * (1 - n_I) times the integral of p N_I n over the grid's boundary: outward for
+     * p > 0. On the walls the grains' normal component is held, so only the open sides
+     * see it. Without it a tilt of the pressure across a drained top fed a shear of the
+     * column that APIC, which hands the grid's velocities back unfiltered, let grow:
+     * doc/granular-water.md, "The consistent coupling".)
      *
      * dv is eliminated without a matrix: the water's system is A_w x + B dv(x) = f, with
      * A_w the water's matrix with the Galerkin drag against u (NavierStokesSystem), B the

@@ -10,12 +10,16 @@
 #   order, which the 12-digit CSV files can show in their last digit.
 # Arguments: -DMPIEXEC, -DNUMPROC_FLAG, -DEXECUTABLE, -DSCENE, -DDIRECTORY, -DFULL_RANKS,
 # -DRESUME_RANKS, optional -DIGNORE (regex of one column, e.g. " load_imbalance=[^ ]*"),
-# -DFILES (;-separated), optional -DOTHER_SCENE and -DOTHER_SETTING (below); -DMAPS
+# -DFILES (;-separated), optional -DSETTING ('PATH=VALUE', given to every run of the scene:
+# the same scene with one parameter changed), -DOTHER_SCENE and -DOTHER_SETTING (below); -DMAPS
 # (;-separated GeoTIFFs), compared pixel by pixel by
 # -DCOMPARE_RASTERS (run with -DPYTHON) to -DMAP_TOLERANCE times their largest value.
 file(REMOVE_RECURSE ${DIRECTORY} ${DIRECTORY}-full)
 function(run_scene ranks resume output status)
   set(command ${EXECUTABLE} --set "Output directory=${DIRECTORY}")
+  if(SETTING)
+    list(APPEND command --set "${SETTING}")
+  endif()
   if(resume)
     list(APPEND command --resume)
   endif()

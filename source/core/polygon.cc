@@ -9,16 +9,19 @@ namespace slidewave
   namespace core
   {
     std::vector<dealii::Point<2>>
-    parse_polygon(const std::string &parameter, const std::string &text, const std::string &unit)
+    parse_polygon(const std::string &parameter,
+                  const std::string &text,
+                  const std::string &unit,
+                  const std::string &noun)
     {
-      const std::string allowed
-        = "vertices 'x1, y1; x2, y2; ...'" + (unit.empty() ? std::string() : " [" + unit + "]");
+      const std::string form    = noun + " 'x1, y1; x2, y2; ...'";
+      const std::string allowed = form + (unit.empty() ? std::string() : " [" + unit + "]");
       std::vector<dealii::Point<2>> ring;
       for (const auto &vertex : dealii::Utilities::split_string_list(text, ';'))
         {
           const auto v = parse_number_list(parameter, vertex, allowed);
           if (v.size() != 2)
-            throw InputError(parameter, text, "vertices 'x1, y1; x2, y2; ...' (two numbers each)");
+            throw InputError(parameter, text, form + " (two numbers each)");
           ring.emplace_back(v[0], v[1]);
         }
       return ring;

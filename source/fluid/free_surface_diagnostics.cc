@@ -108,6 +108,38 @@ namespace slidewave
 
 
 
+      double
+      pressure_at(const grid::FiniteElementField &flow, const dealii::Point<2> &point)
+      {
+        // The grid's cells are axis-aligned rectangles, where Q1 is bilinear in (x, y):
+        // the pressure of the cell's four vertices (the third degree of freedom at each,
+        // after the two velocity components) weighted by the point's place in the cell.
+        std::array<double, 2> sum_and_count = {{0., 0.}};
+        for (const auto &cell : flow.dof_handler().active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const double x0 = cell->vertex(0)[0], x1 = cell->vertex(1)[0];
+              const double y0 = cell->vertex(0)[1], y1 = cell->vertex(2)[1];
+              if (point[0] < x0 || point[0] > x1 || point[1] < y0 || point[1] > y1)
+                continue;
+              const double s = (point[0] - x0) / (x1 - x0), t = (point[1] - y0) / (y1 - y0);
+              const auto  &values = flow.values(0);
+              const auto   p
+                = [&](const unsigned int v) { return values[cell->vertex_dof_index(v, 2)]; };
+              sum_and_count[0]
+                += (1. - t) * ((1. - s) * p(0) + s * p(1)) + t * ((1. - s) * p(2) + s * p(3));
+              sum_and_count[1] += 1.;
+              break; // a rank's first cell: on an edge its neighbour gives the same value
+            }
+        dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(sum_and_count),
+                                    flow.dof_handler().get_communicator(),
+                                    dealii::ArrayView<double>(sum_and_count));
+        return sum_and_count[1] > 0. ? sum_and_count[0] / sum_and_count[1] :
+                                       std::numeric_limits<double>::quiet_NaN();
+      }
+
+
+
       std::vector<std::array<double, 4>>
       surface_segments(const grid::FiniteElementField &phase)
       {

@@ -8,6 +8,7 @@
 #include <slidewave/fluid/free_surface_diagnostics.h>
 #include <slidewave/fluid/free_surface_output.h>
 #include <slidewave/io/particle_output.h>
+#include <sstream>
 
 namespace slidewave
 {
@@ -24,10 +25,26 @@ namespace slidewave
 
 
 
-    FreeSurfaceOutput::FreeSurfaceOutput(std::string output_directory, std::vector<double> gauges)
+    FreeSurfaceOutput::FreeSurfaceOutput(std::string                   output_directory,
+                                         std::vector<double>           gauges,
+                                         std::vector<dealii::Point<2>> pressure_probes)
       : directory(std::move(output_directory))
       , gauge_positions(std::move(gauges))
+      , probe_points(std::move(pressure_probes))
     {
+    }
+
+
+
+    std::vector<std::string>
+    FreeSurfaceOutput::growing_files() const
+    {
+      std::vector<std::string> files;
+      if (!gauge_positions.empty())
+        files.push_back(gauge_file());
+      if (!probe_points.empty())
+        files.push_back(probe_file());
+      return files;
     }
 
 
@@ -91,18 +108,41 @@ namespace slidewave
     void
     FreeSurfaceOutput::open_gauges(const bool append)
     {
-      if (!is_writer() || gauge_positions.empty())
+      if (!is_writer())
         return;
-      gauges = std::make_unique<std::ofstream>(directory + "/" + gauge_file(),
-                                               append ? std::ios::app : std::ios::out);
-      require_written(*gauges, directory + "/" + gauge_file());
-      gauges->precision(12);
-      if (append)
-        return;
-      *gauges << "time";
+      const auto open = [&](const std::string &name, const std::vector<std::string> &columns) {
+        auto file = std::make_unique<std::ofstream>(directory + "/" + name,
+                                                    append ? std::ios::app : std::ios::out);
+        require_written(*file, directory + "/" + name);
+        file->precision(12);
+        if (!append)
+          {
+            *file << "time";
+            for (const auto &column : columns)
+              *file << ',' << column;
+            *file << '\n';
+          }
+        return file;
+      };
+      // (the positions with the stream's default six digits, as given in the scene)
+      const auto column = [](const std::string &name, const std::vector<double> &position) {
+        std::ostringstream out;
+        out << name << "(x=" << position[0];
+        if (position.size() > 1)
+          out << " y=" << position[1];
+        out << ')';
+        return out.str();
+      };
+      std::vector<std::string> columns;
       for (const double x : gauge_positions)
-        *gauges << ",eta(x=" << x << ")";
-      *gauges << '\n';
+        columns.push_back(column("eta", {x}));
+      if (!gauge_positions.empty())
+        gauges = open(gauge_file(), columns);
+      probe_columns.clear();
+      for (const auto &p : probe_points)
+        probe_columns.push_back(column("p", {p[0], p[1]}));
+      if (!probe_points.empty())
+        probes = open(probe_file(), probe_columns);
     }
 
 
@@ -110,19 +150,42 @@ namespace slidewave
     void
     FreeSurfaceOutput::record_gauges(const FreeSurfaceSolver &solver, const double time)
     {
-      if (gauge_positions.empty())
-        return;
-      std::vector<double> eta;
+      std::vector<double> eta, p;
       for (const double x : gauge_positions)
         eta.push_back(diagnostics::surface_elevation(solver.phase_field(), x));
-      if (!gauges)
+      for (const auto &point : probe_points)
+        p.push_back(diagnostics::pressure_at(solver.flow_field(), point));
+      const auto row
+        = [&](std::ofstream *file, const std::vector<double> &values, const std::string &name) {
+            if (file == nullptr || values.empty())
+              return;
+            *file << time;
+            for (const double v : values)
+              *file << ',' << v;
+            *file << '\n';
+            file->flush();
+            require_written(*file, directory + "/" + name);
+          };
+      row(gauges.get(), eta, gauge_file());
+      row(probes.get(), p, probe_file());
+      last_time      = time;
+      last_pressures = p;
+    }
+
+
+
+    void
+    FreeSurfaceOutput::print_probes() const
+    {
+      if (!is_writer() || last_pressures.empty())
         return;
-      *gauges << time;
-      for (const double e : eta)
-        *gauges << ',' << e;
-      *gauges << '\n';
-      gauges->flush();
-      require_written(*gauges, directory + "/" + gauge_file());
+      std::printf("Pressure probes at t = %.6e s:", last_time);
+      for (unsigned int k = 0; k < last_pressures.size(); ++k)
+        std::printf("%s %s = %.6e Pa",
+                    k == 0 ? "" : ",",
+                    probe_columns.empty() ? "p" : probe_columns[k].c_str(),
+                    last_pressures[k]);
+      std::printf("\n");
     }
   } // namespace fluid
 } // namespace slidewave

@@ -3,6 +3,7 @@
 #include <deal.II/base/function_parser.h>
 #include <slidewave/core/input_error.h>
 #include <slidewave/core/parsed_expression.h>
+#include <slidewave/core/polygon.h>
 #include <slidewave/fluid/free_surface_parameters.h>
 #include <slidewave/grid/grid_extent.h>
 #include <slidewave/grid/load_balancing_parameters.h>
@@ -262,6 +263,15 @@ namespace slidewave
                         "x of the gauges: the water surface elevation there is written every "
                         "step to free_surface/gauges.csv (the format of the shallow water's "
                         "gauges).");
+      prm.declare_entry("Pressure probes",
+                        "",
+                        Anything(),
+                        "Points 'x1, y1; x2, y2; ...' [m] inside the grid: the pressure of the "
+                        "flow there (the Q1 field interpolated in its cell; the total "
+                        "pressure, hydrostatic part included: in the granular water the pore "
+                        "pressure) is written every step to free_surface/pressure_probes.csv, "
+                        "one column p(x=..,y=..) [Pa] per probe, kept by checkpoints as the "
+                        "gauges are.");
       prm.leave_subsection();
 
       prm.enter_subsection("Output");
@@ -482,6 +492,19 @@ namespace slidewave
                              to_string(x),
                              "positions inside the grid, [" + to_string(lower_left[0]) + ", "
                                + to_string(upper_right[0]) + "]");
+        const std::string probes = prm.get("Pressure probes");
+        const std::string name   = section + "/Gauges/Pressure probes";
+        pressure_probes          = probes.find_first_not_of(" \t") == std::string::npos ?
+                                     std::vector<dealii::Point<2>>() :
+                                     core::parse_polygon(name, probes, "m", "points");
+        for (const auto &p : pressure_probes)
+          if (p[0] < lower_left[0] || p[0] > upper_right[0] || p[1] < lower_left[1]
+              || p[1] > upper_right[1])
+            throw InputError(name,
+                             probes,
+                             "points inside the grid, [" + to_string(lower_left[0]) + ", "
+                               + to_string(upper_right[0]) + "] x [" + to_string(lower_left[1])
+                               + ", " + to_string(upper_right[1]) + "]");
       }
       prm.leave_subsection();
 

@@ -50,7 +50,7 @@ namespace slidewave
                                        dealii::ParameterHandler &prm)
       : scene(scene_parameters)
       , parameters(parse(prm))
-      , output(scene_parameters.output_directory, parameters.gauges)
+      , output(scene_parameters.output_directory, parameters.gauges, parameters.pressure_probes)
     {
     }
 
@@ -381,6 +381,7 @@ namespace slidewave
       if (is_writer)
         {
           balance.print_summary(solver->water_outflow);
+          output.print_probes();
           // The split of the steps' time (wall times: not in test mode's output).
           if (!scene.test_mode)
             std::printf("Step time: flow assembly %.3g s, preconditioner %.3g s (%llu builds), "
@@ -427,9 +428,7 @@ namespace slidewave
     std::vector<std::string>
     FreeSurfaceScene::growing_files() const
     {
-      if (parameters.gauges.empty())
-        return {};
-      return {FreeSurfaceOutput::gauge_file()};
+      return output.growing_files();
     }
 
 

@@ -45,7 +45,9 @@ namespace slidewave
       soil_parameters.point_forces = parameters.top_load > 0.;
       // The skeleton's rigid solids hold the water too.
       fluid_parameters.solids = soil_parameters.solids;
-      fluid_output = fluid::FreeSurfaceOutput(scene.output_directory, fluid_parameters.gauges);
+      fluid_output            = fluid::FreeSurfaceOutput(scene.output_directory,
+                                              fluid_parameters.gauges,
+                                              fluid_parameters.pressure_probes);
 
       check_parameters();
     }
@@ -518,7 +520,10 @@ namespace slidewave
     GranularWaterScene::finish(const StepInfo &info)
     {
       if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-        balance.print_summary(fluid_solver->water_outflow);
+        {
+          balance.print_summary(fluid_solver->water_outflow);
+          fluid_output.print_probes();
+        }
       return verification.finish(fluid_solver->flow_field(), engine->point_cloud(), info.time);
     }
   } // namespace granular

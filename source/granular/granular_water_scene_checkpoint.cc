@@ -40,8 +40,8 @@ namespace slidewave
     GranularWaterScene::growing_files() const
     {
       std::vector<std::string> files = verification.growing_files();
-      if (!fluid_parameters.gauges.empty())
-        files.push_back(fluid::FreeSurfaceOutput::gauge_file());
+      for (const auto &file : fluid_output.growing_files())
+        files.push_back(file);
       return files;
     }
 

@@ -40,10 +40,14 @@ namespace slidewave
      * InputError naming @p parameter when a vertex is not a list of finite numbers
      * ("vertices 'x1, y1; x2, y2; ...'", followed by " [@p unit]" unless @p unit is empty)
      * or not two of them ("vertices 'x1, y1; x2, y2; ...' (two numbers each)"). How many
-     * vertices are needed is the caller's to check.
+     * vertices are needed is the caller's to check. @p noun names the items in the messages
+     * ("points" for a list of probes).
      */
     std::vector<dealii::Point<2>>
-    parse_polygon(const std::string &parameter, const std::string &text, const std::string &unit);
+    parse_polygon(const std::string &parameter,
+                  const std::string &text,
+                  const std::string &unit,
+                  const std::string &noun = "vertices");
 
     /** The signed area of @p ring (the shoelace formula; positive counter-clockwise); 0
      *  with fewer than three vertices. */

@@ -28,6 +28,12 @@ namespace slidewave
       double
       surface_elevation(const grid::FiniteElementField &phase, double x);
 
+      /** The flow's pressure (component 2 of @p flow) at @p point, interpolated in the
+       *  locally owned cell that holds it (the mean of the ranks' values where it lies on
+       *  the edge between two ranks' cells); collective. */
+      double
+      pressure_at(const grid::FiniteElementField &flow, const dealii::Point<2> &point);
+
       /** The phi = 0.5 contour as segments (x0, y0, x1, y1), marching squares cell by
        *  cell; every rank's segments, sorted, on rank 0 (empty elsewhere). */
       std::vector<std::array<double, 4>>

@@ -144,7 +144,9 @@ namespace slidewave
       double              max_volume_drift = 0.05;
       double              max_speed        = 1e3;
       std::vector<double> gauges;
-      bool                write_surface = true;
+      /** Points where the water's pressure is written every step (pressure probes). */
+      std::vector<dealii::Point<2>> pressure_probes;
+      bool                          write_surface = true;
 
       FlowExactSolution exact_solution = FlowExactSolution::none;
       double            tolerance      = 0.;

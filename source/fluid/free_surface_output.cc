@@ -124,9 +124,10 @@ namespace slidewave
           }
         return file;
       };
-      // (the positions with the stream's default six digits, as given in the scene)
+      // (the positions with the files' 12 digits)
       const auto column = [](const std::string &name, const std::vector<double> &position) {
         std::ostringstream out;
+        out.precision(12);
         out << name << "(x=" << position[0];
         if (position.size() > 1)
           out << " y=" << position[1];

@@ -111,23 +111,31 @@ namespace slidewave
       double
       pressure_at(const grid::FiniteElementField &flow, const dealii::Point<2> &point)
       {
-        // The grid's cells are axis-aligned rectangles, where Q1 is bilinear in (x, y):
-        // the pressure of the cell's four vertices (the third degree of freedom at each,
-        // after the two velocity components) weighted by the point's place in the cell.
-        std::array<double, 2> sum_and_count = {{0., 0.}};
+        // The grid's cells are axis-aligned rectangles: the point's reference coordinates
+        // are its place in the cell, and the pressure (component 2) is the sum of the
+        // cell's pressure dofs times their shape functions there (Q1 or Q2). A point on the
+        // grid's edge may lie an ulp outside the last cell: a relative tolerance, clamped.
+        const auto                                  &fe     = flow.finite_element();
+        const auto                                  &values = flow.values(0);
+        std::vector<dealii::types::global_dof_index> dofs(fe.n_dofs_per_cell());
+        std::array<double, 2>                        sum_and_count = {{0., 0.}};
         for (const auto &cell : flow.dof_handler().active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              const double x0 = cell->vertex(0)[0], x1 = cell->vertex(1)[0];
-              const double y0 = cell->vertex(0)[1], y1 = cell->vertex(2)[1];
-              if (point[0] < x0 || point[0] > x1 || point[1] < y0 || point[1] > y1)
+              const dealii::Point<2> &a = cell->vertex(0), &b = cell->vertex(3);
+              const double            tolerance = 1e-10 * (b[0] - a[0]);
+              if (point[0] < a[0] - tolerance || point[0] > b[0] + tolerance
+                  || point[1] < a[1] - tolerance || point[1] > b[1] + tolerance)
                 continue;
-              const double s = (point[0] - x0) / (x1 - x0), t = (point[1] - y0) / (y1 - y0);
-              const auto  &values = flow.values(0);
-              const auto   p
-                = [&](const unsigned int v) { return values[cell->vertex_dof_index(v, 2)]; };
-              sum_and_count[0]
-                += (1. - t) * ((1. - s) * p(0) + s * p(1)) + t * ((1. - s) * p(2) + s * p(3));
+              dealii::Point<2> unit;
+              for (unsigned int d = 0; d < 2; ++d)
+                unit[d] = std::clamp((point[d] - a[d]) / (b[d] - a[d]), 0., 1.);
+              cell->get_dof_indices(dofs);
+              double p = 0.;
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                if (fe.system_to_component_index(i).first == 2)
+                  p += values[dofs[i]] * fe.shape_value(i, unit);
+              sum_and_count[0] += p;
               sum_and_count[1] += 1.;
               break; // a rank's first cell: on an edge its neighbour gives the same value
             }

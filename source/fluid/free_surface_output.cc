@@ -36,6 +36,28 @@ namespace slidewave
 
 
 
+    std::string
+    FreeSurfaceOutput::signature() const
+    {
+      std::ostringstream out;
+      out.precision(12);
+      if (!gauge_positions.empty())
+        {
+          out << "; gauges";
+          for (const double x : gauge_positions)
+            out << ' ' << x;
+        }
+      if (!probe_points.empty())
+        {
+          out << "; pressure probes";
+          for (const auto &p : probe_points)
+            out << " (" << p << ')';
+        }
+      return out.str();
+    }
+
+
+
     std::vector<std::string>
     FreeSurfaceOutput::growing_files() const
     {

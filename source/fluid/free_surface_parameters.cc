@@ -267,10 +267,10 @@ namespace slidewave
                         "",
                         Anything(),
                         "Points 'x1, y1; x2, y2; ...' [m] inside the grid: the pressure of the "
-                        "flow there (the Q1 field interpolated in its cell; the total "
+                        "flow there (the field evaluated in its cell; the total "
                         "pressure, hydrostatic part included: in the granular water the pore "
                         "pressure) is written every step to free_surface/pressure_probes.csv, "
-                        "one column p(x=..,y=..) [Pa] per probe, kept by checkpoints as the "
+                        "one column 'p(x=.. y=..)' [Pa] per probe, kept by checkpoints as the "
                         "gauges are.");
       prm.leave_subsection();
 

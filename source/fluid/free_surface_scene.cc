@@ -420,6 +420,7 @@ namespace slidewave
       // (dynamic subscales are a field of their own in the checkpoint)
       if (parameters.dynamic_subscales)
         out << "; dynamic subscales";
+      out << output.signature();
       return out.str();
     }
 

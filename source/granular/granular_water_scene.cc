@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <deal.II/base/mpi.h>
 #include <limits>
 #include <slidewave/core/input_error.h>
@@ -524,6 +525,12 @@ namespace slidewave
           balance.print_summary(fluid_solver->water_outflow);
           fluid_output.print_probes();
         }
+      // The grains that left through a free side of the grid (the engine drops them).
+      const double lost = engine->state().lost_mass;
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 && lost > 0.)
+        std::printf("Grains through the sides: %.6g kg/m out (%.6g m^2 of solid)\n",
+                    lost,
+                    lost / parameters.grain_density);
       return verification.finish(fluid_solver->flow_field(), engine->point_cloud(), info.time);
     }
   } // namespace granular

@@ -23,7 +23,7 @@ namespace slidewave
       // (a material's model decides its points' properties: Hencky's carry b^e)
       for (const auto &material : soil_parameters.materials)
         out << " " << material.signature();
-      out << engine::signature(soil_parameters.velocity_transfer);
+      out << engine::signature(soil_parameters.velocity_transfer) << fluid_output.signature();
       // (a solid holds the water's and the skeleton's nodes: another one is another scene)
       for (const auto &solid : fluid_parameters.solids)
         {

@@ -235,6 +235,12 @@ namespace slidewave
                                  "Forchheimer",
                                  "Darcy with 'Exact solution = settling' (its fall is "
                                  "exponential with the linear drag)");
+              if (soil_parameters.boundaries[2] == grid::GridBoundary::free)
+                throw InputError(soil_section + "/Boundary conditions/Bottom",
+                                 "free",
+                                 "roller or fixed with 'Exact solution = settling' (the bed "
+                                 "forms on the floor; through a free bottom the grains leave "
+                                 "the grid)");
             }
           if (parameters.exact_solution == GranularExactSolution::terzaghi
               && parameters.permeability_law != PermeabilityLaw::constant)

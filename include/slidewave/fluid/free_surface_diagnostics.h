@@ -28,8 +28,8 @@ namespace slidewave
       double
       surface_elevation(const grid::FiniteElementField &phase, double x);
 
-      /** The flow's pressure (component 2 of @p flow) at @p point, interpolated in the
-       *  locally owned cell that holds it (the mean of the ranks' values where it lies on
+      /** The flow's pressure (component 2 of @p flow, Q1 or Q2) at @p point, evaluated in
+       *  the locally owned cell that holds it (the mean of the ranks' values where it lies on
        *  the edge between two ranks' cells); collective. */
       double
       pressure_at(const grid::FiniteElementField &flow, const dealii::Point<2> &point);

@@ -66,6 +66,11 @@ namespace slidewave
       std::vector<std::string>
       growing_files() const;
 
+      /** The gauges' and probes' positions for a checkpoint's signature (empty without
+       *  any): a resumed run continues their files, so it must have the same columns. */
+      std::string
+      signature() const;
+
       /** (time, file) of every field record so far (kept by checkpoints). */
       std::vector<std::pair<double, std::string>> files;
 

@@ -56,6 +56,12 @@ namespace slidewave
     const bool reaches_target = state.time + dt >= target - time_tolerance;
     if (reaches_target)
       dt = target - state.time;
+    else if (state.time + 2. * dt > target - time_tolerance)
+      // Between one and two steps to go: two equal steps, not a full one and a short one.
+      // A short step is no harm to an explicit scheme, but a projection's pressure scales
+      // with 1/dt, and a step ten times shorter than its neighbours shows in the fields
+      // written at that output time (doc/free-surface-flow.md, "Pressure probes").
+      dt = 0.5 * (target - state.time);
     info.dt             = dt;
     info.time           = reaches_target ? target : state.time + dt;
     info.step           = state.step + 1;

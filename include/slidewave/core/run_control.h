@@ -15,8 +15,10 @@ namespace slidewave
    * what it reports, checks, writes and saves.
    *
    * The step is the scene's stable step, at most 'Maximum time step', and shortened to land
-   * exactly on the next output time and on the end time (within 1e-12 of the run's length);
-   * a scene that allows any step (still water) steps straight to the next of these targets.
+   * exactly on the next output time and on the end time (within 1e-12 of the run's length):
+   * when between one and two steps remain, the remainder is taken as two equal steps, so
+   * that no step is much shorter than its neighbours. A scene that allows any step (still
+   * water) steps straight to the next of these targets.
    * Output is written at the start, at every output time and at the end; a statistics row
    * at the start, every 'Statistics interval' steps, at output times and at the end;
    * checkpoints every 'Checkpoint/Step interval' steps, every 'Wall time interval' minutes

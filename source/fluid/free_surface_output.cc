@@ -32,6 +32,20 @@ namespace slidewave
       , gauge_positions(std::move(gauges))
       , probe_points(std::move(pressure_probes))
     {
+      // The files' headers name every column by its position, with the files' 12 digits.
+      const auto column = [](const std::string &name, const std::vector<double> &position) {
+        std::ostringstream out;
+        out.precision(12);
+        out << name << "(x=" << position[0];
+        if (position.size() > 1)
+          out << " y=" << position[1];
+        out << ')';
+        return out.str();
+      };
+      for (const double x : gauge_positions)
+        gauge_columns.push_back(column("eta", {x}));
+      for (const auto &p : probe_points)
+        probe_columns.push_back(column("p", {p[0], p[1]}));
     }
 
 
@@ -146,24 +160,8 @@ namespace slidewave
           }
         return file;
       };
-      // (the positions with the files' 12 digits)
-      const auto column = [](const std::string &name, const std::vector<double> &position) {
-        std::ostringstream out;
-        out.precision(12);
-        out << name << "(x=" << position[0];
-        if (position.size() > 1)
-          out << " y=" << position[1];
-        out << ')';
-        return out.str();
-      };
-      std::vector<std::string> columns;
-      for (const double x : gauge_positions)
-        columns.push_back(column("eta", {x}));
       if (!gauge_positions.empty())
-        gauges = open(gauge_file(), columns);
-      probe_columns.clear();
-      for (const auto &p : probe_points)
-        probe_columns.push_back(column("p", {p[0], p[1]}));
+        gauges = open(gauge_file(), gauge_columns);
       if (!probe_points.empty())
         probes = open(probe_file(), probe_columns);
     }
@@ -206,7 +204,7 @@ namespace slidewave
       for (unsigned int k = 0; k < last_pressures.size(); ++k)
         std::printf("%s %s = %.6e Pa",
                     k == 0 ? "" : ",",
-                    probe_columns.empty() ? "p" : probe_columns[k].c_str(),
+                    probe_columns[k].c_str(),
                     last_pressures[k]);
       std::printf("\n");
     }

@@ -79,7 +79,7 @@ namespace slidewave
       std::vector<double>            gauge_positions;
       std::vector<dealii::Point<2>>  probe_points;
       std::unique_ptr<std::ofstream> gauges, probes;
-      std::vector<std::string>       probe_columns;
+      std::vector<std::string>       gauge_columns, probe_columns;
       double                         last_time = 0.;
       std::vector<double>            last_pressures;
     };

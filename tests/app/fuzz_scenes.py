@@ -32,7 +32,8 @@ HOSTILE_VALUES = ["-1", "0", "-0", "1e308", "-1e308", "1e-300", "nan", "inf", "-
                   "", "1, 2, 3", "0.5.5", "1e", "2147483648", "-2147483649", "0x10", "1/0",
                   "true", "none", ";;", "1e-12", "1e12", "3.0e+400"]
 SHORT_END_TIME = {"shallow water": "0.002", "material points": "0.0005", "coupled": "0.002",
-                  "depth averaged": "0.02", "free surface flow": "0.01"}
+                  "depth averaged": "0.02", "free surface flow": "0.01",
+                  "granular water": "0.001"}
 BAD_TEXT = re.compile(r"terminate called|Stacktrace|Aborting|Segmentation|core dumped|"
                       r"An error occurred in line|Assertion|free\(\)|double free")
 

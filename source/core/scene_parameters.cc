@@ -32,7 +32,8 @@ namespace slidewave
                           Double(0.),
                           "Simulated time between two outputs (profiles, particle files) [s]. "
                           "Output is always written at the start and at the end; 0 means only "
-                          "then. Time steps are shortened to land on output times.");
+                          "then. Time steps are shortened to land on output times (with "
+                          "between one and two steps to go, two equal steps).");
         prm.declare_entry("Statistics interval",
                           "1",
                           Integer(1),

@@ -58,9 +58,9 @@ namespace slidewave
       dt = target - state.time;
     else if (state.time + 2. * dt > target - time_tolerance)
       // Between one and two steps to go: two equal steps, not a full one and a short one.
-      // A short step is no harm to an explicit scheme, but a projection's pressure scales
-      // with 1/dt, and a step ten times shorter than its neighbours shows in the fields
-      // written at that output time (doc/free-surface-flow.md, "Pressure probes").
+      // The granular water's pore pressure moves with the step's length: a step ten times
+      // shorter than its neighbours showed in the fields written at that output time
+      // (doc/free-surface-flow.md, "Pressure probes").
       dt = 0.5 * (target - state.time);
     info.dt             = dt;
     info.time           = reaches_target ? target : state.time + dt;

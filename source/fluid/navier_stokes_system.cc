@@ -215,9 +215,22 @@ namespace slidewave
             // (NodalGrainsCoupling), without a matrix; preconditioned by the pointwise
             // elimination's matrix, which approximates it. Right preconditioning: GMRES
             // monitors the unpreconditioned residual (up to the inner solves' 1e-12).
+            // Its products' inner solves need only the accuracy of what is left of the
+            // residual (NodalGrainsCoupling::relax_products): loose as GMRES converges,
+            // strict again for the product of the whole iterate that starts a restart.
             const SchurComplement           schur{coupled_matrix, *grains_coupling};
+            constexpr unsigned int          restart = 50;
             dealii::SolverGMRES<VectorType> gmres(
-              control, dealii::SolverGMRES<VectorType>::AdditionalData(52, true));
+              control, dealii::SolverGMRES<VectorType>::AdditionalData(restart + 2, true));
+            const double rhs_norm = rhs.l2_norm();
+            const double outer    = parameters.linear_tolerance;
+            grains_coupling->relax_products(outer, 1., false);
+            gmres.connect([&](const unsigned int step, const double residual, const VectorType &) {
+              grains_coupling->relax_products(outer,
+                                              residual / rhs_norm,
+                                              step > 0 && step % restart == 0);
+              return dealii::SolverControl::success;
+            });
             gmres.solve(schur, solution, rhs, *preconditioner);
             return SolveReport{control.last_step(), control.last_value()};
           }

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <deal.II/base/mpi.h>
 #include <slidewave/fluid/nodal_grains_coupling.h>
 
@@ -121,9 +122,10 @@ namespace slidewave
       constraints.distribute(values);
       x_ghosted = values;
       grains_load(x_ghosted, true);
-      solve_grains();
+      solve_grains(strict_tolerance);
       water_load(out);
       rhs -= out;
+      product_tolerance = strict_tolerance;
     }
 
 
@@ -137,9 +139,22 @@ namespace slidewave
       x_owned -= values;
       x_ghosted = x_owned;
       grains_load(x_ghosted, false);
-      solve_grains();
+      solve_grains(product_tolerance);
       water_load(out);
       y += out;
+    }
+
+
+
+    void
+    NodalGrainsCoupling::relax_products(const double outer_tolerance,
+                                        const double residual_ratio,
+                                        const bool   strict) const
+    {
+      product_tolerance
+        = strict || !(residual_ratio > 0.) ?
+            strict_tolerance :
+            std::clamp(0.1 * outer_tolerance / residual_ratio, strict_tolerance, 1e-3);
     }
 
 
@@ -149,7 +164,7 @@ namespace slidewave
     {
       x_ghosted = solution;
       grains_load(x_ghosted, true);
-      solve_grains();
+      solve_grains(strict_tolerance);
     }
 
 
@@ -191,10 +206,10 @@ namespace slidewave
 
 
     void
-    NodalGrainsCoupling::solve_grains() const
+    NodalGrainsCoupling::solve_grains(const double tolerance) const
     {
       grains_operator.solve(
-        dv, load, inverse_diagonal, 1e-12, 500, "the grains' nodal drag system");
+        dv, load, inverse_diagonal, tolerance, 500, "the grains' nodal drag system");
     }
 
 

@@ -46,7 +46,8 @@ namespace slidewave
      * drag's and the flux's columns of dv and dv(x) = (M / dt + D)^-1 (L x + r_0). GMRES
      * iterates on this Schur complement, each product solving the grains' system by
      * conjugate gradients, both components in one run (the cells with grains, their row
-     * sums as the preconditioner); the held components, the hanging and the empty nodes (free = 0)
+     * sums as the preconditioner; to a tolerance that loosens as GMRES converges:
+     * relax_products()); the held components, the hanging and the empty nodes (free = 0)
      * are rows of the identity (dv = 0), the hanging nodes take their parents' values. The
      * constrained rows of the water (walls, inflow, hanging nodes) take no coupling term,
      * and their columns enter through the constraints (without their values in the
@@ -96,9 +97,19 @@ namespace slidewave
              VectorType                              &rhs);
 
       /** y += B dv(x) - B dv(0): the coupling's share of the Schur complement's product
-       *  (collective). */
+       *  (collective), its inner solve to the tolerance of relax_products(). */
       void
       vmult_add(VectorType &y, const VectorType &x) const;
+
+      /** The inner solves' relative tolerance for the next products of the outer Krylov
+       *  solver, which aims at @p outer_tolerance relative to its right-hand side and
+       *  stands at @p residual_ratio of it (1 before it starts), with @p strict (for a
+       *  restart's product of the whole iterate) the strictest: a product may be the less
+       *  accurate, the further the outer residual has fallen (inexact Krylov: Bouras and
+       *  Frayssé 2005, Simoncini and Szyld 2003), 0.1 outer_tolerance / residual_ratio
+       *  within [1e-12, 1e-3]. */
+      void
+      relax_products(double outer_tolerance, double residual_ratio, bool strict) const;
 
       /** The grains' increment dv of the solved flow @p solution (constraints
        *  distributed; collective): into increment(). */
@@ -120,9 +131,15 @@ namespace slidewave
       void
       grains_load(const VectorType &x, bool with_known) const;
 
-      /** dv = (M / dt + D)^-1 r, both components in one solve. */
+      /** dv = (M / dt + D)^-1 r, both components in one solve, to @p tolerance of |r|. */
       void
-      solve_grains() const;
+      solve_grains(double tolerance) const;
+
+      /** The strictest inner tolerance (the step's known part, the increment): that of
+       *  the products while the outer residual stands at the right-hand side. */
+      static constexpr double strict_tolerance = 1e-12;
+      /** The products' inner tolerance (relax_products()). */
+      mutable double product_tolerance = strict_tolerance;
 
       /** out = B dv (owned; the constrained rows' shares to their parents or dropped). */
       void

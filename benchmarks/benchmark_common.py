@@ -1,6 +1,7 @@
 """Helpers shared by SlideWave's benchmark scripts (Python standard library only)."""
 import csv
 import os
+import subprocess
 import sys
 import threading
 import time
@@ -19,6 +20,30 @@ def find_executable(path, wait_s):
             sys.exit(f"SlideWave executable not found: {path} (option --exe)")
         time.sleep(5)
     return path
+
+
+def library_of(executable):
+    """The libslidewave.so that ``executable`` loads (as ``ldd`` resolves it), or None."""
+    out = subprocess.run(["ldd", executable], capture_output=True, text=True).stdout
+    for line in out.splitlines():
+        if "libslidewave" in line and "=>" in line:
+            return os.path.realpath(line.split("=>")[1].split("(")[0].strip())
+    return None
+
+
+def check_distinct_builds(executables):
+    """Exit unless the executables (name -> path) load different libslidewave.so files.
+
+    An executable finds the library of its own build tree through its run path, so a
+    copy of build/slidewave still runs build/libslidewave.so: two copies of one executable
+    compare a build with itself. Compare two build trees (e.g. a git worktree's)."""
+    libraries = {name: library_of(path) for name, path in executables.items()}
+    paths = [lib for lib in libraries.values() if lib is not None]
+    if len(paths) != len(set(paths)):
+        sys.exit("the builds to compare load the same library "
+                 + ", ".join(f"{name}: {lib}" for name, lib in libraries.items())
+                 + ": build each in its own tree (a copy of an executable loads the"
+                   " library of the tree it was built in)")
 
 
 def write_csv(path, rows, columns):

@@ -26,7 +26,8 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from benchmark_common import interleaved_pairs, write_csv  # noqa: E402
+from benchmark_common import (check_distinct_builds, interleaved_pairs,  # noqa: E402
+                              write_csv)
 from depth_averaged_throughput import (END_TIME, REPO, run_once,  # noqa: E402
                                        settings_for)
 
@@ -53,6 +54,7 @@ def main(argv=None):
                                                  "depth_averaged_compare_builds.csv"))
     args = p.parse_args(argv)
     executables = {"base": os.path.abspath(args.base), "new": os.path.abspath(args.new)}
+    check_distinct_builds(executables)
 
     rows, failed = [], False
     print(f"{'shape':5} {'ranks':>5} {'cell':>6} {'columns':>8} {'steps':>5} "

@@ -25,7 +25,8 @@ import statistics
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from benchmark_common import interleaved_pairs, write_csv  # noqa: E402
+from benchmark_common import (check_distinct_builds, interleaved_pairs,  # noqa: E402
+                              write_csv)
 from mpm_throughput import (MATERIALS, REPO, SHAPES, SIZES,  # noqa: E402
                             column_collapse_settings, run_slidewave)
 
@@ -59,6 +60,7 @@ def main(argv=None):
                 for cell, _, quick in SIZES if quick}
     sizes = [by_count[n] for n in parse_list(args.sizes, int)]
     executables = {"base": os.path.abspath(args.base), "new": os.path.abspath(args.new)}
+    check_distinct_builds(executables)
 
     rows, failed = [], False
     print(f"{'shape':5} {'material':15} {'ranks':>5} {'points':>7} {'steps':>5} "

@@ -214,7 +214,7 @@ namespace slidewave
             // The Schur complement of the grains' nodal coupling, A_w + B (M / dt + D)^-1 L
             // (NodalGrainsCoupling), without a matrix; preconditioned by the pointwise
             // elimination's matrix, which approximates it. Right preconditioning: GMRES
-            // monitors the unpreconditioned residual (up to the inner solves' 1e-12).
+            // monitors the unpreconditioned residual (up to the inner solves' accuracy).
             // Its products' inner solves need only the accuracy of what is left of the
             // residual (NodalGrainsCoupling::relax_products): loose as GMRES converges,
             // strict again for the product of the whole iterate that starts a restart.

@@ -216,19 +216,22 @@ namespace slidewave
             // elimination's matrix, which approximates it. Right preconditioning: GMRES
             // monitors the unpreconditioned residual (up to the inner solves' accuracy).
             // Its products' inner solves need only the accuracy of what is left of the
-            // residual (NodalGrainsCoupling::relax_products): loose as GMRES converges,
-            // strict again for the product of the whole iterate that starts a restart.
+            // residual (NodalGrainsCoupling::relax_products): loose as GMRES converges, and
+            // strict for the products of the whole iterate, whose error enters the
+            // residual itself: the first (b - A x0) and the one that starts a restart. The
+            // slot runs before each product and, at a restart, twice with the same step
+            // (before the restart's product and before the new cycle's first).
             const SchurComplement           schur{coupled_matrix, *grains_coupling};
             constexpr unsigned int          restart = 50;
             dealii::SolverGMRES<VectorType> gmres(
               control, dealii::SolverGMRES<VectorType>::AdditionalData(restart + 2, true));
-            const double rhs_norm = rhs.l2_norm();
-            const double outer    = parameters.linear_tolerance;
-            grains_coupling->relax_products(outer, 1., false);
+            const double outer     = parameters.linear_tolerance;
+            unsigned int last_step = dealii::numbers::invalid_unsigned_int;
+            grains_coupling->relax_products(outer, 1., true);
             gmres.connect([&](const unsigned int step, const double residual, const VectorType &) {
-              grains_coupling->relax_products(outer,
-                                              residual / rhs_norm,
-                                              step > 0 && step % restart == 0);
+              const bool restarting = step > 0 && step % restart == 0 && step != last_step;
+              last_step             = step;
+              grains_coupling->relax_products(outer, residual * outer / target, restarting);
               return dealii::SolverControl::success;
             });
             gmres.solve(schur, solution, rhs, *preconditioner);

@@ -149,7 +149,7 @@ namespace slidewave
     void
     NodalGrainsCoupling::relax_products(const double outer_tolerance,
                                         const double residual_ratio,
-                                        const bool   strict) const
+                                        const bool   strict)
     {
       product_tolerance
         = strict || !(residual_ratio > 0.) ?

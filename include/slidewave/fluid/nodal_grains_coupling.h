@@ -103,13 +103,13 @@ namespace slidewave
 
       /** The inner solves' relative tolerance for the next products of the outer Krylov
        *  solver, which aims at @p outer_tolerance relative to its right-hand side and
-       *  stands at @p residual_ratio of it (1 before it starts), with @p strict (for a
-       *  restart's product of the whole iterate) the strictest: a product may be the less
-       *  accurate, the further the outer residual has fallen (inexact Krylov: Bouras and
-       *  Frayssé 2005, Simoncini and Szyld 2003), 0.1 outer_tolerance / residual_ratio
-       *  within [1e-12, 1e-3]. */
+       *  stands at @p residual_ratio of it: a product may be the less accurate, the
+       *  further the outer residual has fallen (inexact Krylov: Bouras and Frayssé 2005,
+       *  Simoncini and Szyld 2003), 0.1 outer_tolerance / residual_ratio within [1e-12,
+       *  1e-3]; with @p strict (a product of the whole iterate: the first, a restart's)
+       *  1e-12. */
       void
-      relax_products(double outer_tolerance, double residual_ratio, bool strict) const;
+      relax_products(double outer_tolerance, double residual_ratio, bool strict);
 
       /** The grains' increment dv of the solved flow @p solution (constraints
        *  distributed; collective): into increment(). */
@@ -135,11 +135,11 @@ namespace slidewave
       void
       solve_grains(double tolerance) const;
 
-      /** The strictest inner tolerance (the step's known part, the increment): that of
-       *  the products while the outer residual stands at the right-hand side. */
+      /** The strictest inner tolerance: the step's known part, the increment and the
+       *  products of the whole iterate (relax_products()). */
       static constexpr double strict_tolerance = 1e-12;
       /** The products' inner tolerance (relax_products()). */
-      mutable double product_tolerance = strict_tolerance;
+      double product_tolerance = strict_tolerance;
 
       /** out = B dv (owned; the constrained rows' shares to their parents or dropped). */
       void

@@ -23,16 +23,23 @@ def find_executable(path, wait_s):
 
 
 def library_of(executable):
-    """The libslidewave.so that ``executable`` loads (as ``ldd`` resolves it), or None."""
-    out = subprocess.run(["ldd", executable], capture_output=True, text=True).stdout
+    """The libslidewave.so that ``executable`` loads (as ``ldd`` resolves it); None for an
+    executable linked without it. Exits when ``ldd`` cannot find it."""
+    try:
+        out = subprocess.run(["ldd", executable], capture_output=True, text=True).stdout
+    except FileNotFoundError:
+        sys.exit("ldd not found: it tells which libslidewave.so each build loads")
     for line in out.splitlines():
         if "libslidewave" in line and "=>" in line:
-            return os.path.realpath(line.split("=>")[1].split("(")[0].strip())
+            target = line.split("=>", 1)[1].strip()
+            if target.startswith("not found"):
+                sys.exit(f"{executable}: its libslidewave.so is not found (ldd)")
+            return os.path.realpath(target.rsplit(" (0x", 1)[0].strip())
     return None
 
 
 def check_distinct_builds(executables):
-    """Exit unless the executables (name -> path) load different libslidewave.so files.
+    """Exit when two of the executables (name -> path) load the same libslidewave.so.
 
     An executable finds the library of its own build tree through its run path, so a
     copy of build/slidewave still runs build/libslidewave.so: two copies of one executable

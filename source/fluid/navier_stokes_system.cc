@@ -297,6 +297,8 @@ namespace slidewave
       report.assembly_time       = assembly_time;
       report.preconditioner_time = preconditioner_time;
       report.solve_time          = timer.wall_time() - assembly_time - preconditioner_time;
+      if (grains_coupling)
+        report.inner_iterations = grains_coupling->iterations_per_product();
       // A preconditioner that takes more than twice its first counted solve's iterations
       // (plus 5) is rebuilt at the next step; a solve whose count is unknown judges
       // nothing and sets no reference.

@@ -27,6 +27,8 @@ namespace slidewave
           v->reinit(mass);
       grid::NodalCellOperator::reinit_pair(load, mass);
       grid::NodalCellOperator::reinit_pair(dv, mass);
+      products         = 0;
+      inner_iterations = 0;
     }
 
 
@@ -125,7 +127,6 @@ namespace slidewave
       solve_grains(strict_tolerance);
       water_load(out);
       rhs -= out;
-      product_tolerance = strict_tolerance;
     }
 
 
@@ -139,7 +140,8 @@ namespace slidewave
       x_owned -= values;
       x_ghosted = x_owned;
       grains_load(x_ghosted, false);
-      solve_grains(product_tolerance);
+      inner_iterations += solve_grains(product_tolerance);
+      ++products;
       water_load(out);
       y += out;
     }
@@ -205,10 +207,18 @@ namespace slidewave
 
 
 
-    void
+    double
+    NodalGrainsCoupling::iterations_per_product() const
+    {
+      return products > 0 ? static_cast<double>(inner_iterations) / products : 0.;
+    }
+
+
+
+    unsigned int
     NodalGrainsCoupling::solve_grains(const double tolerance) const
     {
-      grains_operator.solve(
+      return grains_operator.solve(
         dv, load, inverse_diagonal, tolerance, 500, "the grains' nodal drag system");
     }
 

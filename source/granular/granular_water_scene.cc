@@ -510,6 +510,10 @@ namespace slidewave
       statistics.add_value("skeleton_porosity",
                            volumes[1] > 0. ? 1. - volumes[0] / volumes[1] : 0.);
       statistics.add_value("flow_iterations", last_report.flow.iterations);
+      // The consistent coupling's inner solves per GMRES product (relaxed as GMRES
+      // converges: NodalGrainsCoupling::relax_products).
+      if (parameters.consistent_drag)
+        statistics.add_value("flow_inner_iterations", last_report.flow.inner_iterations);
       if (parameters.sub_cycling)
         statistics.add_value("skeleton_substeps", n_substeps);
       verification.add_statistics(statistics, info.time, fluid_solver->flow_field());

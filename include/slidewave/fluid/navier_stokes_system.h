@@ -54,6 +54,10 @@ namespace slidewave
       double       residual   = 0.;
       /** Assembly, preconditioner set-up (0 when it was kept), GMRES. */
       double assembly_time = 0., preconditioner_time = 0., solve_time = 0.;
+      /** With the grains' nodal coupling: the inner conjugate-gradient iterations per
+       *  product of the Schur complement (NodalGrainsCoupling::iterations_per_product());
+       *  0 without it. */
+      double inner_iterations = 0.;
     };
 
     /**

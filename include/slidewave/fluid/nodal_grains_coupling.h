@@ -116,6 +116,12 @@ namespace slidewave
       void
       compute_increment(const VectorType &solution);
 
+      /** The inner conjugate-gradient iterations per product (vmult_add()) since begin(),
+       *  their mean (0 without products): what relax_products() saves shows here
+       *  (doc/granular-water.md, "The solve"). The same on every rank. */
+      double
+      iterations_per_product() const;
+
       /** The last compute_increment()'s dv (component d in block d, of the nodal
        *  workspace's layout, ghosts and hanging nodes set). */
       const grid::NodalCellOperator::PairVector &
@@ -131,15 +137,20 @@ namespace slidewave
       void
       grains_load(const VectorType &x, bool with_known) const;
 
-      /** dv = (M / dt + D)^-1 r, both components in one solve, to @p tolerance of |r|. */
-      void
+      /** dv = (M / dt + D)^-1 r, both components in one solve, to @p tolerance of |r|;
+       *  returns its iterations. */
+      unsigned int
       solve_grains(double tolerance) const;
 
       /** The strictest inner tolerance: the step's known part, the increment and the
        *  products of the whole iterate (relax_products()). */
       static constexpr double strict_tolerance = 1e-12;
-      /** The products' inner tolerance (relax_products()). */
+      /** The products' inner tolerance (relax_products(), which the solve calls before
+       *  the first product). */
       double product_tolerance = strict_tolerance;
+      /** The products since begin() and their inner iterations (iterations_per_product()). */
+      mutable unsigned int products         = 0;
+      mutable unsigned int inner_iterations = 0;
 
       /** out = B dv (owned; the constrained rows' shares to their parents or dropped). */
       void

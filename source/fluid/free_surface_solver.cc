@@ -151,8 +151,7 @@ namespace slidewave
       if (parameters.adaptive)
         phase.set_refinement_threshold(parameters.refinement_threshold);
       // The work of a cell: its flow and phase dofs (12 + 4 of Q1) in the two solves.
-      flow.set_weight_per_dof(100);
-      phase.set_weight_per_dof(100);
+      set_partition_weight_per_dof(100);
       // A scene without a porous structure allocates and evaluates nothing of it.
       if (!parameters.porosity.empty())
         {
@@ -236,6 +235,15 @@ namespace slidewave
       if (!initial_phase)
         initial_phase = std::make_unique<InitialPhase>(parameters);
       return parameters.fluid.density(initial_phase->value(point));
+    }
+
+
+
+    void
+    FreeSurfaceSolver::set_partition_weight_per_dof(const unsigned int weight)
+    {
+      flow.set_weight_per_dof(weight);
+      phase.set_weight_per_dof(weight);
     }
 
 

@@ -16,6 +16,16 @@ namespace slidewave
 {
   namespace granular
   {
+    namespace
+    {
+      /** The partitioning weight of a degree of freedom of the water and of the phase
+       *  field in this physics: that of a point at the default 'Material points/Load
+       *  balancing/Particle weight' (the constructor says why). */
+      constexpr unsigned int water_dof_weight = 1000000;
+    } // namespace
+
+
+
     void
     GranularWaterScene::declare_parameters(dealii::ParameterHandler &prm)
     {
@@ -113,6 +123,14 @@ namespace slidewave
       // Semi-implicit drag: the water eliminates the skeleton's momentum (PorousMedium).
       fluid_solver->enable_moving_solid(parameters.implicit_drag ? parameters.grain_density : 0.,
                                         parameters.consistent_drag ? &nodal_grains : nullptr);
+      // The grid's partition among the ranks: the water's step is most of the work and
+      // runs on every cell, so a degree of freedom of the water or the phase field weighs
+      // as much as a point at the default 'Particle weight' (16 per cell: a cell of water
+      // weighs as much as one with 4 x 4 points, whose cell weighs twice that). The dry
+      // points' default alone (a point against a cell's 1000, the water's 100 per degree of
+      // freedom) gave one rank nearly all of the water, and two ranks were slower than one
+      // (doc/granular-water.md, "Partition").
+      fluid_solver->set_partition_weight_per_dof(water_dof_weight);
       model = std::make_unique<PorousSkeletonModel>(soil_parameters,
                                                     parameters,
                                                     fluid_parameters.fluid.water_density,

@@ -17,7 +17,10 @@ namespace slidewave
                         "p4est's limit). A step's grid work is over the nodes the points "
                         "talk to, so an empty cell costs next to nothing: the default makes "
                         "1000 empty cells weigh as much as a point (doc/mpm.md, "
-                        "Throughput).");
+                        "Throughput). With 'Physics = granular water' each degree of "
+                        "freedom of the water and of its phase field weighs 1000000 too (16 "
+                        "per cell): the water's step is most of that physics' work, on "
+                        "every cell (doc/granular-water.md, Speed, \"Partition\").");
       prm.declare_entry("Imbalance threshold",
                         "1.1",
                         Double(0.),

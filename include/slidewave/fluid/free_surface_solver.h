@@ -63,6 +63,13 @@ namespace slidewave
       void
       enable_moving_solid(double grain_density = 0., const NodalGrains *nodal_grains = nullptr);
 
+      /** The partitioning weight of each degree of freedom of the water and of the phase
+       *  field (grid::FiniteElementField::set_weight_per_dof(); 100 unless set, against a
+       *  cell's 1000). A scene whose cells also hold material points sets it in the points'
+       *  units (GranularWaterScene). Counts from the next partition. */
+      void
+      set_partition_weight_per_dof(unsigned int weight);
+
       /** The grains' nodal coupling (enable_moving_solid() with nodal grains; null
        *  otherwise): after advance(), the grains' increment of the step. */
       const NodalGrainsCoupling *

@@ -2,18 +2,20 @@
 """How the grid's partition among two ranks sets the speed of a granular-water scene.
 
 The grid shared by the skeleton and the water is split among the ranks by one weight per
-cell: 1000 for the cell, 100 per degree of freedom of each finite-element field (the
-water's 12 and the phase field's 4), and 'Material points/Load balancing/Particle weight'
-per point (default 1,000,000, chosen for the dry material points, whose empty cells cost
-next to nothing). In a granular-water scene the water's step is most of the work, on every
-cell, and the default weight hands one rank nearly all of the water. This script runs a
-scene at several point weights on two ranks, and on one rank, in interleaved rounds (the
-order rotates from round to round), and prints per run the wall time, each rank's cells
-at the last output and the timer summary's water and exchange times (rank 0); then per
-setting the median wall time and its speed-up over the one-rank median.
+cell: 1000 for the cell, 'Material points/Load balancing/Particle weight' per point
+(default 1,000,000) and, in this physics, 1,000,000 per degree of freedom of the water (12
+per cell) and of the phase field (4): a cell of water weighs as much as 16 points. (Before
+2026-12-08 the water's degrees of freedom weighed 100 each, as in the free-surface flow
+alone, and the points' default handed one rank nearly all of the water.) This script runs
+a scene at several point weights on two ranks, and on one rank, in interleaved rounds
+(the order rotates from round to round), and prints per run the wall time, each rank's
+cells at the last output and the timer summary's water and exchange times (rank 0); then
+per setting the median wall time and its speed-up over the one-rank median. Each row
+records the repository's commit (``build``: the executable is taken to be its build).
 
 Usage: benchmarks/granular_partition.py [--scene prm/underwater-collapse-loose.prm]
-       [--end-time 0.1] [--weights 0 50 200 1000000] [--rounds 3] [--set 'A/B=v' ...]
+       [--end-time 0.1] [--weights 0 250000 1000000 4000000 16000000] [--rounds 3]
+       [--set 'A/B=v' ...]
        [--exe build/slidewave] [--csv FILE]
 Results go to ``benchmarks/results/granular_partition.csv`` (one row per run).
 """
@@ -32,7 +34,7 @@ from benchmark_common import find_executable, fmt, wait_until_idle, write_csv  #
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 COLUMNS = ["round", "ranks", "particle_weight", "wall_s", "water_s", "exchange_s",
-           "cells_per_rank", "background_load", "status"]
+           "cells_per_rank", "background_load", "build", "status"]
 
 
 def timer_row(log, name):
@@ -57,8 +59,18 @@ def cells_per_rank(output_dir):
     return "/".join(str(c) for c in counts)
 
 
-def run(exe, scene, ranks, weight, end_time, settings, work):
-    out = os.path.join(work, f"np{ranks}_w{weight}")
+def commit_of(repo):
+    """The repository's commit (short), with '+changes' when its tracked files differ."""
+    def git(*args):
+        return subprocess.run(["git", "-C", repo] + list(args), capture_output=True,
+                              text=True).stdout.strip()
+    head = git("rev-parse", "--short", "HEAD") or "unknown"
+    return head + ("+changes" if git("status", "--porcelain", "--untracked-files=no") else "")
+
+
+def run(exe, scene, ranks, weight, end_time, settings, work, r):
+    # A directory of its own per run: a failed run reports no cells, not an earlier run's.
+    out = os.path.join(work, f"round{r}_np{ranks}_w{weight}")
     command = [exe, scene, "--set", f"Output directory={out}", "--set",
                f"Time/End time={end_time}", "--set",
                f"Material points/Load balancing/Particle weight={weight}"]
@@ -86,7 +98,8 @@ def main():
     parser.add_argument("--scene", default=os.path.join(REPO, "prm",
                                                         "underwater-collapse-loose.prm"))
     parser.add_argument("--end-time", type=float, default=0.1)
-    parser.add_argument("--weights", type=int, nargs="+", default=[0, 50, 200, 1000000])
+    parser.add_argument("--weights", type=int, nargs="+",
+                        default=[0, 250000, 1000000, 4000000, 16000000])
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--set", dest="settings", action="append", default=[],
                         help="a further --set of slidewave (repeatable)")
@@ -98,12 +111,14 @@ def main():
     # One rank (its weight plays no part) and two ranks at each weight.
     settings = [(1, args.weights[-1])] + [(2, w) for w in args.weights]
     rows = []
+    build = commit_of(REPO)
     with tempfile.TemporaryDirectory() as work:
         for r in range(args.rounds):
             shift = r % len(settings)
             for ranks, weight in settings[shift:] + settings[:shift]:
-                row = run(exe, args.scene, ranks, weight, args.end_time, args.settings, work)
+                row = run(exe, args.scene, ranks, weight, args.end_time, args.settings, work, r)
                 row["round"] = r
+                row["build"] = build
                 rows.append(row)
                 print(f"round {r}  ranks {ranks}  weight {weight:>8}  wall {row['wall_s']:7.2f} s"
                       f"  water {fmt(row['water_s'], '7.2f')} s  exchange "

@@ -227,7 +227,7 @@ namespace slidewave
               control, dealii::SolverGMRES<VectorType>::AdditionalData(restart + 2, true));
             const double outer     = parameters.linear_tolerance;
             unsigned int last_step = dealii::numbers::invalid_unsigned_int;
-            grains_coupling->relax_products(outer, 1., true);
+            grains_coupling->start_solve();
             gmres.connect([&](const unsigned int step, const double residual, const VectorType &) {
               const bool restarting = step > 0 && step % restart == 0 && step != last_step;
               last_step             = step;

@@ -27,8 +27,6 @@ namespace slidewave
           v->reinit(mass);
       grid::NodalCellOperator::reinit_pair(load, mass);
       grid::NodalCellOperator::reinit_pair(dv, mass);
-      products         = 0;
-      inner_iterations = 0;
     }
 
 
@@ -144,6 +142,16 @@ namespace slidewave
       ++products;
       water_load(out);
       y += out;
+    }
+
+
+
+    void
+    NodalGrainsCoupling::start_solve()
+    {
+      product_tolerance = strict_tolerance;
+      products          = 0;
+      inner_iterations  = 0;
     }
 
 

@@ -9,6 +9,7 @@
 #include <slidewave/core/timed_run.h>
 #include <slidewave/fluid/velocity_subscales.h>
 #include <slidewave/granular/granular_water_scene.h>
+#include <slidewave/grid/load_balancing_parameters.h>
 #include <slidewave/soil/particle_properties.h>
 #include <stdexcept>
 
@@ -20,8 +21,9 @@ namespace slidewave
     {
       /** The partitioning weight of a degree of freedom of the water and of the phase
        *  field in this physics: that of a point at the default 'Material points/Load
-       *  balancing/Particle weight' (the constructor says why). */
-      constexpr unsigned int water_dof_weight = 1000000;
+       *  balancing/Particle weight' (create_solvers() says why). */
+      constexpr unsigned int water_dof_weight
+        = grid::LoadBalancingParameters::default_particle_weight;
     } // namespace
 
 
@@ -126,7 +128,7 @@ namespace slidewave
       // The grid's partition among the ranks: the water's step is most of the work and
       // runs on every cell, so a degree of freedom of the water or the phase field weighs
       // as much as a point at the default 'Particle weight' (16 per cell: a cell of water
-      // weighs as much as one with 4 x 4 points, whose cell weighs twice that). The dry
+      // weighs as much as 16 points, a cell with 4 x 4 points twice as much). The dry
       // points' default alone (a point against a cell's 1000, the water's 100 per degree of
       // freedom) gave one rank nearly all of the water, and two ranks were slower than one
       // (doc/granular-water.md, "Partition").

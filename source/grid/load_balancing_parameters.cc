@@ -1,15 +1,17 @@
 #include <slidewave/grid/load_balancing_parameters.h>
+#include <string>
 
 namespace slidewave
 {
   namespace grid
   {
     void
-    LoadBalancingParameters::declare_parameters(dealii::ParameterHandler &prm)
+    LoadBalancingParameters::declare_parameters(dealii::ParameterHandler &prm,
+                                                const std::string        &particle_weight_note)
     {
       using namespace dealii::Patterns;
       prm.declare_entry("Particle weight",
-                        "1000000",
+                        std::to_string(default_particle_weight),
                         Integer(0),
                         "Cost of a material point relative to a cell's 1000 when the grid "
                         "is partitioned among MPI ranks (the work of a rank is 1000 per "
@@ -17,10 +19,8 @@ namespace slidewave
                         "p4est's limit). A step's grid work is over the nodes the points "
                         "talk to, so an empty cell costs next to nothing: the default makes "
                         "1000 empty cells weigh as much as a point (doc/mpm.md, "
-                        "Throughput). With 'Physics = granular water' each degree of "
-                        "freedom of the water and of its phase field weighs 1000000 too (16 "
-                        "per cell): the water's step is most of that physics' work, on "
-                        "every cell (doc/granular-water.md, Speed, \"Partition\").");
+                        "Throughput)."
+                          + particle_weight_note);
       prm.declare_entry("Imbalance threshold",
                         "1.1",
                         Double(0.),

@@ -127,7 +127,12 @@ namespace slidewave
         }
         prm.leave_subsection();
         prm.enter_subsection("Load balancing");
-        grid::LoadBalancingParameters::declare_parameters(prm);
+        grid::LoadBalancingParameters::declare_parameters(
+          prm,
+          " With 'Physics = granular water' each degree of freedom of the water and of its "
+          "phase field weighs 1000000 (16 per cell), whatever this is: the water's step is "
+          "most of that physics' work, on every cell (doc/granular-water.md, Speed, "
+          "\"Partition\").");
         prm.leave_subsection();
         prm.enter_subsection("Boundary conditions");
         for (const std::string side : {"Left", "Right", "Bottom", "Top"})

@@ -101,6 +101,11 @@ namespace slidewave
       void
       vmult_add(VectorType &y, const VectorType &x) const;
 
+      /** Before each outer solve (a retried one too): strict products (relax_products())
+       *  and the count of iterations_per_product() from zero. */
+      void
+      start_solve();
+
       /** The inner solves' relative tolerance for the next products of the outer Krylov
        *  solver, which aims at @p outer_tolerance relative to its right-hand side and
        *  stands at @p residual_ratio of it: a product may be the less accurate, the
@@ -116,9 +121,10 @@ namespace slidewave
       void
       compute_increment(const VectorType &solution);
 
-      /** The inner conjugate-gradient iterations per product (vmult_add()) since begin(),
-       *  their mean (0 without products): what relax_products() saves shows here
-       *  (doc/granular-water.md, "The solve"). The same on every rank. */
+      /** The inner conjugate-gradient iterations per product (vmult_add()) of the last
+       *  solve (since start_solve()), their mean (0 without products): what
+       *  relax_products() saves shows here (doc/granular-water.md, "The solve"). The same
+       *  on every rank. */
       double
       iterations_per_product() const;
 
@@ -145,10 +151,10 @@ namespace slidewave
       /** The strictest inner tolerance: the step's known part, the increment and the
        *  products of the whole iterate (relax_products()). */
       static constexpr double strict_tolerance = 1e-12;
-      /** The products' inner tolerance (relax_products(), which the solve calls before
-       *  the first product). */
+      /** The products' inner tolerance (start_solve(), relax_products()). */
       double product_tolerance = strict_tolerance;
-      /** The products since begin() and their inner iterations (iterations_per_product()). */
+      /** The products since start_solve() and their inner iterations
+       *  (iterations_per_product()). */
       mutable unsigned int products         = 0;
       mutable unsigned int inner_iterations = 0;
 

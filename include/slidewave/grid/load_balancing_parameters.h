@@ -2,6 +2,7 @@
 #define slidewave_grid_load_balancing_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <string>
 
 namespace slidewave
 {
@@ -14,14 +15,19 @@ namespace slidewave
      */
     struct LoadBalancingParameters
     {
-      /** Declares the entries (the handler inside the "Load balancing" subsection). */
+      /** The points' default weight, against a cell's 1000. */
+      static constexpr unsigned int default_particle_weight = 1000000;
+
+      /** Declares the entries (the handler inside the "Load balancing" subsection);
+       *  @p particle_weight_note ends the help of 'Particle weight' (what a physics adds). */
       static void
-      declare_parameters(dealii::ParameterHandler &prm);
+      declare_parameters(dealii::ParameterHandler &prm,
+                         const std::string        &particle_weight_note = "");
 
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      unsigned int particle_weight     = 1000000;
+      unsigned int particle_weight     = default_particle_weight;
       double       imbalance_threshold = 1.1;
       unsigned int interval            = 50;
     };
